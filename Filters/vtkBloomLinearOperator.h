@@ -1,0 +1,88 @@
+/**
+ * @class   vtkBloomLinearOperator
+ * @brief   A one-dimensional linear resampling operator: a banded sparse matrix.
+ *
+ * Every linear step of the bloom chain is separable or a sum of separable terms: a bilinear
+ * fetch at a new resolution, the 13-tap downsample, a tent upsample, a blur with fractional tap
+ * spacing, an area-weighted resample and a plain convolution. Each axis of such a step is an
+ * operator that maps `InputSize` samples to `OutputSize` samples:
+ *
+ *   out[j] = sum_k Weights[j * Width + k] * in[First[j] + k]
+ *
+ * Borders are folded into the weights when the operator is built, so applying it never reads
+ * outside [0, InputSize). Because the operator knows exactly which inputs each output reads, it
+ * also gives the input range a streamed piece needs (`GetInputRange`), which makes a streamed
+ * piece equal to the whole-image result bit for bit.
+ *
+ * Sampling positions follow the GPU convention: output sample j (centre at (j + 1/2) / OutputSize
+ * in normalized coordinates) maps to source texel coordinate
+ * p = (j + 1/2) * InputSize / OutputSize - 1/2, where texel centres sit at integers. A tap at
+ * offset o reads p + o * scale with a bilinear fetch; `scale` is 1 unless stated otherwise.
+ */
+
+#ifndef vtkBloomLinearOperator_h
+#define vtkBloomLinearOperator_h
+
+#include "vtkBloomKernels.h"       // For vtkBloomKernels::Tap
+#include "vtkFiltersBloomModule.h" // For export macro
+
+#include <vector>
+
+class VTKFILTERSBLOOM_EXPORT vtkBloomLinearOperator
+{
+public:
+  /// How a kernel sees samples beyond the ends of the input.
+  enum BorderMode
+  {
+    BORDER_CLAMP = 0,   ///< repeat the edge sample (GL clamp-to-edge)
+    BORDER_REFLECT = 1, ///< half-sample symmetric mirror, d c b a | a b c d | d c b a
+    BORDER_ZERO = 2     ///< samples outside are zero
+  };
+
+  /// Map input index i (any integer) into [0, n) under a border mode; -1 means "zero".
+  static int FoldIndex(int i, int n, int border);
+
+  /// The identity on n samples.
+  static vtkBloomLinearOperator Identity(int n);
+
+  /**
+   * Resample from inputSize to outputSize samples with the given taps, each tap a bilinear
+   * fetch at p + offset (offsets in source texels). Used for the bilinear fetch, the tent
+   * upsample and the 13-tap downsample.
+   */
+  static vtkBloomLinearOperator Resample(
+    int inputSize, int outputSize, const std::vector<vtkBloomKernels::Tap>& taps, int border);
+
+  /// Same-size convolution with taps at (possibly fractional) offsets, bilinear in between.
+  static vtkBloomLinearOperator Convolve(
+    int size, const std::vector<vtkBloomKernels::Tap>& taps, int border);
+
+  /**
+   * Exact area-weighted resample: output j covers source [j * n / m, (j + 1) * n / m] and each
+   * source texel is weighted by its overlap. An exact 2x2 box for even sizes; it preserves the
+   * mean for odd sizes.
+   */
+  static vtkBloomLinearOperator Area(int inputSize, int outputSize);
+
+  /// The product this * other (apply `other` first). Used to fold repeated passes.
+  vtkBloomLinearOperator Compose(const vtkBloomLinearOperator& other) const;
+
+  /// Inputs read by outputs [outMin, outMax] (inclusive, clamped to the operator's range).
+  void GetInputRange(int outMin, int outMax, int& inMin, int& inMax) const;
+
+  /// True when this is the identity (so a pass can be skipped).
+  bool IsIdentity() const;
+
+  int InputSize = 0;
+  int OutputSize = 0;
+  int Width = 0;
+  std::vector<int> First;
+  std::vector<double> Weights;
+
+private:
+  static vtkBloomLinearOperator FromRows(
+    int inputSize, int outputSize, std::vector<std::vector<std::pair<int, double>>>& rows);
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkBloomLinearOperator.h

@@ -1,0 +1,659 @@
+#include "vtkImageBloom.h"
+
+#include "vtkBloomImageOps.h"
+#include "vtkBloomKernels.h"
+#include "vtkImageBloomThreshold.h"
+#include "vtkImageData.h"
+#include "vtkImagePyramidDown.h"
+#include "vtkImagePyramidUp.h"
+#include "vtkImageSeparableAlgorithm.h"
+#include "vtkInformation.h"
+#include "vtkInformationVector.h"
+#include "vtkObjectFactory.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+#include "vtkStreamingDemandDrivenPipeline.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+
+vtkStandardNewMacro(vtkImageBloom);
+
+namespace
+{
+using Tap = vtkBloomKernels::Tap;
+const int Clamp = vtkBloomLinearOperator::BORDER_CLAMP;
+
+// out = Ry Rx in over the whole of a 2-D (per z slice) block of the given output size.
+void Resample2D(const vtkBloomBuffer& in, const vtkBloomLinearOperator& rx,
+  const vtkBloomLinearOperator& ry, vtkBloomBuffer& out)
+{
+  const vtkBloomLinearOperator* ops[3] = { &rx, &ry, nullptr };
+  const int lo[3] = { 0, 0, 0 };
+  const int size[3] = { rx.OutputSize, ry.OutputSize, in.Size[2] };
+  vtkBloomApplySeparable(in, ops, lo, size, out, true);
+}
+
+// One level of the downsample chain (see vtkImagePyramidDown, which uses the same taps).
+void Downsample(
+  const vtkBloomBuffer& in, int kernel, bool karis, int outW, int outH, vtkBloomBuffer& out)
+{
+  const int w = in.Size[0], h = in.Size[1];
+  auto term = [&](const std::vector<Tap>& tx, const std::vector<Tap>& ty, vtkBloomBuffer& result)
+  {
+    Resample2D(in, vtkBloomLinearOperator::Resample(w, outW, tx, Clamp),
+      vtkBloomLinearOperator::Resample(h, outH, ty, Clamp), result);
+  };
+  switch (kernel)
+  {
+    case vtkImagePyramidDown::BOX:
+      Resample2D(
+        in, vtkBloomLinearOperator::Area(w, outW), vtkBloomLinearOperator::Area(h, outH), out);
+      return;
+    case vtkImagePyramidDown::BINOMIAL:
+      term(vtkBloomKernels::Binomial5Taps(), vtkBloomKernels::Binomial5Taps(), out);
+      return;
+    default:
+      break;
+  }
+  if (!karis)
+  {
+    vtkBloomBuffer tent;
+    term(vtkBloomKernels::HalfTexelPairTaps(), vtkBloomKernels::HalfTexelPairTaps(), out);
+    term(vtkBloomKernels::TentTaps(), vtkBloomKernels::TentTaps(), tent);
+    for (size_t e = 0; e < out.Data.size(); ++e)
+    {
+      out.Data[e] = 0.5 * out.Data[e] + 0.5 * tent.Data[e];
+    }
+    return;
+  }
+  // Karis average of the five 2x2 boxes, weighted by base / (1 + luma).
+  const auto inner = vtkBloomKernels::HalfTexelPairTaps();
+  const auto left = vtkBloomKernels::LeftPairTaps();
+  const auto right = vtkBloomKernels::RightPairTaps();
+  vtkBloomBuffer boxes[5];
+  term(inner, inner, boxes[0]);
+  term(left, left, boxes[1]);
+  term(right, left, boxes[2]);
+  term(left, right, boxes[3]);
+  term(right, right, boxes[4]);
+  const double base[5] = { vtkBloomKernels::Jimenez13InnerWeight,
+    vtkBloomKernels::Jimenez13OuterWeight, vtkBloomKernels::Jimenez13OuterWeight,
+    vtkBloomKernels::Jimenez13OuterWeight, vtkBloomKernels::Jimenez13OuterWeight };
+  out = boxes[0];
+  const int nc = out.NumberOfComponents;
+  const vtkIdType samples = static_cast<vtkIdType>(out.GetNumberOfSamples());
+  vtkSMPTools::For(0, samples,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType s = begin; s < end; ++s)
+      {
+        double acc[3] = { 0.0, 0.0, 0.0 };
+        double total = 0.0;
+        for (int b = 0; b < 5; ++b)
+        {
+          const double* v = boxes[b].Data.data() + s * nc;
+          const double luma = nc == 3 ? vtkBloomKernels::LuminanceR * v[0] +
+              vtkBloomKernels::LuminanceG * v[1] + vtkBloomKernels::LuminanceB * v[2]
+                                      : v[0];
+          const double weight = base[b] / (1.0 + std::max(luma, 0.0));
+          total += weight;
+          for (int c = 0; c < nc; ++c)
+          {
+            acc[c] += weight * v[c];
+          }
+        }
+        for (int c = 0; c < nc; ++c)
+        {
+          out.Data[s * nc + c] = acc[c] / total;
+        }
+      }
+    });
+}
+
+// Copy the colour components of the whole input into a double block.
+template <typename T>
+void ImportColour(vtkImageData* input, int colours, vtkBloomBuffer& buffer)
+{
+  int ext[6];
+  input->GetExtent(ext);
+  const int lo[3] = { ext[0], ext[2], ext[4] };
+  vtkBloomImport(input, ext, lo, 0, colours, buffer);
+}
+}
+
+//------------------------------------------------------------------------------
+vtkImageBloom::vtkImageBloom()
+{
+  this->ThresholdMode = vtkImageBloomThreshold::SMOOTHSTEP_KNEE;
+  this->Threshold = 1.0;
+  this->Knee = 0.5;
+  this->ClampLuminance = VTK_FLOAT_MAX;
+  this->StartLevel = 1;
+  this->NumberOfLevels = 5;
+  this->LimitLevelsToImageSize = false;
+  this->DownsampleKernel = vtkImagePyramidDown::JIMENEZ13;
+  this->KarisAverage = false;
+  this->BlurKernel = BLUR_GAUSSIAN;
+  this->BlurStandardDeviation = 1.0;
+  this->BlurRadius = -1;
+  this->BlurGaussianKind = vtkBloomKernels::GAUSSIAN_SAMPLED;
+  this->BlurHalfKernel = { 1.0 };
+  this->BlurTapSpacing = 1.0;
+  this->BlurIterations = 1;
+  this->UpsampleKernel = vtkImagePyramidUp::TENT;
+  this->AccumulateMode = CASCADE;
+  this->CompositeMode = ADDITIVE;
+  this->Strength = 1.0;
+  this->Tint[0] = this->Tint[1] = this->Tint[2] = 1.0;
+}
+
+//------------------------------------------------------------------------------
+vtkImageBloom::~vtkImageBloom() = default;
+
+//------------------------------------------------------------------------------
+std::vector<std::string> vtkImageBloom::GetPresetNames()
+{
+  return { "webgpu-market", "mip-atlas", "ping-pong", "crt-halfres" };
+}
+
+//------------------------------------------------------------------------------
+bool vtkImageBloom::SetPreset(const char* name)
+{
+  const std::string preset = name ? name : "";
+  const auto names = vtkImageBloom::GetPresetNames();
+  if (std::find(names.begin(), names.end(), preset) == names.end())
+  {
+    vtkErrorMacro(<< "Unknown bloom preset '" << preset
+                  << "'; expected webgpu-market, mip-atlas, ping-pong or crt-halfres.");
+    return false;
+  }
+  // Shared defaults; each preset then states what it changes.
+  this->ClampLuminance = VTK_FLOAT_MAX;
+  this->Knee = 0.5;
+  this->LimitLevelsToImageSize = false;
+  this->DownsampleKernel = vtkImagePyramidDown::JIMENEZ13;
+  this->KarisAverage = false;
+  this->BlurTapSpacing = 1.0;
+  this->BlurIterations = 1;
+  this->UpsampleKernel = vtkImagePyramidUp::TENT;
+  this->AccumulateMode = CASCADE;
+  this->LevelWeights.clear();
+  this->CompositeMode = ADDITIVE;
+  this->Tint[0] = this->Tint[1] = this->Tint[2] = 1.0;
+
+  if (preset == "webgpu-market")
+  {
+    // Seed 000: threshold into half-res mip 0, 13-tap down x4, 9-tap blur with taps
+    // radius = 0.5 texels apart, tent up-and-add, original + bloom * strength.
+    this->ThresholdMode = vtkImageBloomThreshold::SMOOTHSTEP_KNEE;
+    this->Threshold = 0.8;
+    this->StartLevel = 1;
+    this->NumberOfLevels = 5;
+    this->BlurKernel = BLUR_CUSTOM;
+    this->BlurHalfKernel = vtkBloomKernels::WebGPUMarketBlurHalfKernel();
+    this->BlurTapSpacing = 0.5;
+    this->Strength = 1.0;
+  }
+  else if (preset == "mip-atlas")
+  {
+    // Seed 001: the HDR scene's mip chain, LODs 2..8 blurred by a 7x7 binomial, averaged with
+    // weights 1 1 1 .8 .8 .6 .4 times 0.14, lerp(colour, bloom, 0.52).
+    this->ThresholdMode = vtkImageBloomThreshold::NONE;
+    this->Threshold = 0.0;
+    this->StartLevel = 0;
+    this->NumberOfLevels = 9;
+    this->LimitLevelsToImageSize = true;
+    this->DownsampleKernel = vtkImagePyramidDown::BOX;
+    this->BlurKernel = BLUR_CUSTOM;
+    this->BlurHalfKernel = vtkBloomKernels::Binomial7HalfKernel();
+    this->AccumulateMode = DIRECT;
+    const double lod[7] = { 1.0, 1.0, 1.0, 0.8, 0.8, 0.6, 0.4 };
+    this->LevelWeights = { 0.0, 0.0 };
+    for (double w : lod)
+    {
+      this->LevelWeights.push_back(0.14 * w);
+    }
+    this->CompositeMode = LERP;
+    this->Strength = 0.52;
+  }
+  else if (preset == "ping-pong")
+  {
+    // Seed 002: hard luminance mask at full resolution, 32 x (horizontal + vertical) 13-tap
+    // blur passes, original + blur.
+    this->ThresholdMode = vtkImageBloomThreshold::HARD_LUMINANCE;
+    this->Threshold = 1.0;
+    this->StartLevel = 0;
+    this->NumberOfLevels = 1;
+    this->BlurKernel = BLUR_CUSTOM;
+    this->BlurHalfKernel = vtkBloomKernels::PingPongBlurHalfKernel();
+    this->BlurIterations = 32;
+    this->Strength = 1.0;
+  }
+  else // crt-halfres
+  {
+    // Seed 003: per-channel max(src - 0.8, 0) at half resolution, 9-tap Gaussian sigma 1.8,
+    // scene + 1.5 * bloom.
+    this->ThresholdMode = vtkImageBloomThreshold::PER_CHANNEL;
+    this->Threshold = 0.8;
+    this->StartLevel = 1;
+    this->NumberOfLevels = 1;
+    this->BlurKernel = BLUR_GAUSSIAN;
+    this->BlurStandardDeviation = 1.8;
+    this->BlurRadius = 4;
+    this->BlurGaussianKind = vtkBloomKernels::GAUSSIAN_SAMPLED;
+    this->Strength = 1.5;
+  }
+  this->Modified();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::SetBlurHalfKernel(int n, const double* weights)
+{
+  this->SetBlurHalfKernel(std::vector<double>(weights, weights + std::max(n, 0)));
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::SetBlurHalfKernel(const std::vector<double>& weights)
+{
+  if (weights != this->BlurHalfKernel)
+  {
+    this->BlurHalfKernel = weights;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkImageBloom::GetEffectiveBlurHalfKernel() const
+{
+  if (this->BlurKernel == BLUR_CUSTOM)
+  {
+    return this->BlurHalfKernel.empty() ? std::vector<double>{ 1.0 } : this->BlurHalfKernel;
+  }
+  const int radius = this->BlurRadius >= 0
+    ? this->BlurRadius
+    : vtkBloomKernels::RadiusForSigma(this->BlurStandardDeviation, 3.0);
+  return vtkBloomKernels::GaussianHalfKernel(
+    this->BlurStandardDeviation, radius, this->BlurGaussianKind);
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::SetLevelWeight(int level, double weight)
+{
+  if (level < 0 || level >= 1024)
+  {
+    vtkErrorMacro(<< "Level index " << level << " out of range [0, 1024).");
+    return;
+  }
+  if (static_cast<int>(this->LevelWeights.size()) <= level)
+  {
+    this->LevelWeights.resize(level + 1, 1.0);
+  }
+  if (this->LevelWeights[level] != weight)
+  {
+    this->LevelWeights[level] = weight;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+double vtkImageBloom::GetLevelWeight(int level) const
+{
+  return level >= 0 && level < static_cast<int>(this->LevelWeights.size())
+    ? this->LevelWeights[level]
+    : 1.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::SetLevelWeights(int n, const double* weights)
+{
+  this->SetLevelWeights(std::vector<double>(weights, weights + std::max(n, 0)));
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::SetLevelWeights(const std::vector<double>& weights)
+{
+  if (weights != this->LevelWeights)
+  {
+    this->LevelWeights = weights;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+std::vector<std::pair<int, int>> vtkImageBloom::ComputeLevelSizes(int width, int height) const
+{
+  std::vector<std::pair<int, int>> sizes;
+  if (width <= 0 || height <= 0)
+  {
+    return sizes;
+  }
+  int deepest = this->StartLevel + this->NumberOfLevels - 1;
+  if (this->LimitLevelsToImageSize)
+  {
+    // A full mip chain has floor(log2(max(W, H))) + 1 levels, counting level 0.
+    int maxLevel = 0;
+    for (int n = std::max(width, height); n > 1; n /= 2)
+    {
+      ++maxLevel;
+    }
+    deepest = std::min(deepest, maxLevel);
+  }
+  int w = width, h = height;
+  for (int k = 0; k <= deepest; ++k)
+  {
+    if (k >= this->StartLevel)
+    {
+      sizes.emplace_back(w, h);
+    }
+    w = vtkImagePyramidDown::HalvedSize(w);
+    h = vtkImagePyramidDown::HalvedSize(h);
+  }
+  return sizes;
+}
+
+//------------------------------------------------------------------------------
+bool vtkImageBloom::CheckParameters()
+{
+  const double values[4] = { this->Threshold, this->Strength, this->Tint[0] + this->Tint[1],
+    this->Tint[2] };
+  for (double v : values)
+  {
+    if (!std::isfinite(v))
+    {
+      vtkErrorMacro(<< "Threshold, Strength and Tint must be finite.");
+      return false;
+    }
+  }
+  for (double w : this->GetEffectiveBlurHalfKernel())
+  {
+    if (!std::isfinite(w))
+    {
+      vtkErrorMacro(<< "The blur kernel has a non-finite weight.");
+      return false;
+    }
+  }
+  for (double w : this->LevelWeights)
+  {
+    if (!std::isfinite(w))
+    {
+      vtkErrorMacro(<< "Level weights must be finite.");
+      return false;
+    }
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+int vtkImageBloom::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+{
+  // The pyramid reaches across the whole image, so every piece needs all of the input.
+  vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
+  int whole[6];
+  inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
+  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), whole, 6);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+int vtkImageBloom::RequestData(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  vtkInformation* outInfo = outputVector->GetInformationObject(0);
+  vtkImageData* input = vtkImageData::GetData(inputVector[0]);
+  vtkImageData* output = vtkImageData::GetData(outInfo);
+  if (!input || !input->GetPointData()->GetScalars())
+  {
+    vtkErrorMacro(<< "Input has no point scalars.");
+    output->Initialize();
+    return 0;
+  }
+  const int nc = input->GetNumberOfScalarComponents();
+  if (!vtkImageSeparableAlgorithm::IsSupportedInput(input->GetScalarType(), nc))
+  {
+    vtkErrorMacro(<< "Input scalars must be float or double with 1 to 4 components; got "
+                  << input->GetScalarTypeAsString() << " with " << nc << " components.");
+    output->Initialize();
+    return 0;
+  }
+  if (!this->CheckParameters())
+  {
+    output->Initialize();
+    return 0;
+  }
+  int inExt[6];
+  input->GetExtent(inExt);
+  const int width = inExt[1] - inExt[0] + 1;
+  const int height = inExt[3] - inExt[2] + 1;
+  if (width <= 0 || height <= 0 || inExt[5] < inExt[4])
+  {
+    vtkErrorMacro(<< "Input is empty.");
+    output->Initialize();
+    return 0;
+  }
+
+  this->AllocateOutputData(output, outInfo);
+  int outExt[6];
+  output->GetExtent(outExt);
+  const int colours = nc >= 3 ? 3 : 1;
+
+  // 1. Bright pass at the start level: bilinear fetch first, threshold second.
+  vtkBloomBuffer source;
+  ImportColour<double>(input, colours, source);
+  this->UpdateProgress(0.05);
+  const auto sizes = this->ComputeLevelSizes(width, height);
+  if (sizes.empty())
+  {
+    vtkErrorMacro(<< "No pyramid level fits a " << width << " x " << height << " image.");
+    output->Initialize();
+    return 0;
+  }
+  std::vector<vtkBloomBuffer> levels(sizes.size());
+  if (this->StartLevel == 0)
+  {
+    levels[0] = source;
+  }
+  else
+  {
+    const auto bilinear = vtkBloomKernels::BilinearTaps();
+    Resample2D(source, vtkBloomLinearOperator::Resample(width, sizes[0].first, bilinear, Clamp),
+      vtkBloomLinearOperator::Resample(height, sizes[0].second, bilinear, Clamp), levels[0]);
+  }
+  {
+    vtkBloomBuffer& bright = levels[0];
+    const int mode = this->ThresholdMode;
+    const double t = this->Threshold, knee = this->Knee, clampLum = this->ClampLuminance;
+    vtkSMPTools::For(0, static_cast<vtkIdType>(bright.GetNumberOfSamples()),
+      [&](vtkIdType begin, vtkIdType end)
+      {
+        for (vtkIdType s = begin; s < end; ++s)
+        {
+          vtkImageBloomThreshold::BrightPass(
+            bright.Data.data() + s * colours, colours, mode, t, knee, clampLum);
+        }
+      });
+  }
+  this->UpdateProgress(0.15);
+
+  // 2. The pyramid, each level from the unblurred level above it.
+  for (size_t i = 1; i < levels.size() && !this->AbortExecute; ++i)
+  {
+    Downsample(levels[i - 1], this->DownsampleKernel, this->KarisAverage && i == 1, sizes[i].first,
+      sizes[i].second, levels[i]);
+  }
+  this->UpdateProgress(0.35);
+
+  // 3. Blur each level that contributes; repeated passes are folded into one operator.
+  const auto taps =
+    vtkBloomKernels::SymmetricTaps(this->GetEffectiveBlurHalfKernel(), this->BlurTapSpacing);
+  for (size_t i = 0; i < levels.size() && !this->AbortExecute; ++i)
+  {
+    if (this->GetLevelWeight(static_cast<int>(i)) == 0.0 || this->BlurIterations == 0)
+    {
+      continue;
+    }
+    auto blurAxis = [&](int n)
+    {
+      const vtkBloomLinearOperator once = vtkBloomLinearOperator::Convolve(n, taps, Clamp);
+      vtkBloomLinearOperator result = once;
+      for (int it = 1; it < this->BlurIterations; ++it)
+      {
+        result = once.Compose(result);
+      }
+      return result;
+    };
+    vtkBloomBuffer blurred;
+    Resample2D(levels[i], blurAxis(sizes[i].first), blurAxis(sizes[i].second), blurred);
+    levels[i] = std::move(blurred);
+    this->UpdateProgress(0.35 + 0.35 * (i + 1) / levels.size());
+  }
+  if (this->AbortExecute)
+  {
+    return 1;
+  }
+
+  // 4. Accumulate into a full-resolution bloom image.
+  const auto bilinear = vtkBloomKernels::BilinearTaps();
+  auto toFull = [&](const vtkBloomBuffer& level, vtkBloomBuffer& full)
+  {
+    Resample2D(level, vtkBloomLinearOperator::Resample(level.Size[0], width, bilinear, Clamp),
+      vtkBloomLinearOperator::Resample(level.Size[1], height, bilinear, Clamp), full);
+  };
+  auto scale = [](vtkBloomBuffer& b, double w)
+  {
+    if (w != 1.0)
+    {
+      for (double& v : b.Data)
+      {
+        v *= w;
+      }
+    }
+  };
+  vtkBloomBuffer bloom;
+  if (this->AccumulateMode == DIRECT)
+  {
+    int lo[3] = { 0, 0, 0 };
+    int size[3] = { width, height, source.Size[2] };
+    bloom.Allocate(lo, size, colours);
+    for (size_t i = 0; i < levels.size(); ++i)
+    {
+      const double w = this->GetLevelWeight(static_cast<int>(i));
+      if (w == 0.0)
+      {
+        continue;
+      }
+      vtkBloomBuffer full;
+      toFull(levels[i], full);
+      vtkBloomAddScaled(full, w, bloom);
+    }
+  }
+  else
+  {
+    const auto up = this->UpsampleKernel == vtkImagePyramidUp::BILINEAR
+      ? vtkBloomKernels::BilinearTaps()
+      : vtkBloomKernels::TentTaps();
+    const size_t last = levels.size() - 1;
+    vtkBloomBuffer acc = std::move(levels[last]);
+    scale(acc, this->GetLevelWeight(static_cast<int>(last)));
+    for (size_t i = last; i-- > 0;)
+    {
+      vtkBloomBuffer upsampled;
+      Resample2D(acc, vtkBloomLinearOperator::Resample(acc.Size[0], sizes[i].first, up, Clamp),
+        vtkBloomLinearOperator::Resample(acc.Size[1], sizes[i].second, up, Clamp), upsampled);
+      const double w = this->GetLevelWeight(static_cast<int>(i));
+      if (w != 0.0)
+      {
+        vtkBloomAddScaled(levels[i], w, upsampled);
+      }
+      acc = std::move(upsampled);
+    }
+    if (this->StartLevel == 0)
+    {
+      bloom = std::move(acc);
+    }
+    else
+    {
+      toFull(acc, bloom);
+    }
+  }
+  levels.clear();
+  this->UpdateProgress(0.9);
+
+  // 5. Composite over the requested output extent; alpha is copied.
+  const double s = this->Strength;
+  const double keep = this->CompositeMode == LERP ? 1.0 - s : 1.0;
+  double tint[3] = { this->Tint[0], this->Tint[1], this->Tint[2] };
+  if (colours == 1)
+  {
+    tint[0] = vtkBloomKernels::LuminanceR * tint[0] + vtkBloomKernels::LuminanceG * tint[1] +
+      vtkBloomKernels::LuminanceB * tint[2];
+  }
+  const int wholeLo[3] = { inExt[0], inExt[2], inExt[4] };
+  vtkBloomBuffer piece;
+  vtkBloomImport(input, outExt, wholeLo, 0, nc, piece);
+  const size_t samples = piece.GetNumberOfSamples();
+  for (size_t p = 0; p < samples; ++p)
+  {
+    // piece and bloom index the same pixel through their own blocks.
+    const int i = piece.Lo[0] + static_cast<int>(p % piece.Size[0]);
+    const int j = piece.Lo[1] + static_cast<int>((p / piece.Size[0]) % piece.Size[1]);
+    const int k =
+      piece.Lo[2] + static_cast<int>(p / (static_cast<size_t>(piece.Size[0]) * piece.Size[1]));
+    const double* b = bloom.Data.data() + bloom.Offset(i, j, k);
+    double* v = piece.Data.data() + p * nc;
+    for (int c = 0; c < colours; ++c)
+    {
+      v[c] = keep * v[c] + s * tint[c] * b[c];
+    }
+  }
+  vtkBloomExport(piece, wholeLo, output, outExt, 0);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  auto list = [&os](const std::vector<double>& values)
+  {
+    os << "(";
+    for (size_t i = 0; i < values.size(); ++i)
+    {
+      os << (i ? ", " : "") << values[i];
+    }
+    os << ")\n";
+  };
+  os << indent << "ThresholdMode: " << vtkImageBloomThreshold::GetModeName(this->ThresholdMode)
+     << "\n";
+  os << indent << "Threshold: " << this->Threshold << "\n";
+  os << indent << "Knee: " << this->Knee << "\n";
+  os << indent << "ClampLuminance: " << this->ClampLuminance << "\n";
+  os << indent << "StartLevel: " << this->StartLevel << "\n";
+  os << indent << "NumberOfLevels: " << this->NumberOfLevels << "\n";
+  os << indent << "LimitLevelsToImageSize: " << (this->LimitLevelsToImageSize ? "On" : "Off")
+     << "\n";
+  os << indent << "DownsampleKernel: " << this->DownsampleKernel << "\n";
+  os << indent << "KarisAverage: " << (this->KarisAverage ? "On" : "Off") << "\n";
+  os << indent << "BlurKernel: " << (this->BlurKernel == BLUR_CUSTOM ? "Custom" : "Gaussian")
+     << "\n";
+  os << indent << "BlurStandardDeviation: " << this->BlurStandardDeviation << "\n";
+  os << indent << "BlurRadius: " << this->BlurRadius << "\n";
+  os << indent << "BlurGaussianKind: " << this->BlurGaussianKind << "\n";
+  os << indent << "BlurHalfKernel: ";
+  list(this->BlurHalfKernel);
+  os << indent << "BlurTapSpacing: " << this->BlurTapSpacing << "\n";
+  os << indent << "BlurIterations: " << this->BlurIterations << "\n";
+  os << indent << "UpsampleKernel: " << (this->UpsampleKernel ? "Bilinear" : "Tent") << "\n";
+  os << indent << "AccumulateMode: " << (this->AccumulateMode == DIRECT ? "Direct" : "Cascade")
+     << "\n";
+  os << indent << "LevelWeights: ";
+  list(this->LevelWeights);
+  os << indent << "CompositeMode: " << (this->CompositeMode == LERP ? "Lerp" : "Additive") << "\n";
+  os << indent << "Strength: " << this->Strength << "\n";
+  os << indent << "Tint: (" << this->Tint[0] << ", " << this->Tint[1] << ", " << this->Tint[2]
+     << ")\n";
+}

@@ -1,0 +1,239 @@
+/**
+ * @class   vtkImageBloom
+ * @brief   HDR bloom in one filter: bright pass, pyramid, per-level blur, accumulate, composite.
+ *
+ * With I the input colour (RGB, or the single value of 1-2 component images):
+ *
+ * 1. Bright pass. B_s = threshold(bilinear(I) at level s), where s = StartLevel and level k has
+ *    size max(1, floor(n / 2)) applied k times per axis (level 0 is the input itself). The
+ *    fetch comes first and the threshold second, as a fragment shader does it. The threshold
+ *    is vtkImageBloomThreshold::BrightPass with ThresholdMode, Threshold, Knee and
+ *    ClampLuminance.
+ * 2. Pyramid. B_{k+1} = down(B_k) with DownsampleKernel (see vtkImagePyramidDown), taken
+ *    before any blur, for NumberOfLevels levels. KarisAverage applies to the first downsample
+ *    only. With LimitLevelsToImageSize on, levels deeper than floor(log2(max(W, H))) are
+ *    dropped, as a hardware mip chain ends there; otherwise 1x1 levels repeat.
+ * 3. Blur. Each level is blurred BlurIterations times, horizontally then vertically, by a
+ *    symmetric kernel whose taps are BlurTapSpacing level pixels apart (fractional spacing means
+ *    bilinear fetches), clamped at the edges. The kernel is a Gaussian (BLUR_GAUSSIAN:
+ *    BlurStandardDeviation in level pixels, BlurRadius taps, BlurGaussianKind) or a given half
+ *    kernel (BLUR_CUSTOM: SetBlurHalfKernel). Levels whose weight is 0 are not blurred.
+ * 4. Accumulate, with w_i = GetLevelWeight(i) (i counts from the first level):
+ *    - CASCADE: A_last = w_last Bb_last, A_i = up(A_{i+1}) + w_i Bb_i, with UpsampleKernel
+ *      TENT or BILINEAR (see vtkImagePyramidUp); the bloom is bilinear(A_first) at full size.
+ *    - DIRECT: the bloom is sum_i w_i bilinear(Bb_i) at full size.
+ * 5. Composite, with S = Strength and t = Tint:
+ *    - ADDITIVE: out = I + S t bloom.
+ *    - LERP: out = (1 - S) I + S t bloom (energy-conserving when the weights sum to 1).
+ *    Alpha is copied from the input unchanged.
+ *
+ * Presets (SetPreset) reproduce the seed systems exactly as ../shared/seeds/PRESETS.md reads
+ * them, with the seeds' known defects fixed:
+ * - "webgpu-market" (seed 000): SMOOTHSTEP_KNEE, T 0.8, knee 0.5, start level 1, 5 levels,
+ *   JIMENEZ13, 9-tap blur with spacing 0.5, TENT cascade, ADDITIVE, strength 1. Deviations: the
+ *   13-tap weights sum to 1 (the seed's sum to 1.375); every level is accumulated (the seed
+ *   throws away levels 2 and deeper); knee 0 is the step lum >= T (the seed's smoothstep(t, t,
+ *   x) is undefined).
+ * - "mip-atlas" (seed 001): no threshold, start level 0, LODs 2..8 (weights 0, 0, then 0.14 x
+ *   1, 1, 1, .8, .8, .6, .4), exact area-weighted BOX mip chain limited to the image size, 7x7
+ *   binomial blur, DIRECT accumulation, LERP with strength 0.52. Deviations: odd sizes keep
+ *   their last row and column (the seed's 2 x dst source size drops them); no RGBA8
+ *   pow(x/128, 0.25) atlas encoding, so nothing above 128 is clipped; no darkness boost and no
+ *   tone mapping. By design this darkens flat regions: a constant c becomes 0.88768 c.
+ * - "ping-pong" (seed 002): HARD_LUMINANCE at T 1 (strict), full resolution, the 13-tap blur
+ *   repeated 32 times, ADDITIVE strength 1. Deviation: the 7 weights are divided by their
+ *   symmetric sum 1.0179994; the seed's gain compounds to about 3x over 64 passes.
+ * - "crt-halfres" (seed 003): PER_CHANNEL at T 0.8, start level 1, one level, 9-tap sampled
+ *   Gaussian with sigma 1.8, ADDITIVE strength 1.5. The emission multiplier and the boolean
+ *   gate of the seed belong to the scene, not to the filter.
+ *
+ * The bloom reads the whole input (its support is the whole image), so RequestUpdateExtent asks
+ * for the whole extent and any requested output piece equals the whole result bit for bit.
+ * Work runs in double precision, threaded with vtkSMPTools. Input must be float or double with
+ * 1 to 4 components.
+ */
+
+#ifndef vtkImageBloom_h
+#define vtkImageBloom_h
+
+#include "vtkFiltersBloomModule.h" // For export macro
+#include "vtkImageAlgorithm.h"
+
+#include <string> // For preset names
+#include <vector> // For level weights
+
+class VTKFILTERSBLOOM_EXPORT vtkImageBloom : public vtkImageAlgorithm
+{
+public:
+  static vtkImageBloom* New();
+  vtkTypeMacro(vtkImageBloom, vtkImageAlgorithm);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  enum BlurKernels
+  {
+    BLUR_GAUSSIAN = 0,
+    BLUR_CUSTOM = 1
+  };
+
+  enum AccumulateModes
+  {
+    CASCADE = 0,
+    DIRECT = 1
+  };
+
+  enum CompositeModes
+  {
+    ADDITIVE = 0,
+    LERP = 1
+  };
+
+  /**
+   * Configure every parameter to reproduce a seed system: "webgpu-market", "mip-atlas",
+   * "ping-pong" or "crt-halfres" (see the class description). Returns false, with an error,
+   * for an unknown name and leaves the parameters unchanged.
+   */
+  bool SetPreset(const char* name);
+
+  /// The names SetPreset accepts.
+  static std::vector<std::string> GetPresetNames();
+
+  ///@{
+  /// Bright pass (see vtkImageBloomThreshold). Defaults: SMOOTHSTEP_KNEE, 1, 0.5, off.
+  vtkSetClampMacro(ThresholdMode, int, 0, 4);
+  vtkGetMacro(ThresholdMode, int);
+  vtkSetMacro(Threshold, double);
+  vtkGetMacro(Threshold, double);
+  vtkSetClampMacro(Knee, double, 0.0, 1.0);
+  vtkGetMacro(Knee, double);
+  vtkSetClampMacro(ClampLuminance, double, 0.0, VTK_DOUBLE_MAX);
+  vtkGetMacro(ClampLuminance, double);
+  ///@}
+
+  ///@{
+  /// Pyramid level of the bright pass (0 = full resolution). Default 1 (half resolution).
+  vtkSetClampMacro(StartLevel, int, 0, 16);
+  vtkGetMacro(StartLevel, int);
+  ///@}
+
+  ///@{
+  /// Number of pyramid levels from the start level. Default 5.
+  vtkSetClampMacro(NumberOfLevels, int, 1, 32);
+  vtkGetMacro(NumberOfLevels, int);
+  ///@}
+
+  ///@{
+  /// Drop levels deeper than floor(log2(max(W, H))), like a hardware mip chain. Default off.
+  vtkSetMacro(LimitLevelsToImageSize, bool);
+  vtkGetMacro(LimitLevelsToImageSize, bool);
+  vtkBooleanMacro(LimitLevelsToImageSize, bool);
+  ///@}
+
+  ///@{
+  /// Downsampling kernel: vtkImagePyramidDown::JIMENEZ13 (default), BOX or BINOMIAL.
+  vtkSetClampMacro(DownsampleKernel, int, 0, 2);
+  vtkGetMacro(DownsampleKernel, int);
+  /// Karis average on the first downsample (JIMENEZ13 only). Default off.
+  vtkSetMacro(KarisAverage, bool);
+  vtkGetMacro(KarisAverage, bool);
+  vtkBooleanMacro(KarisAverage, bool);
+  ///@}
+
+  ///@{
+  /// Per-level blur kernel: BLUR_GAUSSIAN (default) or BLUR_CUSTOM.
+  vtkSetClampMacro(BlurKernel, int, BLUR_GAUSSIAN, BLUR_CUSTOM);
+  vtkGetMacro(BlurKernel, int);
+  /// Gaussian sigma in level pixels (default 1), its radius in taps (-1, the default, means
+  /// ceil(3 sigma)) and kind (vtkBloomKernels::GaussianKind, default sampled).
+  vtkSetClampMacro(BlurStandardDeviation, double, 0.0, 1.0e4);
+  vtkGetMacro(BlurStandardDeviation, double);
+  vtkSetClampMacro(BlurRadius, int, -1, 4096);
+  vtkGetMacro(BlurRadius, int);
+  vtkSetClampMacro(BlurGaussianKind, int, 0, 2);
+  vtkGetMacro(BlurGaussianKind, int);
+  /// The custom half kernel (centre first); used as given, not renormalized.
+  void SetBlurHalfKernel(int n, const double* weights);
+  void SetBlurHalfKernel(const std::vector<double>& weights);
+  const std::vector<double>& GetBlurHalfKernel() const { return this->BlurHalfKernel; }
+  /// Distance between blur taps in level pixels. Default 1.
+  vtkSetClampMacro(BlurTapSpacing, double, 0.0, 1.0e4);
+  vtkGetMacro(BlurTapSpacing, double);
+  /// Times the blur is repeated. Default 1.
+  vtkSetClampMacro(BlurIterations, int, 0, 1024);
+  vtkGetMacro(BlurIterations, int);
+  /// The half kernel the blur uses with the current parameters.
+  std::vector<double> GetEffectiveBlurHalfKernel() const;
+  ///@}
+
+  ///@{
+  /// Upsampling kernel for CASCADE: vtkImagePyramidUp::TENT (default) or BILINEAR.
+  vtkSetClampMacro(UpsampleKernel, int, 0, 1);
+  vtkGetMacro(UpsampleKernel, int);
+  /// CASCADE (default) or DIRECT accumulation.
+  vtkSetClampMacro(AccumulateMode, int, CASCADE, DIRECT);
+  vtkGetMacro(AccumulateMode, int);
+  ///@}
+
+  ///@{
+  /// Per-level weights, indexed from the first level. Levels without one weigh 1.
+  void SetLevelWeight(int level, double weight);
+  double GetLevelWeight(int level) const;
+  void SetLevelWeights(int n, const double* weights);
+  void SetLevelWeights(const std::vector<double>& weights);
+  const std::vector<double>& GetLevelWeights() const { return this->LevelWeights; }
+  ///@}
+
+  ///@{
+  /// ADDITIVE (default) or LERP, with Strength (default 1) and an RGB Tint (default white).
+  vtkSetClampMacro(CompositeMode, int, ADDITIVE, LERP);
+  vtkGetMacro(CompositeMode, int);
+  vtkSetMacro(Strength, double);
+  vtkGetMacro(Strength, double);
+  vtkSetVector3Macro(Tint, double);
+  vtkGetVector3Macro(Tint, double);
+  ///@}
+
+  /**
+   * Sizes of the levels the chain would use for an input of `width` x `height`, first level
+   * first, as (width, height) pairs. Exposed for testing and for the render pass.
+   */
+  std::vector<std::pair<int, int>> ComputeLevelSizes(int width, int height) const;
+
+protected:
+  vtkImageBloom();
+  ~vtkImageBloom() override;
+
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+
+  /// vtkErrorMacro and false when a parameter is out of its domain.
+  bool CheckParameters();
+
+  int ThresholdMode;
+  double Threshold;
+  double Knee;
+  double ClampLuminance;
+  int StartLevel;
+  int NumberOfLevels;
+  bool LimitLevelsToImageSize;
+  int DownsampleKernel;
+  bool KarisAverage;
+  int BlurKernel;
+  double BlurStandardDeviation;
+  int BlurRadius;
+  int BlurGaussianKind;
+  std::vector<double> BlurHalfKernel;
+  double BlurTapSpacing;
+  int BlurIterations;
+  int UpsampleKernel;
+  int AccumulateMode;
+  std::vector<double> LevelWeights;
+  int CompositeMode;
+  double Strength;
+  double Tint[3];
+
+private:
+  vtkImageBloom(const vtkImageBloom&) = delete;
+  void operator=(const vtkImageBloom&) = delete;
+};
+
+#endif

@@ -1,0 +1,132 @@
+#include "vtkBloomTestSupport.h"
+
+#include <vtkDataArray.h>
+#include <vtkPointData.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <limits>
+
+namespace vtkBloomTest
+{
+bool RunningInCI()
+{
+  const char* ci = std::getenv("CI");
+  return ci && (std::strcmp(ci, "true") == 0 || std::strcmp(ci, "1") == 0);
+}
+
+std::string SharedDataPath(const std::string& relative)
+{
+  const std::string path = std::string(VTKBLOOM_SHARED_DATA_DIR) + "/" + relative;
+  std::ifstream probe(path);
+  return probe.good() ? path : std::string();
+}
+
+std::string OutputPath(const std::string& name)
+{
+  return std::string(VTKBLOOM_TEST_OUTPUT_DIR) + "/" + name;
+}
+
+vtkSmartPointer<vtkImageData> MakeImage(const int extent[6], int components, int scalarType,
+  const std::function<double(int, int, int, int)>& f)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetExtent(const_cast<int*>(extent));
+  image->AllocateScalars(scalarType, components);
+  vtkDataArray* scalars = image->GetPointData()->GetScalars();
+  vtkIdType t = 0;
+  for (int k = extent[4]; k <= extent[5]; ++k)
+  {
+    for (int j = extent[2]; j <= extent[3]; ++j)
+    {
+      for (int i = extent[0]; i <= extent[1]; ++i, ++t)
+      {
+        for (int c = 0; c < components; ++c)
+        {
+          scalars->SetComponent(t, c, f(i, j, k, c));
+        }
+      }
+    }
+  }
+  return image;
+}
+
+double Value(vtkImageData* image, int i, int j, int k, int c)
+{
+  return image->GetScalarComponentAsDouble(i, j, k, c);
+}
+
+namespace
+{
+bool SameShape(vtkImageData* a, vtkImageData* b)
+{
+  if (!a || !b || !a->GetPointData()->GetScalars() || !b->GetPointData()->GetScalars())
+  {
+    return false;
+  }
+  int ea[6], eb[6];
+  a->GetExtent(ea);
+  b->GetExtent(eb);
+  int da[3] = { ea[1] - ea[0], ea[3] - ea[2], ea[5] - ea[4] };
+  int db[3] = { eb[1] - eb[0], eb[3] - eb[2], eb[5] - eb[4] };
+  return da[0] == db[0] && da[1] == db[1] && da[2] == db[2] &&
+    a->GetNumberOfScalarComponents() == b->GetNumberOfScalarComponents();
+}
+}
+
+double RelativeL2(vtkImageData* a, vtkImageData* b)
+{
+  if (!SameShape(a, b))
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  vtkDataArray* sa = a->GetPointData()->GetScalars();
+  vtkDataArray* sb = b->GetPointData()->GetScalars();
+  double num = 0.0, den = 0.0;
+  const vtkIdType n = sa->GetNumberOfValues();
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    const double d = sa->GetVariantValue(t).ToDouble() - sb->GetVariantValue(t).ToDouble();
+    const double r = sb->GetVariantValue(t).ToDouble();
+    num += d * d;
+    den += r * r;
+  }
+  return den > 0.0 ? std::sqrt(num / den) : std::sqrt(num);
+}
+
+double MaxAbsDifference(vtkImageData* a, vtkImageData* b)
+{
+  if (!SameShape(a, b))
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
+  vtkDataArray* sa = a->GetPointData()->GetScalars();
+  vtkDataArray* sb = b->GetPointData()->GetScalars();
+  double m = 0.0;
+  const vtkIdType n = sa->GetNumberOfValues();
+  for (vtkIdType t = 0; t < n; ++t)
+  {
+    const double d =
+      std::abs(sa->GetVariantValue(t).ToDouble() - sb->GetVariantValue(t).ToDouble());
+    if (!(d <= m))
+    {
+      m = d;
+    }
+  }
+  return m;
+}
+
+bool BitIdentical(vtkImageData* a, vtkImageData* b)
+{
+  if (!SameShape(a, b) || a->GetScalarType() != b->GetScalarType())
+  {
+    return false;
+  }
+  vtkDataArray* sa = a->GetPointData()->GetScalars();
+  vtkDataArray* sb = b->GetPointData()->GetScalars();
+  const size_t bytes = static_cast<size_t>(sa->GetNumberOfValues()) * sa->GetDataTypeSize();
+  return std::memcmp(sa->GetVoidPointer(0), sb->GetVoidPointer(0), bytes) == 0;
+}
+}

@@ -1,0 +1,53 @@
+// Helpers shared by the vtk-bloom GoogleTest suites.
+#ifndef vtkBloomTestSupport_h
+#define vtkBloomTestSupport_h
+
+#include <vtkImageData.h>
+#include <vtkSmartPointer.h>
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <string>
+
+namespace vtkBloomTest
+{
+/// True when the CI environment variable says we run under CI.
+bool RunningInCI();
+
+/// Absolute path of a file under ../shared/data, or "" when it is absent.
+std::string SharedDataPath(const std::string& relative);
+
+/// Directory for files written by tests.
+std::string OutputPath(const std::string& name);
+
+/// An image with the given extent and components, filled by f(i, j, k, c).
+vtkSmartPointer<vtkImageData> MakeImage(const int extent[6], int components, int scalarType,
+  const std::function<double(int, int, int, int)>& f);
+
+/// Scalar value at structured index (i, j, k), component c, as double.
+double Value(vtkImageData* image, int i, int j, int k, int c);
+
+/// ||a - b||_2 / ||b||_2 over all scalars; NaN if the shapes differ.
+double RelativeL2(vtkImageData* a, vtkImageData* b);
+
+/// max |a - b| over all scalars; NaN if the shapes differ.
+double MaxAbsDifference(vtkImageData* a, vtkImageData* b);
+
+/// True when both images have identical shape and bit-identical scalars.
+bool BitIdentical(vtkImageData* a, vtkImageData* b);
+}
+
+/// Resolve a shared data file into `var`; skip the test when it is missing, or fail under CI.
+#define VTKBLOOM_REQUIRE_DATA(var, relative)                                                       \
+  const std::string var = vtkBloomTest::SharedDataPath(relative);                                  \
+  if (var.empty())                                                                                 \
+  {                                                                                                \
+    if (vtkBloomTest::RunningInCI())                                                               \
+    {                                                                                              \
+      FAIL() << "shared test data missing under CI: " << (relative);                               \
+    }                                                                                              \
+    GTEST_SKIP() << "shared test data missing: " << (relative);                                    \
+  }
+
+#endif

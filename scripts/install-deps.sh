@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Install every Debian 12 package vtk-bloom needs to build, test and run.
+# Idempotent: packages already present are skipped by apt itself.
+set -euo pipefail
+
+packages=(
+  build-essential cmake ninja-build pkg-config ccache
+  libvtk9-dev vtk9 python3-vtk9 python3-numpy python3-pytest
+  libopenexr-dev libimath-dev
+  libgtest-dev libgmock-dev libbenchmark-dev
+  xvfb xauth clang-format
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+
+if [ ${#missing[@]} -eq 0 ]; then
+  echo "install-deps: all ${#packages[@]} packages already installed"
+  exit 0
+fi
+
+SUDO=""
+[ "$(id -u)" -ne 0 ] && SUDO="sudo"
+echo "install-deps: installing ${missing[*]}"
+export DEBIAN_FRONTEND=noninteractive
+$SUDO apt-get update -q
+$SUDO apt-get install -y -q --no-install-recommends "${missing[@]}"
