@@ -20,6 +20,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdlib>
+#include <cstring>
 #include <exception>
 #include <filesystem>
 #include <fstream>
@@ -44,7 +45,14 @@ struct vtkOpenEXRFailure
   bool Set(unsigned long code, const std::string& message)
   {
     this->Code = code;
-    this->Message = message;
+    // Library messages quote names from the damaged header verbatim; keep control bytes and
+    // binary junk out of the log, and keep the message short.
+    this->Message.clear();
+    for (const char c : message.substr(0, 400))
+    {
+      const auto u = static_cast<unsigned char>(c);
+      this->Message += (u >= 0x20 && u < 0x7f) ? c : '?';
+    }
     return false;
   }
 };
@@ -187,8 +195,8 @@ private:
 };
 
 //------------------------------------------------------------------------------
-int64_t vtkOpenEXRCoreFile::Read(exr_const_context_t, void* userData, void* buffer,
-  uint64_t size, uint64_t offset, exr_stream_error_func_ptr_t)
+int64_t vtkOpenEXRCoreFile::Read(exr_const_context_t, void* userData, void* buffer, uint64_t size,
+  uint64_t offset, exr_stream_error_func_ptr_t)
 {
   auto* self = static_cast<vtkOpenEXRCoreFile*>(userData);
   const auto fileSize = static_cast<uint64_t>(self->FileSize);
@@ -279,7 +287,7 @@ bool vtkOpenEXRCoreFile::Open(const std::string& fileName, vtkOpenEXRFailure& fa
     // exr_start_read releases the context itself when it fails.
     this->Context = nullptr;
     const unsigned long code = result == EXR_ERR_READ_IO ? vtkErrorCode::PrematureEndOfFileError
-                                                          : vtkErrorCode::FileFormatError;
+                                                         : vtkErrorCode::FileFormatError;
     return failure.Set(code, "not a valid OpenEXR file: " + this->Describe(result));
   }
   return true;
@@ -287,8 +295,8 @@ bool vtkOpenEXRCoreFile::Open(const std::string& fileName, vtkOpenEXRFailure& fa
 
 //------------------------------------------------------------------------------
 // Read a box attribute and check that its size is representable as a VTK extent.
-bool ReadWindow(vtkOpenEXRCoreFile& file, int part, bool data, int window[4],
-  vtkOpenEXRFailure& failure)
+bool ReadWindow(
+  vtkOpenEXRCoreFile& file, int part, bool data, int window[4], vtkOpenEXRFailure& failure)
 {
   exr_attr_box2i_t box;
   const exr_result_t result = data ? exr_get_data_window(file.Context, part, &box)
@@ -305,8 +313,8 @@ bool ReadWindow(vtkOpenEXRCoreFile& file, int part, bool data, int window[4],
   if (width < 1 || height < 1 || width > VTK_INT_MAX || height > VTK_INT_MAX)
   {
     std::ostringstream message;
-    message << "invalid " << what << " (" << box.min.x << ", " << box.min.y << ") - ("
-            << box.max.x << ", " << box.max.y << ")";
+    message << "invalid " << what << " (" << box.min.x << ", " << box.min.y << ") - (" << box.max.x
+            << ", " << box.max.y << ")";
     return failure.Set(vtkErrorCode::FileFormatError, message.str());
   }
   window[0] = box.min.x;
@@ -347,7 +355,8 @@ bool SelectChannels(
       "part has no layer '" + header.Layer + "'; its layers are " + JoinNames(layers));
   }
 
-  auto find = [&header](const char* base) {
+  auto find = [&header](const char* base)
+  {
     for (size_t i = 0; i < header.Channels.size(); ++i)
     {
       if (header.Channels[i].Layer == header.Layer && header.Channels[i].Base == base)
@@ -508,8 +517,8 @@ bool ReadHeader(vtkOpenEXRCoreFile& file, int partIndex, const std::string& part
   result = exr_get_storage(file.Context, part, &header.Storage);
   if (result != EXR_ERR_SUCCESS)
   {
-    return failure.Set(vtkErrorCode::FileFormatError,
-      "cannot read the part type: " + file.Describe(result));
+    return failure.Set(
+      vtkErrorCode::FileFormatError, "cannot read the part type: " + file.Describe(result));
   }
   if (header.Storage != EXR_STORAGE_SCANLINE && header.Storage != EXR_STORAGE_TILED)
   {
@@ -593,7 +602,8 @@ bool ReadHeader(vtkOpenEXRCoreFile& file, int partIndex, const std::string& part
 
 //------------------------------------------------------------------------------
 // Visit every chunk of level 0 of the selected part in order, after checking that it is where
-// the data window says it must be, so that decoding can never write outside the image.
+// the data window says it must be, so that decoding can never write outside the image. The
+// visitor gets the chunk and the pixel coordinates of its first pixel.
 template <typename Visitor>
 bool ForEachChunk(vtkOpenEXRCoreFile& file, const vtkOpenEXRHeader& header,
   vtkOpenEXRFailure& failure, Visitor&& visit)
@@ -607,10 +617,17 @@ bool ForEachChunk(vtkOpenEXRCoreFile& file, const vtkOpenEXRHeader& header,
   // millions of chunks before we iterate over them.
   int32_t chunkCount = 0;
   exr_result_t result = exr_get_chunk_count(file.Context, part, &chunkCount);
-  if (result != EXR_ERR_SUCCESS || chunkCount < 1 || chunkCount > file.FileSize / 16)
+  if (result != EXR_ERR_SUCCESS)
   {
     return failure.Set(
-      vtkErrorCode::FileFormatError, "invalid chunk count: " + file.Describe(result));
+      vtkErrorCode::FileFormatError, "cannot read the chunk count: " + file.Describe(result));
+  }
+  if (chunkCount < 1 || chunkCount > file.FileSize / 16)
+  {
+    std::ostringstream message;
+    message << "the part has " << chunkCount << " pixel data chunks, which a file of "
+            << file.FileSize << " bytes cannot hold";
+    return failure.Set(vtkErrorCode::FileFormatError, message.str());
   }
 
   vtkTypeInt64 stepX = header.Width, stepY = 1;
@@ -642,35 +659,43 @@ bool ForEachChunk(vtkOpenEXRCoreFile& file, const vtkOpenEXRHeader& header,
 
   const vtkTypeInt64 countX = (header.Width + stepX - 1) / stepX;
   const vtkTypeInt64 countY = (header.Height + stepY - 1) / stepY;
+  // Level 0 is part of the chunk table, so this also bounds the loop below by the file size.
+  if (countX * countY > chunkCount)
+  {
+    return failure.Set(
+      vtkErrorCode::FileFormatError, "the chunk count does not cover the data window");
+  }
   for (vtkTypeInt64 j = 0; j < countY; ++j)
   {
     for (vtkTypeInt64 i = 0; i < countX; ++i)
     {
       exr_chunk_info_t chunk;
       result = header.Storage == EXR_STORAGE_SCANLINE
-        ? exr_read_scanline_chunk_info(
-            file.Context, part, static_cast<int>(y0 + j * stepY), &chunk)
+        ? exr_read_scanline_chunk_info(file.Context, part, static_cast<int>(y0 + j * stepY), &chunk)
         : exr_read_tile_chunk_info(
             file.Context, part, static_cast<int>(i), static_cast<int>(j), 0, 0, &chunk);
       if (result != EXR_ERR_SUCCESS)
       {
-        const unsigned long code = result == EXR_ERR_READ_IO
-          ? vtkErrorCode::PrematureEndOfFileError
-          : vtkErrorCode::FileFormatError;
+        const unsigned long code = result == EXR_ERR_READ_IO ? vtkErrorCode::PrematureEndOfFileError
+                                                             : vtkErrorCode::FileFormatError;
         return failure.Set(code, "invalid pixel data chunk: " + file.Describe(result));
       }
       const vtkTypeInt64 startX = x0 + i * stepX, startY = y0 + j * stepY;
       const vtkTypeInt64 width = std::min(stepX, x1 - startX + 1);
       const vtkTypeInt64 height = std::min(stepY, y1 - startY + 1);
+      // The library reports scanline chunks by pixel position and tiles by tile index.
+      const bool placed = header.Storage == EXR_STORAGE_SCANLINE
+        ? (chunk.start_x == startX && chunk.start_y == startY)
+        : (chunk.start_x == i && chunk.start_y == j && chunk.level_x == 0 && chunk.level_y == 0);
       const auto fileSize = static_cast<uint64_t>(file.FileSize);
-      if (chunk.start_x != startX || chunk.start_y != startY || chunk.width != width ||
-        chunk.height != height || chunk.packed_size > fileSize ||
-        chunk.data_offset > fileSize - chunk.packed_size)
+      if (!placed || chunk.width != width || chunk.height != height ||
+        chunk.packed_size > fileSize || chunk.data_offset > fileSize - chunk.packed_size)
       {
         return failure.Set(vtkErrorCode::FileFormatError,
           "a pixel data chunk does not match the data window or lies outside the file");
       }
-      if (!visit(chunk, static_cast<double>(j * countX + i + 1) / (countX * countY)))
+      const double fraction = static_cast<double>(j * countX + i + 1) / (countX * countY);
+      if (!visit(chunk, static_cast<int32_t>(startX), static_cast<int32_t>(startY), fraction))
       {
         return false;
       }
@@ -684,7 +709,7 @@ bool ForEachChunk(vtkOpenEXRCoreFile& file, const vtkOpenEXRHeader& header,
 struct vtkOpenEXRDecoder
 {
   exr_const_context_t Context;
-  exr_decode_pipeline_t Pipeline = EXR_DECODE_PIPELINE_INITIALIZER;
+  exr_decode_pipeline_t Pipeline{}; // zeroed, as EXR_DECODE_PIPELINE_INITIALIZER
   bool Initialized = false;
 
   explicit vtkOpenEXRDecoder(exr_const_context_t context)
@@ -716,85 +741,217 @@ struct vtkOpenEXRDecoder
 };
 
 //------------------------------------------------------------------------------
-// Decode the selected channels of every chunk with the core library. With `output` set, the
-// channels are written interleaved into it as 32-bit `type` values (half is widened exactly);
-// without it, each chunk is decoded into scratch memory, only to prove that it decodes.
+// Check the whole chunk table of the selected part, and the largest decompressed chunk, before
+// any pixel memory is allocated: a header that promises a large image backed by a missing or
+// broken table then costs nothing.
+bool ValidateChunks(vtkOpenEXRCoreFile& file, const vtkOpenEXRHeader& header,
+  vtkTypeUInt64 maximumBytes, vtkOpenEXRFailure& failure)
+{
+  // The decoder allocates one decompressed chunk holding every channel of the part, selected
+  // or not, so it needs its own bound.
+  uint64_t chunkBytes = 0;
+  const exr_result_t result = exr_get_chunk_unpacked_size(file.Context, header.Part, &chunkBytes);
+  if (result != EXR_ERR_SUCCESS || chunkBytes > maximumBytes)
+  {
+    std::ostringstream message;
+    message << "a decompressed chunk of " << chunkBytes
+            << " bytes exceeds MaximumImageBytes or is invalid";
+    return failure.Set(vtkErrorCode::FileFormatError, message.str());
+  }
+  return ForEachChunk(
+    file, header, failure, [](const exr_chunk_info_t&, int32_t, int32_t, double) { return true; });
+}
+
+//------------------------------------------------------------------------------
+// Little-endian loads (the EXR byte order) that work on any host and any alignment.
+inline uint32_t LoadLE32(const uint8_t* p)
+{
+  return static_cast<uint32_t>(p[0]) | (static_cast<uint32_t>(p[1]) << 8) |
+    (static_cast<uint32_t>(p[2]) << 16) | (static_cast<uint32_t>(p[3]) << 24);
+}
+
+inline uint16_t LoadLE16(const uint8_t* p)
+{
+  return static_cast<uint16_t>(p[0] | (p[1] << 8));
+}
+
+//------------------------------------------------------------------------------
+// Exact half -> float widening on the bit level. Every half, NaN payloads (signalling ones
+// included) and subnormals too, maps to the float of identical value: the mantissa is shifted
+// into place and the exponent rebiased, so nothing is quieted or rounded.
+inline float HalfBitsToFloat(uint16_t half)
+{
+  const uint32_t sign = static_cast<uint32_t>(half & 0x8000u) << 16;
+  uint32_t exponent = (half >> 10) & 0x1fu;
+  uint32_t mantissa = half & 0x3ffu;
+  uint32_t bits;
+  if (exponent == 0x1fu)
+  {
+    bits = sign | 0x7f800000u | (mantissa << 13);
+  }
+  else if (exponent != 0)
+  {
+    bits = sign | ((exponent + 112u) << 23) | (mantissa << 13);
+  }
+  else if (mantissa == 0)
+  {
+    bits = sign;
+  }
+  else
+  {
+    // Subnormal half: normalise; every such value is a normal float.
+    exponent = 113u;
+    while ((mantissa & 0x400u) == 0)
+    {
+      mantissa <<= 1;
+      --exponent;
+    }
+    bits = sign | (exponent << 23) | ((mantissa & 0x3ffu) << 13);
+  }
+  float value;
+  std::memcpy(&value, &bits, sizeof(value));
+  return value;
+}
+
+//------------------------------------------------------------------------------
+// Decode every chunk of the selected part with the core library. The library only reads and
+// decompresses; the unpacking into the interleaved output is ours: the core library's fast
+// interleaving paths of this release assume the output components are in file (alphabetical)
+// order, which R, G, B, A is not. With `output` null, chunks are only decompressed and their
+// layout checked, which validates luminance/chroma files before the C++ library sees them.
 bool DecodeCore(vtkOpenEXRCoreFile& file, const vtkOpenEXRHeader& header, void* output,
-  exr_pixel_type_t type, vtkAlgorithm* progress, vtkOpenEXRFailure& failure)
+  bool unsignedOutput, vtkAlgorithm* progress, vtkOpenEXRFailure& failure)
 {
   vtkOpenEXRDecoder decoder(file.Context);
-  const int components = header.NumberOfComponents;
-  const int32_t pixelStride = 4 * components;
-  const auto lineStride = static_cast<int32_t>(header.Width * pixelStride);
-  std::vector<std::vector<uint8_t>> scratch(header.Channels.size());
+  const size_t components = static_cast<size_t>(header.NumberOfComponents);
+  const size_t width = static_cast<size_t>(header.Width);
+  std::vector<int> componentOf;
 
   return ForEachChunk(file, header, failure,
-    [&](const exr_chunk_info_t& chunk, double fraction) {
-      exr_result_t result = decoder.Start(header.Part, chunk);
-      if (result != EXR_ERR_SUCCESS)
+    [&](const exr_chunk_info_t& chunk, int32_t startX, int32_t startY, double fraction)
+    {
+      auto corrupt = [&](exr_result_t result)
       {
         return failure.Set(vtkErrorCode::FileFormatError,
           "cannot decode a pixel data chunk: " + file.Describe(result));
-      }
+      };
+      exr_result_t result = decoder.Start(header.Part, chunk);
       exr_decode_pipeline_t& pipeline = decoder.Pipeline;
-      for (int16_t c = 0; c < pipeline.channel_count; ++c)
-      {
-        exr_coding_channel_info_t& channel = pipeline.channels[c];
-        channel.decode_to_ptr = nullptr;
-        int selected = -1;
-        for (size_t k = 0; k < header.Decoded.size(); ++k)
-        {
-          if (header.Channels[header.Decoded[k]].Name == channel.channel_name)
-          {
-            selected = static_cast<int>(k);
-          }
-        }
-        if (selected < 0)
-        {
-          continue;
-        }
-        channel.user_bytes_per_element = 4;
-        channel.user_data_type = static_cast<uint16_t>(type);
-        if (output)
-        {
-          // Only full-resolution channels reach here (see SelectChannels).
-          if (channel.width != chunk.width || channel.height != chunk.height)
-          {
-            return failure.Set(vtkErrorCode::FileFormatError,
-              "a pixel data chunk does not match the channel geometry");
-          }
-          const size_t offset = static_cast<size_t>(chunk.start_y - header.DataWindow[2]) *
-              static_cast<size_t>(header.Width) +
-            static_cast<size_t>(chunk.start_x - header.DataWindow[0]);
-          channel.user_pixel_stride = pixelStride;
-          channel.user_line_stride = lineStride;
-          channel.decode_to_ptr = static_cast<uint8_t*>(output) +
-            (offset * static_cast<size_t>(components) + static_cast<size_t>(selected)) * 4;
-        }
-        else
-        {
-          if (channel.width < 0 || channel.height < 0 || channel.width > chunk.width ||
-            channel.height > chunk.height)
-          {
-            return failure.Set(vtkErrorCode::FileFormatError,
-              "a pixel data chunk does not match the channel geometry");
-          }
-          std::vector<uint8_t>& buffer = scratch[header.Decoded[selected]];
-          buffer.resize(static_cast<size_t>(channel.width) * channel.height * 4 + 4);
-          channel.user_pixel_stride = 4;
-          channel.user_line_stride = channel.width * 4;
-          channel.decode_to_ptr = buffer.data();
-        }
-      }
-      result = exr_decoding_choose_default_routines(file.Context, header.Part, &pipeline);
       if (result == EXR_ERR_SUCCESS)
       {
+        // With no destination pointers this picks only the read and decompress steps.
+        for (int16_t c = 0; c < pipeline.channel_count; ++c)
+        {
+          pipeline.channels[c].decode_to_ptr = nullptr;
+        }
+        result = exr_decoding_choose_default_routines(file.Context, header.Part, &pipeline);
+      }
+      if (result == EXR_ERR_SUCCESS)
+      {
+        pipeline.unpack_and_convert_fn = nullptr;
         result = exr_decoding_run(file.Context, header.Part, &pipeline);
       }
       if (result != EXR_ERR_SUCCESS)
       {
-        return failure.Set(vtkErrorCode::FileFormatError,
-          "cannot decode a pixel data chunk: " + file.Describe(result));
+        return corrupt(result);
+      }
+
+      // The decompressed chunk holds, line by line, each channel that has samples on that line
+      // (y divisible by its y sampling), in channel-list order. Check that the layout the
+      // library describes accounts for exactly the bytes it produced before walking it.
+      componentOf.assign(static_cast<size_t>(pipeline.channel_count), -1);
+      uint64_t expectedBytes = 0;
+      for (int16_t c = 0; c < pipeline.channel_count; ++c)
+      {
+        const exr_coding_channel_info_t& channel = pipeline.channels[c];
+        if (channel.y_samples < 1)
+        {
+          return failure.Set(vtkErrorCode::FileFormatError, "invalid channel sampling");
+        }
+        int32_t lines = 0;
+        for (int32_t line = 0; line < chunk.height; ++line)
+        {
+          lines += (startY + line) % channel.y_samples == 0 ? 1 : 0;
+        }
+        if (channel.width < 0 || channel.height != lines || channel.x_samples < 1 ||
+          (channel.bytes_per_element != 2 && channel.bytes_per_element != 4) ||
+          (channel.x_samples == 1 && channel.width != chunk.width))
+        {
+          return failure.Set(
+            vtkErrorCode::FileFormatError, "a pixel data chunk does not match the channel layout");
+        }
+        expectedBytes += static_cast<uint64_t>(channel.width) * static_cast<uint64_t>(lines) *
+          static_cast<uint64_t>(channel.bytes_per_element);
+        for (size_t k = 0; k < header.Decoded.size(); ++k)
+        {
+          if (header.Channels[header.Decoded[k]].Name == channel.channel_name)
+          {
+            componentOf[c] = static_cast<int>(k);
+          }
+        }
+      }
+      if (expectedBytes != chunk.unpacked_size || (expectedBytes > 0 && !pipeline.unpacked_buffer))
+      {
+        return failure.Set(
+          vtkErrorCode::FileFormatError, "a pixel data chunk does not match the channel layout");
+      }
+
+      if (output)
+      {
+        const uint8_t* in = static_cast<const uint8_t*>(pipeline.unpacked_buffer);
+        for (int32_t line = 0; line < chunk.height; ++line)
+        {
+          const int32_t y = startY + line;
+          const size_t row = static_cast<size_t>(y - header.DataWindow[2]);
+          const size_t column = static_cast<size_t>(startX - header.DataWindow[0]);
+          for (int16_t c = 0; c < pipeline.channel_count; ++c)
+          {
+            const exr_coding_channel_info_t& channel = pipeline.channels[c];
+            if (y % channel.y_samples != 0)
+            {
+              continue;
+            }
+            const size_t count = static_cast<size_t>(channel.width);
+            const int bytes = channel.bytes_per_element;
+            if (componentOf[c] >= 0)
+            {
+              // Selected channels are full resolution (SelectChannels), so count == chunk width.
+              const size_t first =
+                (row * width + column) * components + static_cast<size_t>(componentOf[c]);
+              if (unsignedOutput)
+              {
+                uint32_t* out = static_cast<uint32_t*>(output) + first;
+                for (size_t x = 0; x < count; ++x, out += components)
+                {
+                  *out = LoadLE32(in + x * 4);
+                }
+              }
+              else
+              {
+                float* out = static_cast<float*>(output) + first;
+                for (size_t x = 0; x < count; ++x, out += components)
+                {
+                  const uint8_t* value = in + x * static_cast<size_t>(bytes);
+                  if (channel.data_type == EXR_PIXEL_HALF)
+                  {
+                    *out = HalfBitsToFloat(LoadLE16(value));
+                  }
+                  else if (channel.data_type == EXR_PIXEL_FLOAT)
+                  {
+                    const uint32_t bits = LoadLE32(value);
+                    std::memcpy(out, &bits, sizeof(bits));
+                  }
+                  else
+                  {
+                    // UINT among float channels: the nearest float (exact below 2^24).
+                    *out = static_cast<float>(LoadLE32(value));
+                  }
+                }
+              }
+            }
+            in += count * static_cast<size_t>(bytes);
+          }
+        }
       }
       progress->UpdateProgress(fraction * (output ? 1.0 : 0.5));
       return !progress->GetAbortExecute() ||
@@ -1031,11 +1188,11 @@ int vtkOpenEXRReader::RequestData(
     {
       failure.Set(vtkErrorCode::FileFormatError, "the file changed after UpdateInformation()");
     }
-    else
+    else if (ValidateChunks(file, header, this->MaximumImageBytes, failure))
     {
       // Allocate ourselves so that a failed allocation is an error, not an abort.
-      const size_t values = static_cast<size_t>(header.Width) *
-        static_cast<size_t>(header.Height) * static_cast<size_t>(header.NumberOfComponents);
+      const size_t values = static_cast<size_t>(header.Width) * static_cast<size_t>(header.Height) *
+        static_cast<size_t>(header.NumberOfComponents);
       void* memory = std::malloc(values * 4);
       if (!memory)
       {
@@ -1065,7 +1222,7 @@ int vtkOpenEXRReader::RequestData(
     if (header.LuminanceChroma)
     {
       // Validate every chunk with the hardened decoder before the C++ library reads them.
-      if (DecodeCore(file, header, nullptr, EXR_PIXEL_FLOAT, this, failure))
+      if (DecodeCore(file, header, nullptr, false, this, failure))
       {
         file.Close();
         ConvertLuminanceChroma(
@@ -1074,8 +1231,8 @@ int vtkOpenEXRReader::RequestData(
     }
     else
     {
-      DecodeCore(file, header, scalars->GetVoidPointer(0),
-        header.ScalarType == VTK_UNSIGNED_INT ? EXR_PIXEL_UINT : EXR_PIXEL_FLOAT, this, failure);
+      DecodeCore(file, header, scalars->GetVoidPointer(0), header.ScalarType == VTK_UNSIGNED_INT,
+        this, failure);
     }
   }
 
@@ -1095,8 +1252,8 @@ int vtkOpenEXRReader::RequestData(
     scalars->SetComponentName(c, header.ComponentNames[c].c_str());
   }
   scalars->SetName("OpenEXRImage");
-  output->SetExtent(header.DataWindow[0], header.DataWindow[1], header.DataWindow[2],
-    header.DataWindow[3], 0, 0);
+  output->SetExtent(
+    header.DataWindow[0], header.DataWindow[1], header.DataWindow[2], header.DataWindow[3], 0, 0);
   output->SetSpacing(1.0, 1.0, 1.0);
   output->SetOrigin(0.0, 0.0, 0.0);
   output->GetPointData()->SetScalars(scalars);

@@ -3,9 +3,12 @@
  * @brief   read one flat part of an OpenEXR (.exr) file into a vtkImageData
  *
  * vtkOpenEXRReader reads the full-resolution level of one scanline or tiled part of an
- * OpenEXR 2.x/3.x file. The output is a single-slice image whose point scalars hold the
- * pixels of the selected channels, converted to float (VTK_FLOAT) from half or float
- * channels; when every selected channel is UINT the scalars are VTK_UNSIGNED_INT instead.
+ * OpenEXR 2.x/3.x file (level 0 of a mip-mapped or rip-mapped part). The output is a
+ * single-slice image whose point scalars hold the pixels of the selected channels as float
+ * (VTK_FLOAT): half values are widened exactly, bit for bit (NaN payloads, infinities and
+ * subnormals included), float values are copied, and a UINT channel read among float ones is
+ * rounded to the nearest float (exact below 2^24). When every selected channel is UINT the
+ * scalars are VTK_UNSIGNED_INT instead, copied exactly.
  *
  * Geometry. Pixel (x, y) of the EXR data window becomes structured index (x, y, 0) of the
  * output: WHOLE_EXTENT is [xmin, xmax, ymin, ymax, 0, 0] of the data window, the spacing is 1
@@ -15,8 +18,11 @@
  * Channel selection. The channels of one layer are read ("diffuse.R" is channel R of layer
  * "diffuse"). Set the layer with SetLayer(); by default the unnamed layer is used when it has
  * channels, otherwise the layer of the first channel in the file. Within the layer:
- * - Y with RY and/or BY (luminance/chroma, possibly 2x2 subsampled): converted to R, G, B
- *   (plus A when present) by Imf::RgbaInputFile, which only reads the first part of a file;
+ * - Y with RY and/or BY (luminance/chroma): converted to R, G, B (plus A when present) by
+ *   Imf::RgbaInputFile, which reconstructs the chroma and applies the file's chromaticities.
+ *   That class reads only the first part of a file and expects 2x2-subsampled chroma (the
+ *   layout OpenEXR writes), so luminance/chroma in another part or with other sampling is
+ *   refused with an error;
  * - R, G and B: 3 components (4 with A);
  * - Y: 1 component (2 with A);
  * - anything else: the first (at most four) channels in file order, which OpenEXR sorts by
@@ -26,12 +32,19 @@
  *
  * Multi-part files. SetPartIndex() selects a part by position and SetPartName() by name (the
  * name wins when it is set). GetNumberOfParts() and GetPartName(int) describe the file after
- * UpdateInformation(). Deep parts are refused with an error.
+ * UpdateInformation(). Deep parts are refused with an error. Only the selected part's pixel
+ * data is validated, so an intact part of a multi-part file whose other parts are damaged or
+ * truncated can still be read; the headers of all parts must be valid.
  *
  * Robustness. Damaged files must fail cleanly. The header of every part is parsed first with
- * the OpenEXR core C library in strict mode (it was hardened by fuzzing) and the chunk table
- * of the selected part is validated before anything large is allocated; pixels are decoded by
- * the core library as well. Images whose decoded size exceeds MaximumImageBytes are refused.
+ * the OpenEXR core C library in strict mode (it was hardened by fuzzing), and the chunk table
+ * of the selected part is validated (every chunk where the data window puts it, inside the
+ * file) before any pixel memory is allocated. The core library then reads and decompresses
+ * each chunk, and the reader unpacks it itself after checking that its size matches the
+ * channel layout. Luminance/chroma files go through the same validation and decompression
+ * before Imf::RgbaInputFile reads them. Images whose decoded size exceeds MaximumImageBytes
+ * are refused, as are chunks whose decompressed size does; only regular files are opened.
+ * Channels other than luminance/chroma must not be subsampled.
  * Every failure is reported with vtkErrorMacro (so an ErrorEvent observer sees it), sets the
  * error code (GetErrorCode(): vtkErrorCode::FileNotFoundError, FileFormatError, ...) and
  * leaves the output empty: no point data and an empty extent.

@@ -9,6 +9,7 @@
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 
+#include <Imath/half.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -16,7 +17,6 @@
 #include <ImfStdIO.h>
 #include <ImfTileDescription.h>
 #include <ImfTiledOutputFile.h>
-#include <Imath/half.h>
 
 #include <cerrno>
 #include <cfloat>
@@ -69,8 +69,8 @@ bool CreateTemporaryFile(const fs::path& target, fs::path& temporary, std::strin
     name << "." << target.filename().string() << "." << std::hex << generator() << ".tmp";
     temporary = directory / name.str();
 #ifdef _WIN32
-    const int fd = _wopen(temporary.c_str(), _O_WRONLY | _O_CREAT | _O_EXCL | _O_BINARY,
-      _S_IREAD | _S_IWRITE);
+    const int fd =
+      _wopen(temporary.c_str(), _O_WRONLY | _O_CREAT | _O_EXCL | _O_BINARY, _S_IREAD | _S_IWRITE);
     if (fd >= 0)
     {
       _close(fd);
@@ -202,8 +202,8 @@ const char* vtkOpenEXRWriter::GetPixelTypeAsString()
 //------------------------------------------------------------------------------
 const char* vtkOpenEXRWriter::GetCompressionAsString()
 {
-  static const char* const names[] = { "None", "RLE", "ZIPS", "ZIP", "PIZ", "PXR24", "B44",
-    "B44A", "DWAA", "DWAB" };
+  static const char* const names[] = { "None", "RLE", "ZIPS", "ZIP", "PIZ", "PXR24", "B44", "B44A",
+    "DWAA", "DWAB" };
   return names[this->Compression];
 }
 
@@ -221,7 +221,8 @@ void vtkOpenEXRWriter::WriteData()
 {
   this->SetErrorCode(vtkErrorCode::NoError);
   const std::string fileName = this->FileName ? this->FileName : "";
-  auto fail = [this, &fileName](unsigned long code, const std::string& message) {
+  auto fail = [this, &fileName](unsigned long code, const std::string& message)
+  {
     this->SetErrorCode(code);
     vtkErrorMacro("Cannot write OpenEXR file '" << fileName << "': " << message);
   };
@@ -253,8 +254,14 @@ void vtkOpenEXRWriter::WriteData()
     return;
   }
   vtkDataArray* scalars = input->GetPointData()->GetScalars();
-  const vtkIdType pixels = static_cast<vtkIdType>(extent[1] - extent[0] + 1) *
-    static_cast<vtkIdType>(extent[3] - extent[2] + 1);
+  const vtkIdType width = static_cast<vtkIdType>(extent[1]) - extent[0] + 1;
+  const vtkIdType height = static_cast<vtkIdType>(extent[3]) - extent[2] + 1;
+  if (width > VTK_INT_MAX || height > VTK_INT_MAX)
+  {
+    fail(vtkErrorCode::UnknownError, "the input extent is too large for OpenEXR");
+    return;
+  }
+  const vtkIdType pixels = width * height;
   if (!scalars || scalars->GetNumberOfTuples() != pixels)
   {
     fail(vtkErrorCode::UnknownError, "the input has no point scalars matching its extent");
@@ -291,8 +298,7 @@ void vtkOpenEXRWriter::WriteData()
     return;
   }
 
-  const Imath::Box2i dataWindow(
-    Imath::V2i(extent[0], extent[2]), Imath::V2i(extent[1], extent[3]));
+  const Imath::Box2i dataWindow(Imath::V2i(extent[0], extent[2]), Imath::V2i(extent[1], extent[3]));
   Imath::Box2i displayWindow = dataWindow;
   if (this->DisplayWindow[0] <= this->DisplayWindow[1] &&
     this->DisplayWindow[2] <= this->DisplayWindow[3])
@@ -338,21 +344,20 @@ void vtkOpenEXRWriter::WriteData()
       Imf::INCREASING_Y, static_cast<Imf::Compression>(this->Compression));
     Imf::FrameBuffer frameBuffer;
     const size_t xStride = elementSize * static_cast<size_t>(components);
-    const size_t yStride = xStride * static_cast<size_t>(extent[1] - extent[0] + 1);
+    const size_t yStride = xStride * static_cast<size_t>(width);
     for (int c = 0; c < components; ++c)
     {
       const char* name = channelNames[components - 1][c];
       header.channels().insert(name, Imf::Channel(pixelType));
       // Slice::Make maps absolute pixel coordinates onto our buffer without forming an
       // out-of-range pointer ourselves.
-      frameBuffer.insert(name,
-        Imf::Slice::Make(pixelType, base + c * elementSize, dataWindow, xStride, yStride));
+      frameBuffer.insert(
+        name, Imf::Slice::Make(pixelType, base + c * elementSize, dataWindow, xStride, yStride));
     }
     if (this->Tiled)
     {
-      header.setTileDescription(
-        Imf::TileDescription(static_cast<unsigned int>(this->TileSize[0]),
-          static_cast<unsigned int>(this->TileSize[1]), Imf::ONE_LEVEL));
+      header.setTileDescription(Imf::TileDescription(static_cast<unsigned int>(this->TileSize[0]),
+        static_cast<unsigned int>(this->TileSize[1]), Imf::ONE_LEVEL));
     }
 
     std::string error;
@@ -381,7 +386,7 @@ void vtkOpenEXRWriter::WriteData()
       {
         Imf::OutputFile out(exrStream, header);
         out.setFrameBuffer(frameBuffer);
-        out.writePixels(extent[3] - extent[2] + 1);
+        out.writePixels(static_cast<int>(height));
       }
       // The output file's destructor writes the chunk offset table and swallows any error;
       // the stream state checked below still records it.
@@ -394,7 +399,13 @@ void vtkOpenEXRWriter::WriteData()
     }
     this->UpdateProgress(0.9);
 
+    // Replacing a file keeps its permissions; a new file gets the default (umask) ones.
     std::error_code ec;
+    const fs::file_status previous = fs::status(fs::path(fileName), ec);
+    if (!ec && fs::is_regular_file(previous))
+    {
+      fs::permissions(temporary, previous.permissions(), ec);
+    }
     fs::rename(temporary, fs::path(fileName), ec);
     if (ec)
     {
@@ -410,7 +421,8 @@ void vtkOpenEXRWriter::WriteData()
   {
     // Keep a more specific code set just before throwing (OutOfDiskSpaceError).
     const unsigned long code = this->GetErrorCode();
-    fail(code != vtkErrorCode::NoError ? code : static_cast<unsigned long>(vtkErrorCode::UnknownError),
+    fail(
+      code != vtkErrorCode::NoError ? code : static_cast<unsigned long>(vtkErrorCode::UnknownError),
       e.what());
   }
   catch (...)

@@ -11,9 +11,10 @@
  * including NaN payloads, infinities and subnormals. Half output uses Imath's float-to-half
  * conversion, which rounds to nearest even: finite values of magnitude 65520 or more (half of
  * the way past the largest half, 65504) become +/-Inf, values in (65504, 65520) become 65504,
- * magnitudes below 2^-25 become +/-0, and NaN stays NaN (the payload keeps its top mantissa
- * bits). unsigned int scalars are written losslessly as UINT channels whatever PixelType says.
- * Any other scalar type is refused with an error.
+ * magnitudes up to 2^-25 become +/-0 (smaller magnitudes become half subnormals), and NaN stays
+ * NaN (the payload keeps its top ten mantissa bits, so NaNs that came from half survive). unsigned
+ * int scalars are written losslessly as UINT channels whatever PixelType says. Any other scalar
+ * type is refused with an error.
  *
  * Geometry. Structured index (i, j) of the input becomes pixel (i, j) of the file: the data
  * window is the x and y range of the input extent, so an extent that does not start at 0 gives

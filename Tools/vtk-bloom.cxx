@@ -4,7 +4,7 @@
 //   vtk-bloom blur --radius R [--sigma S] [--border clamp|reflect|zero] IN.exr OUT.exr|OUT.png
 //
 // .exr output is float32 RGBA, linear, with no tone mapping. .png output is tone-mapped
-// (exposure, ACES filmic fit, sRGB encoding) to 8-bit RGBA. Exit status: 0 on success, 1 when
+// (exposure, ACES filmic fit, sRGB encoding) to opaque 8-bit RGB. Exit status: 0 on success, 1 when
 // reading, processing or writing fails, 2 for a usage error. An input is never overwritten.
 
 #include "vtkBloomKernels.h"
@@ -79,6 +79,7 @@ blur: separable Gaussian (vtkImageSeparableGaussian), seed 004 semantics.
 
 common:
   --exposure E           exposure multiplier for .png output (default 1)
+                         (.png is opaque RGB: premultiplied colour shown over black)
   --quiet                no progress display
   --help                 this text
 
@@ -356,8 +357,14 @@ void CheckPaths(const std::string& in, const std::string& out)
   }
 }
 
-vtkSmartPointer<vtkImageData> ReadInput(
-  const std::string& path, ErrorCollector& errors, ProgressBar& progress)
+// The image and the display window it came with, which the EXR output keeps.
+struct InputImage
+{
+  vtkSmartPointer<vtkImageData> Image;
+  int DisplayWindow[4] = { 0, -1, 0, -1 };
+};
+
+InputImage ReadInput(const std::string& path, ErrorCollector& errors, ProgressBar& progress)
 {
   vtkNew<vtkOpenEXRReader> reader;
   errors.Watch(reader);
@@ -370,8 +377,10 @@ vtkSmartPointer<vtkImageData> ReadInput(
   {
     throw RunError{ "cannot read " + path + ": no image data" };
   }
-  vtkSmartPointer<vtkImageData> result = vtkSmartPointer<vtkImageData>::New();
-  result->ShallowCopy(image);
+  InputImage result;
+  result.Image = vtkSmartPointer<vtkImageData>::New();
+  result.Image->ShallowCopy(image);
+  reader->GetDisplayWindow(result.DisplayWindow);
   return result;
 }
 
@@ -409,7 +418,9 @@ unsigned char ToneMap(double linear, double exposure)
 }
 
 // Write to a temporary file beside the target, then rename, so a failure leaves no partial
-// file and never clobbers an existing one.
+// file and never clobbers an existing one. The PNG is opaque RGB: OpenEXR colour is
+// premultiplied by alpha, so showing it as is composites it over black, which keeps the glow
+// that bloom spreads into transparent pixels.
 void WritePNG(vtkImageData* rgba, const std::string& path, double exposure, ErrorCollector& errors)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
@@ -417,23 +428,20 @@ void WritePNG(vtkImageData* rgba, const std::string& path, double exposure, Erro
   rgba->GetExtent(ext);
   const int w = ext[1] - ext[0] + 1, h = ext[3] - ext[2] + 1;
   image->SetDimensions(w, h, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 4);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
   const float* in = static_cast<const float*>(rgba->GetScalarPointer());
   unsigned char* out = static_cast<unsigned char*>(image->GetScalarPointer());
   for (int j = 0; j < h; ++j)
   {
     // Row 0 is the top of the picture; VTK's PNG writer puts the last row on top.
     const float* src = in + static_cast<size_t>(j) * w * 4;
-    unsigned char* dst = out + static_cast<size_t>(h - 1 - j) * w * 4;
+    unsigned char* dst = out + static_cast<size_t>(h - 1 - j) * w * 3;
     for (int i = 0; i < w; ++i)
     {
       for (int c = 0; c < 3; ++c)
       {
-        dst[4 * i + c] = ToneMap(src[4 * i + c], exposure);
+        dst[3 * i + c] = ToneMap(src[4 * i + c], exposure);
       }
-      const double a = std::isnan(src[4 * i + 3]) ? 1.0 : src[4 * i + 3];
-      dst[4 * i + 3] =
-        static_cast<unsigned char>(std::lround(255.0 * std::min(std::max(a, 0.0), 1.0)));
     }
   }
   const std::string temporary = path + ".tmp-" + std::to_string(::getpid()) + ".png";
@@ -457,8 +465,8 @@ void WritePNG(vtkImageData* rgba, const std::string& path, double exposure, Erro
   }
 }
 
-void WriteOutput(
-  vtkImageData* image, const std::string& path, const CommonOptions& common, ErrorCollector& errors)
+void WriteOutput(vtkImageData* image, const int displayWindow[4], const std::string& path,
+  const CommonOptions& common, ErrorCollector& errors)
 {
   auto rgba = ToFloatRGBA(image);
   if (Extension(path) == ".png")
@@ -471,6 +479,7 @@ void WriteOutput(
   writer->SetFileName(path.c_str());
   writer->SetInputData(rgba);
   writer->SetPixelTypeToFloat();
+  writer->SetDisplayWindow(const_cast<int*>(displayWindow));
   writer->Write();
   errors.ThrowIfAny("cannot write " + path + ":");
 }
@@ -614,13 +623,13 @@ int RunImage(int argc, char* argv[])
   ErrorCollector errors;
   ProgressBar progress;
   progress.Enabled = !common.Quiet && ::isatty(STDERR_FILENO);
-  auto image = ReadInput(in, errors, progress);
+  const InputImage input = ReadInput(in, errors, progress);
   errors.Watch(bloom);
   progress.Watch(bloom, "bloom");
-  bloom->SetInputData(image);
+  bloom->SetInputData(input.Image);
   bloom->Update();
   errors.ThrowIfAny("bloom failed:");
-  WriteOutput(bloom->GetOutput(), out, common, errors);
+  WriteOutput(bloom->GetOutput(), input.DisplayWindow, out, common, errors);
   return 0;
 }
 
@@ -670,9 +679,9 @@ int RunBlur(int argc, char* argv[])
   ErrorCollector errors;
   ProgressBar progress;
   progress.Enabled = !common.Quiet && ::isatty(STDERR_FILENO);
-  auto image = ReadInput(in, errors, progress);
+  const InputImage input = ReadInput(in, errors, progress);
   // Blur all four channels, alpha included, as seed 004 does.
-  auto rgba = ToFloatRGBA(image);
+  auto rgba = ToFloatRGBA(input.Image);
   blur->SetStandardDeviations(sigma, sigma, 0.0);
   blur->SetRadius(radius, radius, 0);
   errors.Watch(blur);
@@ -680,7 +689,7 @@ int RunBlur(int argc, char* argv[])
   blur->SetInputData(rgba);
   blur->Update();
   errors.ThrowIfAny("blur failed:");
-  WriteOutput(blur->GetOutput(), out, common, errors);
+  WriteOutput(blur->GetOutput(), input.DisplayWindow, out, common, errors);
   return 0;
 }
 }

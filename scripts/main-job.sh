@@ -12,8 +12,9 @@ mkdir -p "$out"
 candle="$root/../shared/data/exr/ScanLines_CandleGlass.exr"
 if [ -f "$candle" ]; then
   echo "main-job: blooming $candle"
-  "$tool" blur --radius 0 "$candle" "$out/candle-glass-before.png"
-  "$tool" image --preset webgpu-market --threshold 1.5 --strength 0.8 \
+  # A dark photograph (median 3e-4) with a flame up to 413: expose the PNG by 40.
+  "$tool" blur --radius 0 --exposure 40 "$candle" "$out/candle-glass-before.png"
+  "$tool" image --preset webgpu-market --threshold 0.5 --strength 0.25 --exposure 40 \
     "$candle" "$out/candle-glass-bloom.png"
   echo "main-job: wrote $out/candle-glass-before.png and $out/candle-glass-bloom.png"
 fi
@@ -22,3 +23,10 @@ fi
 "$tool" blur --radius 0 "$out/emissive-before.exr" "$out/emissive-before.png"
 "$tool" blur --radius 0 "$out/emissive-bloom.exr" "$out/emissive-bloom.png"
 echo "main-job: wrote $out/emissive-before.png and $out/emissive-bloom.png"
+/usr/bin/python3 "$root/scripts/side-by-side.py" "$out/emissive-comparison.png" \
+  "$out/emissive-before.png" "$out/emissive-bloom.png"
+if [ -f "$candle" ]; then
+  /usr/bin/python3 "$root/scripts/side-by-side.py" --scale 0.5 "$out/candle-glass-comparison.png" \
+    "$out/candle-glass-before.png" "$out/candle-glass-bloom.png"
+fi
+echo "main-job: side-by-side comparisons in $out/*-comparison.png"

@@ -3,9 +3,11 @@
 #include <vtkDataArray.h>
 #include <vtkPointData.h>
 
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 
@@ -24,9 +26,29 @@ std::string SharedDataPath(const std::string& relative)
   return probe.good() ? path : std::string();
 }
 
+std::string OutputDirectory()
+{
+  // One directory per test, so tests that CTest runs in parallel never share files.
+  std::string dir = VTKBLOOM_TEST_OUTPUT_DIR;
+  if (const auto* info = ::testing::UnitTest::GetInstance()->current_test_info())
+  {
+    std::string name = std::string(info->test_suite_name()) + "." + info->name();
+    for (char& c : name)
+    {
+      if (!std::isalnum(static_cast<unsigned char>(c)) && c != '.' && c != '_' && c != '-')
+      {
+        c = '_';
+      }
+    }
+    dir += "/" + name;
+  }
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
 std::string OutputPath(const std::string& name)
 {
-  return std::string(VTKBLOOM_TEST_OUTPUT_DIR) + "/" + name;
+  return OutputDirectory() + "/" + name;
 }
 
 vtkSmartPointer<vtkImageData> MakeImage(const int extent[6], int components, int scalarType,

@@ -18,7 +18,10 @@ bool RunningInCI();
 /// Absolute path of a file under ../shared/data, or "" when it is absent.
 std::string SharedDataPath(const std::string& relative);
 
-/// Directory for files written by tests.
+/// A directory of the running test's own for the files it writes (created on demand).
+std::string OutputDirectory();
+
+/// A file in OutputDirectory().
 std::string OutputPath(const std::string& name);
 
 /// An image with the given extent and components, filled by f(i, j, k, c).

@@ -1,0 +1,8 @@
+# End-to-end tests of the vtk-bloom command-line tool, run exactly as users call it.
+find_package(OpenEXR 3 REQUIRED)
+vtkbloom_add_gtest(TestCommandLine
+  SOURCES Tools/TestCommandLine.cxx
+  LIBRARIES OpenEXR::OpenEXR VTK::IOImage)
+target_compile_definitions(TestCommandLine PRIVATE
+  VTKBLOOM_TOOL="$<TARGET_FILE:vtk-bloom>")
+add_dependencies(TestCommandLine vtk-bloom)

@@ -1,0 +1,276 @@
+// End-to-end tests of `vtk-bloom`: the acceptance commands, exit codes, and that nothing is
+// ever overwritten or left half-written.
+#include "vtkBloomTestSupport.h"
+
+#include <ImfChannelList.h>
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputFile.h>
+
+#include <vtkDataArray.h>
+#include <vtkImageData.h>
+#include <vtkNew.h>
+#include <vtkPNGReader.h>
+#include <vtkPointData.h>
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace
+{
+// Run the tool with the given arguments; returns its exit status, stderr in `errors`.
+int RunTool(const std::string& arguments, std::string* errors = nullptr)
+{
+  const std::string log = vtkBloomTest::OutputPath("cli-stderr.txt");
+  const std::string command = std::string(VTKBLOOM_TOOL) + " " + arguments + " >/dev/null 2>" + log;
+  const int status = std::system(command.c_str());
+  if (errors)
+  {
+    std::ifstream in(log);
+    errors->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  }
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// An EXR file as float RGBA (missing channels: 0, alpha 1), read with OpenEXR directly.
+struct Pixels
+{
+  int Width = 0, Height = 0;
+  std::vector<float> Rgba;
+};
+
+Pixels ReadEXR(const std::string& path)
+{
+  Imf::InputFile file(path.c_str());
+  const Imath::Box2i dw = file.header().dataWindow();
+  Pixels p;
+  p.Width = dw.max.x - dw.min.x + 1;
+  p.Height = dw.max.y - dw.min.y + 1;
+  p.Rgba.assign(static_cast<size_t>(p.Width) * p.Height * 4, 0.0f);
+  char* base = reinterpret_cast<char*>(p.Rgba.data()) -
+    (static_cast<ptrdiff_t>(dw.min.x) + static_cast<ptrdiff_t>(dw.min.y) * p.Width) * 16;
+  Imf::FrameBuffer fb;
+  const char* names[4] = { "R", "G", "B", "A" };
+  for (int c = 0; c < 4; ++c)
+  {
+    fb.insert(names[c],
+      Imf::Slice(
+        Imf::FLOAT, base + 4 * c, 16, 16 * static_cast<size_t>(p.Width), 1, 1, c == 3 ? 1.0 : 0.0));
+  }
+  file.setFrameBuffer(fb);
+  file.readPixels(dw.min.y, dw.max.y);
+  return p;
+}
+
+bool IsFloatRGBA(const std::string& path)
+{
+  Imf::InputFile file(path.c_str());
+  const Imf::ChannelList& channels = file.header().channels();
+  int count = 0;
+  for (auto it = channels.begin(); it != channels.end(); ++it, ++count)
+  {
+    if (it.channel().type != Imf::FLOAT)
+    {
+      return false;
+    }
+  }
+  return count == 4 && channels.findChannel("R") && channels.findChannel("A");
+}
+
+double RelativeL2(const Pixels& out, const Pixels& expected)
+{
+  if (out.Width != expected.Width || out.Height != expected.Height)
+  {
+    return INFINITY;
+  }
+  double num = 0.0, den = 0.0;
+  for (size_t i = 0; i < out.Rgba.size(); ++i)
+  {
+    const double d = static_cast<double>(out.Rgba[i]) - expected.Rgba[i];
+    num += d * d;
+    den += static_cast<double>(expected.Rgba[i]) * expected.Rgba[i];
+  }
+  return std::sqrt(num / den);
+}
+
+std::string Slurp(const std::string& path)
+{
+  std::ifstream in(path, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+std::string Quote(const std::string& path)
+{
+  return "'" + path + "'";
+}
+}
+
+// The calibration example in ../shared/data/presets: every preset and both blur settings.
+class PresetExample : public ::testing::TestWithParam<std::pair<std::string, std::string>>
+{
+};
+
+TEST_P(PresetExample, MatchesFloat64Reference)
+{
+  VTKBLOOM_REQUIRE_DATA(input, "presets/example_161x91.exr");
+  const auto& [arguments, expectedName] = GetParam();
+  VTKBLOOM_REQUIRE_DATA(expected, "presets/example_161x91__" + expectedName + ".exr");
+  const std::string out = vtkBloomTest::OutputPath("cli-" + expectedName + ".exr");
+  fs::remove(out);
+  ASSERT_EQ(RunTool(arguments + " " + Quote(input) + " " + Quote(out)), 0);
+  ASSERT_TRUE(IsFloatRGBA(out)) << ".exr output must be float32 RGBA";
+  EXPECT_LE(RelativeL2(ReadEXR(out), ReadEXR(expected)), 1e-4);
+}
+
+INSTANTIATE_TEST_SUITE_P(CommandLine, PresetExample,
+  ::testing::Values(std::make_pair("image --preset webgpu-market", "webgpu-market"),
+    std::make_pair("image --preset mip-atlas", "mip-atlas"),
+    std::make_pair("image --preset ping-pong", "ping-pong"),
+    std::make_pair("image --preset crt-halfres", "crt-halfres"),
+    std::make_pair("blur --radius 8", "blur_r8"),
+    std::make_pair("blur --radius 3 --sigma 1", "blur_r3_s1")),
+  [](const ::testing::TestParamInfo<PresetExample::ParamType>& info)
+  {
+    std::string name = info.param.second;
+    std::replace(name.begin(), name.end(), '-', '_');
+    return name;
+  });
+
+TEST(CommandLine, BlurRadiusZeroIsBitExactCopy)
+{
+  VTKBLOOM_REQUIRE_DATA(input, "presets/example_161x91.exr");
+  const std::string out = vtkBloomTest::OutputPath("cli-r0.exr");
+  ASSERT_EQ(RunTool("blur --radius 0 " + Quote(input) + " " + Quote(out)), 0);
+  const Pixels a = ReadEXR(input), b = ReadEXR(out);
+  ASSERT_EQ(a.Rgba.size(), b.Rgba.size());
+  EXPECT_EQ(0, std::memcmp(a.Rgba.data(), b.Rgba.data(), a.Rgba.size() * sizeof(float)));
+}
+
+TEST(CommandLine, OptionsOverrideThePreset)
+{
+  VTKBLOOM_REQUIRE_DATA(input, "presets/example_161x91.exr");
+  const std::string a = vtkBloomTest::OutputPath("cli-strength1.exr");
+  const std::string b = vtkBloomTest::OutputPath("cli-strength0.exr");
+  ASSERT_EQ(RunTool("image --preset webgpu-market " + Quote(input) + " " + Quote(a)), 0);
+  ASSERT_EQ(
+    RunTool("image --preset webgpu-market --strength 0 " + Quote(input) + " " + Quote(b)), 0);
+  // Strength 0 leaves the input; strength 1 adds light.
+  const Pixels in = ReadEXR(input), p1 = ReadEXR(a), p0 = ReadEXR(b);
+  EXPECT_EQ(RelativeL2(p0, in), 0.0);
+  EXPECT_GT(RelativeL2(p1, in), 1e-3);
+}
+
+TEST(CommandLine, PngOutputIsToneMapped8Bit)
+{
+  VTKBLOOM_REQUIRE_DATA(input, "presets/example_161x91.exr");
+  const std::string out = vtkBloomTest::OutputPath("cli-bloom.png");
+  fs::remove(out);
+  ASSERT_EQ(RunTool("image --preset crt-halfres " + Quote(input) + " " + Quote(out)), 0);
+  vtkNew<vtkPNGReader> reader;
+  reader->SetFileName(out.c_str());
+  reader->Update();
+  int dims[3];
+  reader->GetOutput()->GetDimensions(dims);
+  EXPECT_EQ(dims[0], 161);
+  EXPECT_EQ(dims[1], 91);
+  EXPECT_EQ(reader->GetOutput()->GetScalarType(), VTK_UNSIGNED_CHAR);
+  // The emissive discs (values up to 200) are white after tone mapping, the dim corner is not.
+  double range[2];
+  reader->GetOutput()->GetPointData()->GetScalars()->GetRange(range, 0);
+  EXPECT_EQ(range[1], 255.0);
+  EXPECT_LT(range[0], 128.0);
+}
+
+TEST(CommandLine, UsageErrorsExitWithTwo)
+{
+  VTKBLOOM_REQUIRE_DATA(input, "presets/example_161x91.exr");
+  const std::string out = Quote(vtkBloomTest::OutputPath("cli-usage.exr"));
+  const std::string in = Quote(input);
+  std::string errors;
+  EXPECT_EQ(RunTool("", &errors), 2);
+  EXPECT_EQ(RunTool("frobnicate " + in + " " + out), 2);
+  EXPECT_EQ(RunTool("image --preset nope " + in + " " + out, &errors), 2);
+  EXPECT_NE(errors.find("unknown preset"), std::string::npos) << errors;
+  EXPECT_EQ(RunTool("image --threshold abc " + in + " " + out), 2);
+  EXPECT_EQ(RunTool("image --knee 2 " + in + " " + out), 2);
+  EXPECT_EQ(RunTool("image --levels 0 " + in + " " + out), 2);
+  EXPECT_EQ(RunTool("image --bogus 1 " + in + " " + out), 2);
+  EXPECT_EQ(RunTool("image " + in), 2);
+  EXPECT_EQ(RunTool("blur " + in + " " + out, &errors), 2);
+  EXPECT_NE(errors.find("--radius"), std::string::npos) << errors;
+  EXPECT_EQ(RunTool("blur --radius 33 " + in + " " + out), 2);
+  EXPECT_EQ(RunTool("blur --radius -1 " + in + " " + out), 2);
+  EXPECT_EQ(RunTool("blur --radius 4 --sigma -1 " + in + " " + out), 2);
+  EXPECT_EQ(RunTool("blur --radius 4 --border wrap " + in + " " + out), 2);
+  EXPECT_EQ(RunTool("blur --radius 4 " + in + " out.tiff"), 2);
+  EXPECT_EQ(RunTool("--help"), 0);
+  EXPECT_EQ(RunTool("image --help"), 0);
+}
+
+TEST(CommandLine, NeverOverwritesTheInput)
+{
+  VTKBLOOM_REQUIRE_DATA(source, "presets/example_161x91.exr");
+  const std::string copy = vtkBloomTest::OutputPath("cli-input-copy.exr");
+  fs::copy_file(source, copy, fs::copy_options::overwrite_existing);
+  const std::string before = Slurp(copy);
+  std::string errors;
+  EXPECT_EQ(RunTool("image " + Quote(copy) + " " + Quote(copy), &errors), 2);
+  EXPECT_NE(errors.find("refusing to overwrite"), std::string::npos) << errors;
+  // Through another spelling of the same path, too.
+  const std::string other = vtkBloomTest::OutputPath("./cli-input-copy.exr");
+  EXPECT_EQ(RunTool("blur --radius 2 " + Quote(copy) + " " + Quote(other)), 2);
+  EXPECT_EQ(Slurp(copy), before);
+}
+
+TEST(CommandLine, FailuresLeaveExistingOutputUntouched)
+{
+  VTKBLOOM_REQUIRE_DATA(damaged, "exr/Damaged/NULL_pointer");
+  const std::string out = vtkBloomTest::OutputPath("cli-keep.exr");
+  {
+    std::ofstream keep(out, std::ios::binary);
+    keep << "precious";
+  }
+  std::string errors;
+  EXPECT_EQ(RunTool("image " + Quote(damaged) + " " + Quote(out), &errors), 1);
+  EXPECT_NE(errors.find("cannot read"), std::string::npos) << errors;
+  EXPECT_EQ(Slurp(out), "precious");
+  EXPECT_EQ(RunTool("image /nonexistent/file.exr " + Quote(out)), 1);
+  EXPECT_EQ(Slurp(out), "precious");
+  // An unwritable destination fails cleanly.
+  VTKBLOOM_REQUIRE_DATA(input, "presets/example_161x91.exr");
+  EXPECT_EQ(RunTool("image " + Quote(input) + " /nonexistent-dir/out.exr"), 1);
+  EXPECT_EQ(RunTool("image " + Quote(input) + " /nonexistent-dir/out.png"), 1);
+}
+
+TEST(CommandLine, EveryDamagedFileFailsCleanly)
+{
+  VTKBLOOM_REQUIRE_DATA(readme, "exr/Damaged/README.rst");
+  const fs::path folder = fs::path(readme).parent_path();
+  const std::string out = vtkBloomTest::OutputPath("cli-damaged.exr");
+  int files = 0;
+  for (const auto& entry : fs::directory_iterator(folder))
+  {
+    if (entry.path().filename() == "README.rst")
+    {
+      continue;
+    }
+    ++files;
+    fs::remove(out);
+    EXPECT_EQ(
+      RunTool("blur --radius 1 --quiet " + Quote(entry.path().string()) + " " + Quote(out)), 1)
+      << entry.path();
+    EXPECT_FALSE(fs::exists(out)) << entry.path();
+  }
+  EXPECT_EQ(files, 145);
+}
