@@ -112,15 +112,6 @@ void Downsample(
     });
 }
 
-// Copy the colour components of the whole input into a double block.
-template <typename T>
-void ImportColour(vtkImageData* input, int colours, vtkBloomBuffer& buffer)
-{
-  int ext[6];
-  input->GetExtent(ext);
-  const int lo[3] = { ext[0], ext[2], ext[4] };
-  vtkBloomImport(input, ext, lo, 0, colours, buffer);
-}
 }
 
 //------------------------------------------------------------------------------
@@ -436,20 +427,21 @@ int vtkImageBloom::RequestData(
   }
 
   this->AllocateOutputData(output, outInfo);
-  int outExt[6];
-  output->GetExtent(outExt);
   const int colours = nc >= 3 ? 3 : 1;
 
   // 1. Bright pass at the start level: bilinear fetch first, threshold second.
   vtkBloomBuffer source;
-  ImportColour<double>(input, colours, source);
+  const int wholeLo[3] = { inExt[0], inExt[2], inExt[4] };
+  vtkBloomImport(input, inExt, wholeLo, 0, colours, source);
   this->UpdateProgress(0.05);
   const auto sizes = this->ComputeLevelSizes(width, height);
   if (sizes.empty())
   {
-    vtkErrorMacro(<< "No pyramid level fits a " << width << " x " << height << " image.");
-    output->Initialize();
-    return 0;
+    // No level fits (LimitLevelsToImageSize with a start level beyond the mip chain): there
+    // is nothing to bloom, and the composite sees a black bloom image.
+    this->Composite(input, nullptr, output);
+    this->UpdateProgress(1.0);
+    return 1;
   }
   std::vector<vtkBloomBuffer> levels(sizes.size());
   if (this->StartLevel == 0)
@@ -582,7 +574,22 @@ int vtkImageBloom::RequestData(
   levels.clear();
   this->UpdateProgress(0.9);
 
-  // 5. Composite over the requested output extent; alpha is copied.
+  // 5. Composite over the requested output extent.
+  this->Composite(input, &bloom, output);
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::Composite(
+  vtkImageData* input, const vtkBloomBuffer* bloom, vtkImageData* output)
+{
+  // out = keep * in + S * tint * bloom over the output extent; alpha is copied.
+  int inExt[6], outExt[6];
+  input->GetExtent(inExt);
+  output->GetExtent(outExt);
+  const int nc = input->GetNumberOfScalarComponents();
+  const int colours = nc >= 3 ? 3 : 1;
   const double s = this->Strength;
   const double keep = this->CompositeMode == LERP ? 1.0 - s : 1.0;
   double tint[3] = { this->Tint[0], this->Tint[1], this->Tint[2] };
@@ -595,23 +602,21 @@ int vtkImageBloom::RequestData(
   vtkBloomBuffer piece;
   vtkBloomImport(input, outExt, wholeLo, 0, nc, piece);
   const size_t samples = piece.GetNumberOfSamples();
+  const size_t slice = static_cast<size_t>(piece.Size[0]) * piece.Size[1];
   for (size_t p = 0; p < samples; ++p)
   {
     // piece and bloom index the same pixel through their own blocks.
     const int i = piece.Lo[0] + static_cast<int>(p % piece.Size[0]);
     const int j = piece.Lo[1] + static_cast<int>((p / piece.Size[0]) % piece.Size[1]);
-    const int k =
-      piece.Lo[2] + static_cast<int>(p / (static_cast<size_t>(piece.Size[0]) * piece.Size[1]));
-    const double* b = bloom.Data.data() + bloom.Offset(i, j, k);
+    const int k = piece.Lo[2] + static_cast<int>(p / slice);
+    const double* b = bloom ? bloom->Data.data() + bloom->Offset(i, j, k) : nullptr;
     double* v = piece.Data.data() + p * nc;
     for (int c = 0; c < colours; ++c)
     {
-      v[c] = keep * v[c] + s * tint[c] * b[c];
+      v[c] = keep * v[c] + (b ? s * tint[c] * b[c] : 0.0);
     }
   }
   vtkBloomExport(piece, wholeLo, output, outExt, 0);
-  this->UpdateProgress(1.0);
-  return 1;
 }
 
 //------------------------------------------------------------------------------

@@ -12,7 +12,8 @@
  * 2. Pyramid. B_{k+1} = down(B_k) with DownsampleKernel (see vtkImagePyramidDown), taken
  *    before any blur, for NumberOfLevels levels. KarisAverage applies to the first downsample
  *    only. With LimitLevelsToImageSize on, levels deeper than floor(log2(max(W, H))) are
- *    dropped, as a hardware mip chain ends there; otherwise 1x1 levels repeat.
+ *    dropped, as a hardware mip chain ends there (when none is left the bloom is black);
+ *    otherwise 1x1 levels repeat.
  * 3. Blur. Each level is blurred BlurIterations times, horizontally then vertically, by a
  *    symmetric kernel whose taps are BlurTapSpacing level pixels apart (fractional spacing means
  *    bilinear fetches), clamped at the edges. The kernel is a Gaussian (BLUR_GAUSSIAN:
@@ -61,6 +62,8 @@
 
 #include <string> // For preset names
 #include <vector> // For level weights
+
+struct vtkBloomBuffer;
 
 class VTKFILTERSBLOOM_EXPORT vtkImageBloom : public vtkImageAlgorithm
 {
@@ -207,6 +210,9 @@ protected:
 
   /// vtkErrorMacro and false when a parameter is out of its domain.
   bool CheckParameters();
+
+  /// Step 5 over the output's extent; a null bloom means a black one.
+  void Composite(vtkImageData* input, const vtkBloomBuffer* bloom, vtkImageData* output);
 
   int ThresholdMode;
   double Threshold;

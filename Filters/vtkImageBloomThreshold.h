@@ -19,8 +19,8 @@
  * exceeds it is scaled down to it (hue preserved). Every mode but NONE clamps its result to
  * >= 0, so negative input never emits light; NONE is an exact identity.
  *
- * Non-finite input: NaN colours become 0 and +Inf becomes ClampLuminance (or the float maximum)
- * in every mode but NONE, so the bright pass never feeds NaN or Inf into a blur.
+ * Non-finite input: NaN and -Inf colours become 0 and +Inf becomes ClampLuminance (or the float
+ * maximum) in every mode but NONE, so the bright pass never feeds NaN or Inf into a blur.
  *
  * Alpha (the 2nd of 2 or 4th of 4 components) passes through unchanged. Input must be float or
  * double with 1 to 4 components.

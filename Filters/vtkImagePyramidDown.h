@@ -9,8 +9,8 @@
  * - JIMENEZ13 (default): the 13-tap filter of Jimenez (2014, CoD: Advanced Warfare): centre 1/8,
  *   four inner taps at (+-1/2, +-1/2) 1/8 each, four edge taps at distance 1 1/16 each, four
  *   corners 1/32 each. The weights sum to 1 (seed 000 sums them to 1.375). With KarisAverage on,
- *   the five 2x2 boxes are weighted by 1/(1 + luma) before averaging, which suppresses
- *   fireflies in the first level (Karis 2013).
+ *   the five 2x2 boxes are weighted by 1/(1 + max(luma, 0)) before averaging (and the weights
+ *   renormalized), which suppresses fireflies in the first level (Karis 2013).
  * - BOX: the exact area-weighted resample; each input pixel is weighted by its overlap with
  *   the output pixel, so the mean is preserved for odd sizes as well (a 2x2 box for even ones).
  * - BINOMIAL: a 5-tap binomial 1 4 6 4 1 / 16 at integer offsets from p; with p half-way

@@ -124,11 +124,12 @@ enum ThresholdMode
 /// Rec. 709 luminance of RGB.
 double Luminance(const Pixel& p);
 /**
- * The bright pass of one RGB colour (the 4th channel is left alone), literally from the
- * vtkImageBloomThreshold documentation (finite input only).
+ * The bright pass of one colour, literally from the vtkImageBloomThreshold documentation
+ * (finite input only). With `colours` 3 it acts on RGB; with 1 on channel 0 alone, whose value
+ * is then its own luminance and brightness. The other channels are left alone.
  */
 Pixel BrightPass(Pixel p, ThresholdMode mode, double threshold, double knee,
-  double clampLuminance = 3.4028234663852886e38);
+  double clampLuminance = 3.4028234663852886e38, int colours = 3);
 Texture Threshold(const Texture& in, ThresholdMode mode, double threshold, double knee,
   double clampLuminance = 3.4028234663852886e38);
 ///@}
@@ -174,6 +175,57 @@ Texture CrtHalfres(const Texture& in);
 /// By name ("webgpu-market", "mip-atlas", "ping-pong", "crt-halfres").
 Texture Preset(const char* name, const Texture& in);
 ///@}
+
+///@{
+/**
+ * The general vtkImageBloom chain, step by step as its class documentation states it: bright
+ * pass of the bilinear fetch at the start level; the pyramid (Karis on the first downsample
+ * only; levels deeper than floor(log2(max(W, H))) dropped when LimitLevels); each level blurred
+ * Iterations times, horizontally then vertically, with taps TapSpacing level pixels apart
+ * (bilinear, clamp); CASCADE (A_last = w Bb_last, A_i = up(A_{i+1}) + w_i Bb_i, bilinear of A_0
+ * at full size) or DIRECT (sum_i w_i bilinear(Bb_i)); ADDITIVE (I + S t bloom) or LERP
+ * ((1 - S) I + S t bloom); alpha copied.
+ */
+struct BloomParameters
+{
+  ThresholdMode Mode = SMOOTHSTEP_KNEE;
+  double Threshold = 1.0;
+  double Knee = 0.5;
+  double ClampLuminance = 3.4028234663852886e38;
+  int StartLevel = 1;
+  int NumberOfLevels = 5;
+  bool LimitLevels = false;
+  DownKernel Down = JIMENEZ13;
+  bool Karis = false;
+  std::vector<double> BlurHalfKernel = { 1.0 }; ///< centre first, used as given
+  double TapSpacing = 1.0;
+  int Iterations = 1;
+  UpKernel Up = TENT;
+  bool Direct = false;
+  std::vector<double> LevelWeights; ///< missing weights are 1
+  bool Lerp = false;
+  double Strength = 1.0;
+  double Tint[3] = { 1.0, 1.0, 1.0 };
+};
+Texture Bloom(const Texture& in, const BloomParameters& p);
+///@}
+
+///@{
+/**
+ * Test images, deterministic for a seed on every platform, with every value exactly
+ * representable as a float (so float and double inputs hold the same numbers).
+ * - SyntheticScene: a dim gradient (0.02..0.4) with emissive discs of value 2..200 and random
+ *   hue, several crossing the border; alpha varies in [0.25, 1].
+ * - RandomImage: independent uniform values in [lo, hi] in all four channels.
+ */
+Texture SyntheticScene(int w, int h, unsigned seed);
+Texture RandomImage(int w, int h, unsigned seed, double lo = 0.0, double hi = 4.0);
+/// A uniform random number in [0, 1) from a 64-bit hash of (seed, index); portable.
+double HashUniform(unsigned long long seed, unsigned long long index);
+///@}
+
+/// ||a - b||_2 / ||b||_2 over the first `channels` channels; NaN if the sizes differ.
+double RelativeL2(const Texture& a, const Texture& b, int channels = 4);
 
 ///@{
 /**
