@@ -27,11 +27,13 @@
 #include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
+#include <fstream>
 #include <functional>
 #include <iostream>
 #include <map>
@@ -417,10 +419,36 @@ unsigned char ToneMap(double linear, double exposure)
   return static_cast<unsigned char>(std::lround(255.0 * std::min(std::max(s, 0.0), 1.0)));
 }
 
-// Write to a temporary file beside the target, then rename, so a failure leaves no partial
-// file and never clobbers an existing one. The PNG is opaque RGB: OpenEXR colour is
-// premultiplied by alpha, so showing it as is composites it over black, which keeps the glow
-// that bloom spreads into transparent pixels.
+// Write bytes to a temporary file beside `path`, then rename it over `path`, so a failure
+// never leaves a partial file and never clobbers an existing one.
+void WriteFileAtomically(const std::string& path, const unsigned char* data, size_t size)
+{
+  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
+  std::error_code ec;
+  {
+    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
+    if (file)
+    {
+      file.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+      file.close();
+    }
+    if (!file)
+    {
+      fs::remove(temporary, ec);
+      throw RunError{ "cannot write " + path + ": " + std::strerror(errno) };
+    }
+  }
+  fs::rename(temporary, path, ec);
+  if (ec)
+  {
+    fs::remove(temporary, ec);
+    throw RunError{ "cannot write " + path + ": " + ec.message() };
+  }
+}
+
+// Tone-map to 8-bit and write through WriteFileAtomically. The PNG is opaque RGB: OpenEXR
+// colour is premultiplied by alpha, so showing it as is composites it over black, which keeps
+// the glow that bloom spreads into transparent pixels.
 void WritePNG(vtkImageData* rgba, const std::string& path, double exposure, ErrorCollector& errors)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
@@ -444,25 +472,19 @@ void WritePNG(vtkImageData* rgba, const std::string& path, double exposure, Erro
       }
     }
   }
-  const std::string temporary = path + ".tmp-" + std::to_string(::getpid()) + ".png";
+  // Encode in memory: VTK 9.1's vtkPNGWriter leaks libpng state when it cannot open its file.
   vtkNew<vtkPNGWriter> writer;
   errors.Watch(writer);
-  writer->SetFileName(temporary.c_str());
+  writer->WriteToMemoryOn();
   writer->SetInputData(image);
   writer->Write();
-  std::error_code ec;
-  if (!errors.Messages.empty() || writer->GetErrorCode() != 0 || !fs::exists(temporary, ec))
+  vtkUnsignedCharArray* bytes = writer->GetResult();
+  if (!errors.Messages.empty() || !bytes || bytes->GetNumberOfValues() == 0)
   {
-    fs::remove(temporary, ec);
-    errors.Messages.push_back("vtkPNGWriter failed");
+    errors.Messages.push_back("PNG encoding failed");
     errors.ThrowIfAny("cannot write " + path + ":");
   }
-  fs::rename(temporary, path, ec);
-  if (ec)
-  {
-    fs::remove(temporary, ec);
-    throw RunError{ "cannot write " + path + ": " + ec.message() };
-  }
+  WriteFileAtomically(path, bytes->GetPointer(0), static_cast<size_t>(bytes->GetNumberOfValues()));
 }
 
 void WriteOutput(vtkImageData* image, const int displayWindow[4], const std::string& path,
