@@ -1,6 +1,8 @@
 #include "vtkBloomImageOps.h"
 
+#include "vtkBloomKernels.h"
 #include "vtkImageData.h"
+#include "vtkImagePyramidDown.h"
 #include "vtkSMPTools.h"
 #include "vtkType.h"
 
@@ -284,4 +286,100 @@ void vtkBloomExport(const vtkBloomBuffer& buffer, const int wholeLo[3], vtkImage
     default:
       break;
   }
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkBloomSeparableTerm> vtkBloomDownsampleTerms(
+  int kernel, bool karis, const int inSize[2], const int outSize[2])
+{
+  using Taps = std::vector<vtkBloomKernels::Tap>;
+  const int clamp = vtkBloomLinearOperator::BORDER_CLAMP;
+  std::vector<vtkBloomSeparableTerm> terms;
+  auto add = [&](double weight, const Taps& tx, const Taps& ty)
+  {
+    vtkBloomSeparableTerm term;
+    term.Weight = weight;
+    term.X = vtkBloomLinearOperator::Resample(inSize[0], outSize[0], tx, clamp);
+    term.Y = vtkBloomLinearOperator::Resample(inSize[1], outSize[1], ty, clamp);
+    terms.push_back(std::move(term));
+  };
+  switch (kernel)
+  {
+    case vtkImagePyramidDown::BOX:
+    {
+      vtkBloomSeparableTerm term;
+      term.X = vtkBloomLinearOperator::Area(inSize[0], outSize[0]);
+      term.Y = vtkBloomLinearOperator::Area(inSize[1], outSize[1]);
+      terms.push_back(std::move(term));
+      break;
+    }
+    case vtkImagePyramidDown::BINOMIAL:
+      add(1.0, vtkBloomKernels::Binomial5Taps(), vtkBloomKernels::Binomial5Taps());
+      break;
+    case vtkImagePyramidDown::JIMENEZ13:
+    default:
+      if (karis)
+      {
+        const Taps inner = vtkBloomKernels::HalfTexelPairTaps();
+        const Taps left = vtkBloomKernels::LeftPairTaps();
+        const Taps right = vtkBloomKernels::RightPairTaps();
+        add(vtkBloomKernels::Jimenez13InnerWeight, inner, inner);
+        add(vtkBloomKernels::Jimenez13OuterWeight, left, left);
+        add(vtkBloomKernels::Jimenez13OuterWeight, right, left);
+        add(vtkBloomKernels::Jimenez13OuterWeight, left, right);
+        add(vtkBloomKernels::Jimenez13OuterWeight, right, right);
+      }
+      else
+      {
+        // 1/2 inner box + 4 x 1/8 outer boxes == 1/2 inner box + 1/2 tent (x) tent.
+        add(0.5, vtkBloomKernels::HalfTexelPairTaps(), vtkBloomKernels::HalfTexelPairTaps());
+        add(0.5, vtkBloomKernels::TentTaps(), vtkBloomKernels::TentTaps());
+      }
+      break;
+  }
+  return terms;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomCombineTerms(const std::vector<vtkBloomBuffer>& results,
+  const std::vector<double>& weights, bool karis, vtkBloomBuffer& out, bool parallel)
+{
+  out = results[0];
+  if (results.size() == 1 && weights[0] == 1.0 && !karis)
+  {
+    return; // exactly the one result, signed zeros and NaN payloads included
+  }
+  const int nc = out.NumberOfComponents;
+  const size_t terms = results.size();
+  ForRange(static_cast<vtkIdType>(out.GetNumberOfSamples()), parallel,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      double acc[16];
+      for (vtkIdType s = begin; s < end; ++s)
+      {
+        double total = 0.0;
+        for (size_t t = 0; t < terms; ++t)
+        {
+          const double* v = results[t].Data.data() + s * nc;
+          double w = weights[t];
+          if (karis)
+          {
+            const double luma = nc >= 3 ? vtkBloomKernels::LuminanceR * v[0] +
+                vtkBloomKernels::LuminanceG * v[1] + vtkBloomKernels::LuminanceB * v[2]
+                                        : v[0];
+            w /= 1.0 + std::max(luma, 0.0);
+          }
+          total += w;
+          for (int c = 0; c < nc; ++c)
+          {
+            acc[c] = t == 0 ? w * v[c] : acc[c] + w * v[c];
+          }
+        }
+        const double norm = karis ? 1.0 / total : 1.0;
+        for (int c = 0; c < nc; ++c)
+        {
+          out.Data[s * nc + c] = acc[c] * norm;
+        }
+      }
+    });
 }

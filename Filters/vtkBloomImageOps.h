@@ -55,6 +55,30 @@ void vtkBloomApplyAxis(const vtkBloomBuffer& in, int axis, const vtkBloomLinearO
 void vtkBloomApplySeparable(const vtkBloomBuffer& in, const vtkBloomLinearOperator* const ops[3],
   const int outLo[3], const int outSize[3], vtkBloomBuffer& out, bool parallel);
 
+/// One separable term of a two-dimensional step: Weight * (Y X).
+struct vtkBloomSeparableTerm
+{
+  double Weight = 1.0;
+  vtkBloomLinearOperator X;
+  vtkBloomLinearOperator Y;
+};
+
+/**
+ * The terms of one pyramid-down step with a vtkImagePyramidDown kernel, from inSize to outSize
+ * (x, y). JIMENEZ13 is 1/2 inner box + 1/2 tent x tent; with `karis` it is the five 2x2 boxes
+ * that vtkBloomCombineTerms averages with Karis weights.
+ */
+std::vector<vtkBloomSeparableTerm> vtkBloomDownsampleTerms(
+  int kernel, bool karis, const int inSize[2], const int outSize[2]);
+
+/**
+ * out = sum_t weights[t] * results[t], or with `karis` the Karis average: each result weighted
+ * by weights[t] / (1 + max(luma, 0)) and the weights renormalized per sample. Luma is Rec. 709
+ * for 3 or more components, component 0 otherwise.
+ */
+void vtkBloomCombineTerms(const std::vector<vtkBloomBuffer>& results,
+  const std::vector<double>& weights, bool karis, vtkBloomBuffer& out, bool parallel);
+
 /// out += scale * in, over the same block. Both must have the same shape.
 void vtkBloomAddScaled(const vtkBloomBuffer& in, double scale, vtkBloomBuffer& out);
 

@@ -2,6 +2,10 @@
 
 #include "vtkBloomImageOps.h"
 #include "vtkBloomKernels.h"
+#include "vtkBloomStatistics.h"
+#include "vtkDoubleArray.h"
+#include "vtkFieldData.h"
+#include "vtkIdTypeArray.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"
 #include "vtkImagePyramidDown.h"
@@ -9,6 +13,7 @@
 #include "vtkImageSeparableAlgorithm.h"
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
+#include "vtkIntArray.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
@@ -22,7 +27,6 @@ vtkStandardNewMacro(vtkImageBloom);
 
 namespace
 {
-using Tap = vtkBloomKernels::Tap;
 const int Clamp = vtkBloomLinearOperator::BORDER_CLAMP;
 
 // out = Ry Rx in over the whole of a 2-D (per z slice) block of the given output size.
@@ -35,83 +39,28 @@ void Resample2D(const vtkBloomBuffer& in, const vtkBloomLinearOperator& rx,
   vtkBloomApplySeparable(in, ops, lo, size, out, true);
 }
 
-// One level of the downsample chain (see vtkImagePyramidDown, which uses the same taps).
+// One level of the downsample chain, with the same terms as vtkImagePyramidDown.
 void Downsample(
   const vtkBloomBuffer& in, int kernel, bool karis, int outW, int outH, vtkBloomBuffer& out)
 {
-  const int w = in.Size[0], h = in.Size[1];
-  auto term = [&](const std::vector<Tap>& tx, const std::vector<Tap>& ty, vtkBloomBuffer& result)
+  const int inSize[2] = { in.Size[0], in.Size[1] };
+  const int outSize[2] = { outW, outH };
+  const auto terms = vtkBloomDownsampleTerms(kernel, karis, inSize, outSize);
+  std::vector<vtkBloomBuffer> results(terms.size());
+  std::vector<double> weights;
+  for (size_t t = 0; t < terms.size(); ++t)
   {
-    Resample2D(in, vtkBloomLinearOperator::Resample(w, outW, tx, Clamp),
-      vtkBloomLinearOperator::Resample(h, outH, ty, Clamp), result);
-  };
-  switch (kernel)
-  {
-    case vtkImagePyramidDown::BOX:
-      Resample2D(
-        in, vtkBloomLinearOperator::Area(w, outW), vtkBloomLinearOperator::Area(h, outH), out);
-      return;
-    case vtkImagePyramidDown::BINOMIAL:
-      term(vtkBloomKernels::Binomial5Taps(), vtkBloomKernels::Binomial5Taps(), out);
-      return;
-    default:
-      break;
+    Resample2D(in, terms[t].X, terms[t].Y, results[t]);
+    weights.push_back(terms[t].Weight);
   }
-  if (!karis)
+  if (terms.size() == 1 && weights[0] == 1.0)
   {
-    vtkBloomBuffer tent;
-    term(vtkBloomKernels::HalfTexelPairTaps(), vtkBloomKernels::HalfTexelPairTaps(), out);
-    term(vtkBloomKernels::TentTaps(), vtkBloomKernels::TentTaps(), tent);
-    for (size_t e = 0; e < out.Data.size(); ++e)
-    {
-      out.Data[e] = 0.5 * out.Data[e] + 0.5 * tent.Data[e];
-    }
+    out = std::move(results[0]);
     return;
   }
-  // Karis average of the five 2x2 boxes, weighted by base / (1 + luma).
-  const auto inner = vtkBloomKernels::HalfTexelPairTaps();
-  const auto left = vtkBloomKernels::LeftPairTaps();
-  const auto right = vtkBloomKernels::RightPairTaps();
-  vtkBloomBuffer boxes[5];
-  term(inner, inner, boxes[0]);
-  term(left, left, boxes[1]);
-  term(right, left, boxes[2]);
-  term(left, right, boxes[3]);
-  term(right, right, boxes[4]);
-  const double base[5] = { vtkBloomKernels::Jimenez13InnerWeight,
-    vtkBloomKernels::Jimenez13OuterWeight, vtkBloomKernels::Jimenez13OuterWeight,
-    vtkBloomKernels::Jimenez13OuterWeight, vtkBloomKernels::Jimenez13OuterWeight };
-  out = boxes[0];
-  const int nc = out.NumberOfComponents;
-  const vtkIdType samples = static_cast<vtkIdType>(out.GetNumberOfSamples());
-  vtkSMPTools::For(0, samples,
-    [&](vtkIdType begin, vtkIdType end)
-    {
-      for (vtkIdType s = begin; s < end; ++s)
-      {
-        double acc[3] = { 0.0, 0.0, 0.0 };
-        double total = 0.0;
-        for (int b = 0; b < 5; ++b)
-        {
-          const double* v = boxes[b].Data.data() + s * nc;
-          const double luma = nc == 3 ? vtkBloomKernels::LuminanceR * v[0] +
-              vtkBloomKernels::LuminanceG * v[1] + vtkBloomKernels::LuminanceB * v[2]
-                                      : v[0];
-          const double weight = base[b] / (1.0 + std::max(luma, 0.0));
-          total += weight;
-          for (int c = 0; c < nc; ++c)
-          {
-            acc[c] += weight * v[c];
-          }
-        }
-        for (int c = 0; c < nc; ++c)
-        {
-          out.Data[s * nc + c] = acc[c] / total;
-        }
-      }
-    });
+  vtkBloomCombineTerms(
+    results, weights, karis && kernel == vtkImagePyramidDown::JIMENEZ13, out, true);
 }
-
 }
 
 //------------------------------------------------------------------------------
@@ -138,6 +87,8 @@ vtkImageBloom::vtkImageBloom()
   this->CompositeMode = ADDITIVE;
   this->Strength = 1.0;
   this->Tint[0] = this->Tint[1] = this->Tint[2] = 1.0;
+  this->ComputeStatistics = true;
+  this->ResetStatistics();
 }
 
 //------------------------------------------------------------------------------
@@ -396,6 +347,7 @@ int vtkImageBloom::RequestData(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkImageData* output = vtkImageData::GetData(outInfo);
+  this->ResetStatistics();
   if (!input || !input->GetPointData()->GetScalars())
   {
     vtkErrorMacro(<< "Input has no point scalars.");
@@ -440,6 +392,7 @@ int vtkImageBloom::RequestData(
     // No level fits (LimitLevelsToImageSize with a start level beyond the mip chain): there
     // is nothing to bloom, and the composite sees a black bloom image.
     this->Composite(input, nullptr, output);
+    this->ComputeOutputStatistics(input, output, 0);
     this->UpdateProgress(1.0);
     return 1;
   }
@@ -576,8 +529,58 @@ int vtkImageBloom::RequestData(
 
   // 5. Composite over the requested output extent.
   this->Composite(input, &bloom, output);
+  this->ComputeOutputStatistics(input, output, static_cast<int>(sizes.size()));
   this->UpdateProgress(1.0);
   return 1;
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::ResetStatistics()
+{
+  this->EnergyIn = 0.0;
+  this->EnergyOut = 0.0;
+  this->NumberOfBrightPixels = 0;
+  this->PeakLuminanceIn = 0.0;
+  this->PeakLuminanceOut = 0.0;
+  this->NumberOfLevelsUsed = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::ComputeOutputStatistics(
+  vtkImageData* input, vtkImageData* output, int levelsUsed)
+{
+  vtkFieldData* fd = output->GetFieldData();
+  if (!this->ComputeStatistics)
+  {
+    return;
+  }
+  // Over the output extent: the input there is what the output piece was composited from.
+  int ext[6];
+  output->GetExtent(ext);
+  const vtkBloomLuminanceStatistics in = vtkBloomMeasureLuminance(input, ext);
+  const vtkBloomLuminanceStatistics out = vtkBloomMeasureLuminance(output, ext);
+  this->EnergyIn = in.Energy;
+  this->EnergyOut = out.Energy;
+  this->PeakLuminanceIn = in.Peak;
+  this->PeakLuminanceOut = out.Peak;
+  this->NumberOfBrightPixels = vtkBloomCountBrightPixels(
+    input, ext, this->ThresholdMode, this->Threshold, this->Knee, this->ClampLuminance);
+  this->NumberOfLevelsUsed = levelsUsed;
+
+  auto attach = [fd](vtkDataArray* array, const char* name, double value)
+  {
+    array->SetName(name);
+    array->SetNumberOfTuples(1);
+    array->SetTuple1(0, value);
+    fd->AddArray(array);
+  };
+  attach(vtkNew<vtkDoubleArray>(), GetEnergyInArrayName(), this->EnergyIn);
+  attach(vtkNew<vtkDoubleArray>(), GetEnergyOutArrayName(), this->EnergyOut);
+  attach(vtkNew<vtkIdTypeArray>(), GetNumberOfBrightPixelsArrayName(),
+    static_cast<double>(this->NumberOfBrightPixels));
+  attach(vtkNew<vtkDoubleArray>(), GetPeakLuminanceInArrayName(), this->PeakLuminanceIn);
+  attach(vtkNew<vtkDoubleArray>(), GetPeakLuminanceOutArrayName(), this->PeakLuminanceOut);
+  attach(vtkNew<vtkIntArray>(), GetNumberOfLevelsUsedArrayName(), levelsUsed);
 }
 
 //------------------------------------------------------------------------------
@@ -661,4 +664,11 @@ void vtkImageBloom::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Strength: " << this->Strength << "\n";
   os << indent << "Tint: (" << this->Tint[0] << ", " << this->Tint[1] << ", " << this->Tint[2]
      << ")\n";
+  os << indent << "ComputeStatistics: " << (this->ComputeStatistics ? "On" : "Off") << "\n";
+  os << indent << "EnergyIn: " << this->EnergyIn << "\n";
+  os << indent << "EnergyOut: " << this->EnergyOut << "\n";
+  os << indent << "NumberOfBrightPixels: " << this->NumberOfBrightPixels << "\n";
+  os << indent << "PeakLuminanceIn: " << this->PeakLuminanceIn << "\n";
+  os << indent << "PeakLuminanceOut: " << this->PeakLuminanceOut << "\n";
+  os << indent << "NumberOfLevelsUsed: " << this->NumberOfLevelsUsed << "\n";
 }

@@ -52,6 +52,30 @@
  * for the whole extent and any requested output piece equals the whole result bit for bit.
  * Work runs in double precision, threaded with vtkSMPTools. Input must be float or double with
  * 1 to 4 components.
+ *
+ * Statistics. With ComputeStatistics on (the default), every successful update measures the
+ * bloom over the output extent E (the whole image unless a piece was requested). With L(p) the
+ * Rec. 709 luminance 0.2126 R + 0.7152 G + 0.0722 B of pixel p for 3-4 components, or the value
+ * itself for 1-2 components, evaluated in double on the scalars as stored (input and output
+ * share the input's scalar type):
+ * - EnergyIn = sum_{p in E} L(input p) and EnergyOut = sum_{p in E} L(output p). Each row is
+ *   summed with Neumaier's compensated summation and the row sums are added pairwise, so the
+ *   result does not depend on the number of threads.
+ * - NumberOfBrightPixels = the number of full-resolution input pixels p in E whose bright pass
+ *   vtkImageBloomThreshold::BrightPass(colour(p)) (ThresholdMode, Threshold, Knee,
+ *   ClampLuminance as set here) has at least one colour value > 0. It is taken on the input
+ *   pixel itself, whatever StartLevel is: with HARD_LUMINANCE it counts L > Threshold, with
+ *   PER_CHANNEL a colour value > Threshold, with the knees L (or max(R, G, B)) inside or above
+ *   the knee, and with NONE every pixel with a positive colour value.
+ * - PeakLuminanceIn = max_{p in E} L(input p) and PeakLuminanceOut = max_{p in E} L(output p)
+ *   (NaN pixels are ignored).
+ * - NumberOfLevelsUsed = the number of pyramid levels the chain ran, ComputeLevelSizes(W,
+ *   H).size() (0 when no level fits and the bloom is black).
+ * They are attached to the output as one-tuple field data arrays (names from the
+ * Get*ArrayName() functions: vtkDoubleArray for energies and peaks, vtkIdTypeArray for the
+ * pixel count, vtkIntArray for the levels) and returned by the getters. After a failed update,
+ * or with ComputeStatistics off, the getters return 0 and the arrays are absent. The point
+ * scalars are the same bit for bit with statistics on or off.
  */
 
 #ifndef vtkImageBloom_h
@@ -195,6 +219,39 @@ public:
   vtkGetVector3Macro(Tint, double);
   ///@}
 
+  ///@{
+  /**
+   * Measure the bloom statistics (see the class description) on every update and attach them
+   * to the output's field data. Default on; the cost is one read of the input and the output.
+   */
+  vtkSetMacro(ComputeStatistics, bool);
+  vtkGetMacro(ComputeStatistics, bool);
+  vtkBooleanMacro(ComputeStatistics, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Statistics of the last update (see the class description); 0 before the first update,
+   * after a failed update and when ComputeStatistics is off.
+   */
+  vtkGetMacro(EnergyIn, double);
+  vtkGetMacro(EnergyOut, double);
+  vtkGetMacro(NumberOfBrightPixels, vtkIdType);
+  vtkGetMacro(PeakLuminanceIn, double);
+  vtkGetMacro(PeakLuminanceOut, double);
+  vtkGetMacro(NumberOfLevelsUsed, int);
+  ///@}
+
+  ///@{
+  /// Names of the output field data arrays that carry the statistics.
+  static const char* GetEnergyInArrayName() { return "BloomEnergyIn"; }
+  static const char* GetEnergyOutArrayName() { return "BloomEnergyOut"; }
+  static const char* GetNumberOfBrightPixelsArrayName() { return "BloomNumberOfBrightPixels"; }
+  static const char* GetPeakLuminanceInArrayName() { return "BloomPeakLuminanceIn"; }
+  static const char* GetPeakLuminanceOutArrayName() { return "BloomPeakLuminanceOut"; }
+  static const char* GetNumberOfLevelsUsedArrayName() { return "BloomNumberOfLevelsUsed"; }
+  ///@}
+
   /**
    * Sizes of the levels the chain would use for an input of `width` x `height`, first level
    * first, as (width, height) pairs. Exposed for testing and for the render pass.
@@ -213,6 +270,12 @@ protected:
 
   /// Step 5 over the output's extent; a null bloom means a black one.
   void Composite(vtkImageData* input, const vtkBloomBuffer* bloom, vtkImageData* output);
+
+  /// Zero every statistic.
+  void ResetStatistics();
+
+  /// Measure the statistics over the output's extent and attach them to its field data.
+  void ComputeOutputStatistics(vtkImageData* input, vtkImageData* output, int levelsUsed);
 
   int ThresholdMode;
   double Threshold;
@@ -236,6 +299,14 @@ protected:
   int CompositeMode;
   double Strength;
   double Tint[3];
+  bool ComputeStatistics;
+
+  double EnergyIn;
+  double EnergyOut;
+  vtkIdType NumberOfBrightPixels;
+  double PeakLuminanceIn;
+  double PeakLuminanceOut;
+  int NumberOfLevelsUsed;
 
 private:
   vtkImageBloom(const vtkImageBloom&) = delete;

@@ -80,54 +80,14 @@ bool vtkImagePyramidDown::BuildTerms(
     vtkErrorMacro(<< "Empty input extent.");
     return false;
   }
-  const int clamp = vtkBloomLinearOperator::BORDER_CLAMP;
-  // A term whose x and y operators resample with the given taps on each axis.
-  auto addTerm = [&](double weight, const std::vector<vtkBloomKernels::Tap>& tx,
-                   const std::vector<vtkBloomKernels::Tap>& ty)
+  for (auto& separable : vtkBloomDownsampleTerms(this->Kernel, this->KarisAverage, n, m))
   {
     Term term;
-    term.Weight = weight;
-    term.Operators[0] = vtkBloomLinearOperator::Resample(n[0], m[0], tx, clamp);
-    term.Operators[1] = vtkBloomLinearOperator::Resample(n[1], m[1], ty, clamp);
+    term.Weight = separable.Weight;
+    term.Operators[0] = std::move(separable.X);
+    term.Operators[1] = std::move(separable.Y);
     term.Use[0] = term.Use[1] = true;
     terms.push_back(std::move(term));
-  };
-
-  switch (this->Kernel)
-  {
-    case BOX:
-    {
-      Term term;
-      term.Operators[0] = vtkBloomLinearOperator::Area(n[0], m[0]);
-      term.Operators[1] = vtkBloomLinearOperator::Area(n[1], m[1]);
-      term.Use[0] = term.Use[1] = true;
-      terms.push_back(std::move(term));
-      break;
-    }
-    case BINOMIAL:
-      addTerm(1.0, vtkBloomKernels::Binomial5Taps(), vtkBloomKernels::Binomial5Taps());
-      break;
-    case JIMENEZ13:
-    default:
-      if (this->KarisAverage)
-      {
-        // The five 2x2 boxes, combined non-linearly in CombineTerms.
-        const auto inner = vtkBloomKernels::HalfTexelPairTaps();
-        const auto left = vtkBloomKernels::LeftPairTaps();
-        const auto right = vtkBloomKernels::RightPairTaps();
-        addTerm(vtkBloomKernels::Jimenez13InnerWeight, inner, inner);
-        addTerm(vtkBloomKernels::Jimenez13OuterWeight, left, left);
-        addTerm(vtkBloomKernels::Jimenez13OuterWeight, right, left);
-        addTerm(vtkBloomKernels::Jimenez13OuterWeight, left, right);
-        addTerm(vtkBloomKernels::Jimenez13OuterWeight, right, right);
-      }
-      else
-      {
-        // 1/2 inner box + 4 x 1/8 outer boxes == 1/2 inner box + 1/2 tent (x) tent.
-        addTerm(0.5, vtkBloomKernels::HalfTexelPairTaps(), vtkBloomKernels::HalfTexelPairTaps());
-        addTerm(0.5, vtkBloomKernels::TentTaps(), vtkBloomKernels::TentTaps());
-      }
-      break;
   }
   return true;
 }
@@ -136,37 +96,13 @@ bool vtkImagePyramidDown::BuildTerms(
 void vtkImagePyramidDown::CombineTerms(
   const std::vector<vtkBloomBuffer>& results, vtkBloomBuffer& out)
 {
-  if (!(this->Kernel == JIMENEZ13 && this->KarisAverage))
+  std::vector<double> weights;
+  for (const Term& term : this->Terms)
   {
-    this->Superclass::CombineTerms(results, out);
-    return;
+    weights.push_back(term.Weight);
   }
-  // Karis average: each box weighted by base / (1 + luma(box)), then renormalized.
-  out = results[0];
-  const int nc = out.NumberOfComponents;
-  const size_t samples = out.GetNumberOfSamples();
-  for (size_t s = 0; s < samples; ++s)
-  {
-    double acc[4] = { 0.0, 0.0, 0.0, 0.0 };
-    double total = 0.0;
-    for (size_t t = 0; t < results.size(); ++t)
-    {
-      const double* box = results[t].Data.data() + s * nc;
-      const double luma = nc >= 3 ? vtkBloomKernels::LuminanceR * box[0] +
-          vtkBloomKernels::LuminanceG * box[1] + vtkBloomKernels::LuminanceB * box[2]
-                                  : box[0];
-      const double w = this->Terms[t].Weight / (1.0 + std::max(luma, 0.0));
-      total += w;
-      for (int c = 0; c < nc; ++c)
-      {
-        acc[c] += w * box[c];
-      }
-    }
-    for (int c = 0; c < nc; ++c)
-    {
-      out.Data[s * nc + c] = acc[c] / total;
-    }
-  }
+  vtkBloomCombineTerms(
+    results, weights, this->Kernel == JIMENEZ13 && this->KarisAverage, out, false);
 }
 
 //------------------------------------------------------------------------------

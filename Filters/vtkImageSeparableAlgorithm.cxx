@@ -117,18 +117,12 @@ int vtkImageSeparableAlgorithm::RequestData(
 void vtkImageSeparableAlgorithm::CombineTerms(
   const std::vector<vtkBloomBuffer>& results, vtkBloomBuffer& out)
 {
-  out = results[0];
-  if (this->Terms[0].Weight != 1.0)
+  std::vector<double> weights;
+  for (const Term& term : this->Terms)
   {
-    for (double& v : out.Data)
-    {
-      v *= this->Terms[0].Weight;
-    }
+    weights.push_back(term.Weight);
   }
-  for (size_t t = 1; t < results.size(); ++t)
-  {
-    vtkBloomAddScaled(results[t], this->Terms[t].Weight, out);
-  }
+  vtkBloomCombineTerms(results, weights, false, out, false);
 }
 
 //------------------------------------------------------------------------------

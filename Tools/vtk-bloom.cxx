@@ -19,6 +19,7 @@
 #include <vtkAlgorithm.h>
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
+#include <vtkImageAlgorithm.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
@@ -626,18 +627,15 @@ void ApplyImageOptions(Arguments& args, vtkImageBloom* bloom)
   }
 }
 
-int RunImage(int argc, char* argv[])
+// The rest of every command: IN and OUT from the positional arguments, read, filter, write.
+// With `rgba` the filter sees the image as float RGBA (alpha 1 when absent).
+int RunFilter(const Arguments& args, const CommonOptions& common, vtkImageAlgorithm* filter,
+  const std::string& command, bool rgba)
 {
-  Arguments args(argc, argv, 2, { "--karis", "--quiet" });
-  CommonOptions common;
-  TakeCommon(args, common);
-  vtkNew<vtkImageBloom> bloom;
-  bloom->SetPreset("webgpu-market");
-  ApplyImageOptions(args, bloom);
   args.CheckAllTaken();
   if (args.Positional.size() != 2)
   {
-    throw UsageError{ "image needs exactly two files, IN and OUT" };
+    throw UsageError{ command + " needs exactly two files, IN and OUT" };
   }
   const std::string in = args.Positional[0], out = args.Positional[1];
   CheckPaths(in, out);
@@ -646,13 +644,25 @@ int RunImage(int argc, char* argv[])
   ProgressBar progress;
   progress.Enabled = !common.Quiet && ::isatty(STDERR_FILENO);
   const InputImage input = ReadInput(in, errors, progress);
-  errors.Watch(bloom);
-  progress.Watch(bloom, "bloom");
-  bloom->SetInputData(input.Image);
-  bloom->Update();
-  errors.ThrowIfAny("bloom failed:");
-  WriteOutput(bloom->GetOutput(), input.DisplayWindow, out, common, errors);
+  errors.Watch(filter);
+  progress.Watch(filter, command);
+  filter->SetInputData(rgba ? ToFloatRGBA(input.Image) : input.Image);
+  filter->Update();
+  errors.ThrowIfAny(command + " failed:");
+  WriteOutput(vtkImageData::SafeDownCast(filter->GetOutputDataObject(0)), input.DisplayWindow, out,
+    common, errors);
   return 0;
+}
+
+int RunImage(int argc, char* argv[])
+{
+  Arguments args(argc, argv, 2, { "--karis", "--quiet" });
+  CommonOptions common;
+  TakeCommon(args, common);
+  vtkNew<vtkImageBloom> bloom;
+  bloom->SetPreset("webgpu-market");
+  ApplyImageOptions(args, bloom);
+  return RunFilter(args, common, bloom, "image", false);
 }
 
 int RunBlur(int argc, char* argv[])
@@ -690,29 +700,10 @@ int RunBlur(int argc, char* argv[])
         { "integrated", vtkImageSeparableGaussian::INTEGRATED },
         { "discrete", vtkImageSeparableGaussian::DISCRETE } }));
   }
-  args.CheckAllTaken();
-  if (args.Positional.size() != 2)
-  {
-    throw UsageError{ "blur needs exactly two files, IN and OUT" };
-  }
-  const std::string in = args.Positional[0], out = args.Positional[1];
-  CheckPaths(in, out);
-
-  ErrorCollector errors;
-  ProgressBar progress;
-  progress.Enabled = !common.Quiet && ::isatty(STDERR_FILENO);
-  const InputImage input = ReadInput(in, errors, progress);
-  // Blur all four channels, alpha included, as seed 004 does.
-  auto rgba = ToFloatRGBA(input.Image);
   blur->SetStandardDeviations(sigma, sigma, 0.0);
   blur->SetRadius(radius, radius, 0);
-  errors.Watch(blur);
-  progress.Watch(blur, "blur");
-  blur->SetInputData(rgba);
-  blur->Update();
-  errors.ThrowIfAny("blur failed:");
-  WriteOutput(blur->GetOutput(), input.DisplayWindow, out, common, errors);
-  return 0;
+  // Blur all four channels, alpha included, as seed 004 does.
+  return RunFilter(args, common, blur, "blur", true);
 }
 }
 
