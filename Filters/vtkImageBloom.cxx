@@ -14,6 +14,7 @@
 #include "vtkInformation.h"
 #include "vtkInformationVector.h"
 #include "vtkIntArray.h"
+#include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
@@ -549,7 +550,8 @@ void vtkImageBloom::ResetStatistics()
 void vtkImageBloom::ComputeOutputStatistics(
   vtkImageData* input, vtkImageData* output, int levelsUsed)
 {
-  vtkFieldData* fd = output->GetFieldData();
+  // The executive initializes the output (field data included) before every execution, so
+  // with statistics off there is nothing stale to remove.
   if (!this->ComputeStatistics)
   {
     return;
@@ -567,6 +569,7 @@ void vtkImageBloom::ComputeOutputStatistics(
     input, ext, this->ThresholdMode, this->Threshold, this->Knee, this->ClampLuminance);
   this->NumberOfLevelsUsed = levelsUsed;
 
+  vtkFieldData* fd = output->GetFieldData();
   auto attach = [fd](vtkDataArray* array, const char* name, double value)
   {
     array->SetName(name);
