@@ -1,0 +1,34 @@
+# The vtkbloom Python package: a unittest suite and the script examples, run from the build
+# tree. Not in sanitizer builds: a plain python3 cannot load ASan-instrumented extensions.
+if (NOT VTKBLOOM_WRAP_PYTHON OR VTKBLOOM_ENABLE_SANITIZERS)
+  return ()
+endif ()
+
+set(vtkbloom_python_env
+  "PYTHONPATH=${VTKBLOOM_PYTHON_BUILD_DIR}:${CMAKE_SOURCE_DIR}/Examples/Python"
+  "LD_LIBRARY_PATH=${CMAKE_BINARY_DIR}/${CMAKE_INSTALL_LIBDIR}")
+set(vtkbloom_python_out "${CMAKE_CURRENT_BINARY_DIR}/Temporary/Python")
+file(MAKE_DIRECTORY "${vtkbloom_python_out}")
+
+add_test(NAME Python.vtkbloom
+  COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_vtkbloom.py" -v)
+
+add_test(NAME Python.Example.BatchBloom
+  COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/Python/run-with-shared-data.sh"
+    "${VTKBLOOM_SHARED_DATA_DIR}/presets"
+    "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/Examples/Python/batch_bloom.py" --png
+    "${VTKBLOOM_SHARED_DATA_DIR}/presets" "${vtkbloom_python_out}/batch")
+add_test(NAME Python.Example.SimulationSliceWavelet
+  COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/Examples/Python/bloom_simulation_slice.py"
+    "${vtkbloom_python_out}/wavelet-slice")
+add_test(NAME Python.Example.SimulationSliceNumpy
+  COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/Examples/Python/bloom_simulation_slice.py"
+    --source numpy "${vtkbloom_python_out}/numpy-slice")
+add_test(NAME Python.Example.ComparePresets
+  COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/Examples/Python/compare_presets.py"
+    "${vtkbloom_python_out}/compare-presets.png")
+
+set_tests_properties(Python.vtkbloom Python.Example.BatchBloom
+  Python.Example.SimulationSliceWavelet Python.Example.SimulationSliceNumpy
+  Python.Example.ComparePresets
+  PROPERTIES ENVIRONMENT "${vtkbloom_python_env}" SKIP_RETURN_CODE 77 TIMEOUT 120)

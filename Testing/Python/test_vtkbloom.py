@@ -1,0 +1,237 @@
+#!/usr/bin/python3
+"""Tests of the vtkbloom Python package: parameters, presets, errors, numpy round trips and
+the bloom statistics, checked against independent numpy computations."""
+
+import os
+import tempfile
+import unittest
+
+import numpy as np
+from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkCommonDataModel import vtkImageData
+from vtkmodules.vtkImagingCore import vtkImageCast, vtkRTAnalyticSource
+from vtkmodules.util import numpy_support
+
+import vtkbloom
+
+REC709 = np.array([0.2126, 0.7152, 0.0722])
+
+
+def image_from_array(array):
+    """(H, W, C) numpy array -> vtkImageData, row 0 first."""
+    h, w, c = array.shape
+    image = vtkImageData()
+    image.SetDimensions(w, h, 1)
+    flat = np.ascontiguousarray(array).reshape(h * w, c)
+    scalars = numpy_support.numpy_to_vtk(flat, deep=True)
+    scalars.SetName("scalars")
+    image.GetPointData().SetScalars(scalars)
+    return image
+
+
+def array_from_image(image):
+    w, h, _ = image.GetDimensions()
+    scalars = image.GetPointData().GetScalars()
+    return numpy_support.vtk_to_numpy(scalars).reshape(h, w, scalars.GetNumberOfComponents())
+
+
+class ErrorCounter:
+    def __init__(self, obj):
+        self.count = 0
+        obj.AddObserver(vtkCommand.ErrorEvent, self)
+
+    def __call__(self, obj, event):
+        self.count += 1
+
+
+def hdr_scene(h=45, w=80, seed=7):
+    """A dim random field with a few bright discs, RGBA float32."""
+    rng = np.random.default_rng(seed)
+    rgb = rng.uniform(0.0, 0.3, size=(h, w, 3))
+    yy, xx = np.mgrid[0:h, 0:w]
+    for cx, cy, r, v in ((15, 10, 4, 20.0), (60, 30, 6, 3.0), (79, 0, 5, 150.0)):
+        rgb[(xx - cx) ** 2 + (yy - cy) ** 2 <= r * r] = v
+    alpha = rng.uniform(0.2, 1.0, size=(h, w, 1))
+    return np.concatenate([rgb, alpha], axis=2).astype(np.float32)
+
+
+def smoothstep(e0, e1, x):
+    t = np.clip((x - e0) / (e1 - e0), 0.0, 1.0)
+    return t * t * (3.0 - 2.0 * t)
+
+
+class Package(unittest.TestCase):
+    def test_classes_are_importable(self):
+        for name in ("vtkImageBloom", "vtkImageBloomThreshold", "vtkImagePyramidDown",
+                     "vtkImagePyramidUp", "vtkImageSeparableGaussian", "vtkOpenEXRReader",
+                     "vtkOpenEXRWriter"):
+            self.assertTrue(hasattr(vtkbloom, name), name)
+        self.assertIn("vtkImageBloom", str(vtkbloom.vtkImageBloom()))
+
+    def test_parameters_round_trip(self):
+        bloom = vtkbloom.vtkImageBloom()
+        bloom.SetThreshold(1.25)
+        bloom.SetKnee(0.3)
+        bloom.SetNumberOfLevels(3)
+        bloom.SetStrength(0.7)
+        bloom.SetTint(1.0, 0.5, 0.25)
+        bloom.SetLevelWeight(2, 0.4)
+        self.assertEqual(bloom.GetThreshold(), 1.25)
+        self.assertEqual(bloom.GetKnee(), 0.3)
+        self.assertEqual(bloom.GetNumberOfLevels(), 3)
+        self.assertEqual(bloom.GetTint(), (1.0, 0.5, 0.25))
+        self.assertEqual(bloom.GetLevelWeight(2), 0.4)
+        self.assertEqual(bloom.GetLevelWeight(0), 1.0)
+        bloom.SetKnee(5.0)  # clamped to [0, 1]
+        self.assertEqual(bloom.GetKnee(), 1.0)
+
+    def test_presets(self):
+        bloom = vtkbloom.vtkImageBloom()
+        self.assertTrue(bloom.SetPreset("crt-halfres"))
+        self.assertEqual(bloom.GetThreshold(), 0.8)
+        self.assertEqual(bloom.GetStrength(), 1.5)
+        self.assertTrue(bloom.SetPreset("mip-atlas"))
+        self.assertEqual(bloom.GetCompositeMode(), vtkbloom.vtkImageBloom.LERP)
+        errors = ErrorCounter(bloom)
+        self.assertFalse(bloom.SetPreset("no-such-preset"))
+        self.assertEqual(errors.count, 1)
+        self.assertEqual(bloom.GetStrength(), 0.52)  # unchanged by the failed call
+
+    def test_documented_constant(self):
+        # PRESETS.md: webgpu-market turns a constant 0.5 into 0.607421875.
+        bloom = vtkbloom.vtkImageBloom()
+        bloom.SetPreset("webgpu-market")
+        bloom.SetInputData(image_from_array(np.full((9, 16, 4), 0.5, np.float32)))
+        bloom.Update()
+        out = array_from_image(bloom.GetOutput())
+        np.testing.assert_allclose(out[..., :3], 0.607421875, rtol=1e-6)
+        np.testing.assert_array_equal(out[..., 3], 0.5)
+
+
+class Errors(unittest.TestCase):
+    def test_wrong_scalar_type(self):
+        for cls in (vtkbloom.vtkImageBloom, vtkbloom.vtkImageSeparableGaussian,
+                    vtkbloom.vtkImageBloomThreshold, vtkbloom.vtkImagePyramidDown):
+            f = cls()
+            errors = ErrorCounter(f)
+            f.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda *a: None)
+            f.SetInputData(image_from_array(np.ones((4, 5, 3), np.int16)))
+            f.Update()
+            self.assertGreaterEqual(errors.count, 1, cls.__name__)
+            self.assertEqual(f.GetOutput().GetNumberOfPoints(), 0, cls.__name__)
+
+    def test_empty_image(self):
+        bloom = vtkbloom.vtkImageBloom()
+        errors = ErrorCounter(bloom)
+        bloom.GetExecutive().AddObserver(vtkCommand.ErrorEvent, lambda *a: None)
+        bloom.SetInputData(vtkImageData())
+        bloom.Update()
+        self.assertGreaterEqual(errors.count, 1)
+        self.assertEqual(bloom.GetOutput().GetNumberOfPoints(), 0)
+
+    def test_damaged_exr(self):
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "bad.exr")
+            with open(path, "wb") as f:
+                f.write(b"v/1\x01not an exr at all")
+            reader = vtkbloom.vtkOpenEXRReader()
+            errors = ErrorCounter(reader)
+            reader.SetFileName(path)
+            reader.Update()
+            self.assertEqual(errors.count, 1)
+            self.assertEqual(reader.GetOutput().GetNumberOfPoints(), 0)
+
+
+class NumpyAndPipelines(unittest.TestCase):
+    def test_numpy_round_trip_is_exact(self):
+        scene = hdr_scene()
+        bloom = vtkbloom.vtkImageBloom()
+        bloom.SetPreset("webgpu-market")
+        bloom.SetStrength(0.0)
+        bloom.SetInputData(image_from_array(scene))
+        bloom.Update()
+        np.testing.assert_array_equal(array_from_image(bloom.GetOutput()), scene)
+
+    def test_exr_round_trip_is_exact(self):
+        scene = hdr_scene()
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "scene.exr")
+            writer = vtkbloom.vtkOpenEXRWriter()
+            writer.SetFileName(path)
+            writer.SetInputData(image_from_array(scene))
+            self.assertEqual(writer.Write(), 1)
+            reader = vtkbloom.vtkOpenEXRReader()
+            reader.SetFileName(path)
+            reader.Update()
+            np.testing.assert_array_equal(array_from_image(reader.GetOutput()), scene)
+
+    def test_vtkmodules_pipeline(self):
+        source = vtkRTAnalyticSource()
+        source.SetWholeExtent(-20, 20, -10, 10, 0, 0)
+        cast = vtkImageCast()
+        cast.SetOutputScalarTypeToFloat()
+        cast.SetInputConnection(source.GetOutputPort())
+        blur = vtkbloom.vtkImageSeparableGaussian()
+        blur.SetStandardDeviations(2.0, 2.0, 0.0)
+        blur.SetBorderModeToReflect()
+        blur.SetInputConnection(cast.GetOutputPort())
+        blur.Update()
+        out = blur.GetOutput()
+        self.assertEqual(out.GetExtent(), (-20, 20, -10, 10, 0, 0))
+        a = numpy_support.vtk_to_numpy(cast.GetOutput().GetPointData().GetScalars())
+        b = numpy_support.vtk_to_numpy(out.GetPointData().GetScalars())
+        # Reflect borders conserve the sum; the blur smooths (lower variance).
+        self.assertAlmostEqual(float(b.astype(np.float64).sum()) / float(a.astype(np.float64).sum()),
+                               1.0, places=6)
+        self.assertLess(b.std(), a.std())
+
+
+class Statistics(unittest.TestCase):
+    def bloom(self, scene, preset="webgpu-market"):
+        bloom = vtkbloom.vtkImageBloom()
+        bloom.SetPreset(preset)
+        bloom.SetInputData(image_from_array(scene))
+        bloom.Update()
+        return bloom
+
+    def test_statistics_match_numpy(self):
+        scene = hdr_scene()
+        bloom = self.bloom(scene)
+        out = array_from_image(bloom.GetOutput()).astype(np.float64)
+        lum_in = scene[..., :3].astype(np.float64) @ REC709
+        lum_out = out[..., :3] @ REC709
+        self.assertAlmostEqual(bloom.GetEnergyIn() / lum_in.sum(), 1.0, delta=1e-6)
+        self.assertAlmostEqual(bloom.GetEnergyOut() / lum_out.sum(), 1.0, delta=1e-6)
+        self.assertAlmostEqual(bloom.GetPeakLuminanceIn() / lum_in.max(), 1.0, delta=1e-6)
+        self.assertAlmostEqual(bloom.GetPeakLuminanceOut() / lum_out.max(), 1.0, delta=1e-6)
+        # webgpu-market: smoothstep knee, T 0.8, knee 0.4; a pixel is bright when its bright
+        # pass keeps a value > 0.
+        factor = smoothstep(0.4, 1.2, lum_in)
+        bright = np.any(scene[..., :3] * factor[..., None] > 0, axis=2)
+        self.assertEqual(bloom.GetNumberOfBrightPixels(), int(bright.sum()))
+        self.assertGreater(bloom.GetNumberOfBrightPixels(), 0)
+        self.assertEqual(bloom.GetNumberOfLevelsUsed(), 5)
+        self.assertGreater(bloom.GetEnergyOut(), bloom.GetEnergyIn())
+
+    def test_statistics_are_field_data(self):
+        bloom = self.bloom(hdr_scene(), "mip-atlas")
+        fd = bloom.GetOutput().GetFieldData()
+        self.assertAlmostEqual(fd.GetArray("BloomEnergyIn").GetValue(0), bloom.GetEnergyIn())
+        self.assertAlmostEqual(fd.GetArray("BloomEnergyOut").GetValue(0), bloom.GetEnergyOut())
+        # mip-atlas on 80x45: levels 0..6 exist (floor(log2(80)) = 6).
+        self.assertEqual(fd.GetArray("BloomNumberOfLevelsUsed").GetValue(0), 7)
+        # Its lerp darkens: less energy out than in.
+        self.assertLess(bloom.GetEnergyOut(), bloom.GetEnergyIn())
+
+    def test_wide_dynamic_range_energy(self):
+        # Values from 1e-8 to 1e8: the compensated sums still match a float64 sum.
+        rng = np.random.default_rng(3)
+        exponents = rng.uniform(-8, 8, size=(64, 64, 3))
+        scene = np.concatenate([10.0 ** exponents, np.ones((64, 64, 1))], axis=2).astype(np.float32)
+        bloom = self.bloom(scene, "crt-halfres")
+        lum_in = scene[..., :3].astype(np.float64) @ REC709
+        self.assertAlmostEqual(bloom.GetEnergyIn() / lum_in.sum(), 1.0, delta=1e-9)
+
+
+if __name__ == "__main__":
+    unittest.main()
