@@ -74,8 +74,8 @@ void MeasureRow(const T* row, int n, int nc, double& energy, double& peak)
 }
 
 template <typename T>
-vtkIdType CountRow(const T* row, int n, int nc, int mode, double threshold, double knee,
-  double clampLuminance)
+vtkIdType CountRow(
+  const T* row, int n, int nc, int mode, double threshold, double knee, double clampLuminance)
 {
   const int colours = nc >= 3 ? 3 : 1;
   vtkIdType count = 0;
