@@ -23,12 +23,42 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 
 vtkStandardNewMacro(vtkImageBloom);
 
 namespace
 {
 const int Clamp = vtkBloomLinearOperator::BORDER_CLAMP;
+
+// The largest finite value of a float or double scalar type.
+double FiniteMaximum(int scalarType)
+{
+  return scalarType == VTK_DOUBLE ? std::numeric_limits<double>::max()
+                                  : static_cast<double>(std::numeric_limits<float>::max());
+}
+
+// SanitizeNonFinite on: NaN becomes 0 and +-Inf the finite extreme of its sign, so the chain only
+// ever sees finite samples.
+void ReplaceNonFinite(std::vector<double>& data, double maximum)
+{
+  vtkSMPTools::For(0, static_cast<vtkIdType>(data.size()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType i = begin; i < end; ++i)
+      {
+        const double v = data[i];
+        if (std::isnan(v))
+        {
+          data[i] = 0.0;
+        }
+        else if (std::isinf(v))
+        {
+          data[i] = v > 0.0 ? maximum : -maximum;
+        }
+      }
+    });
+}
 
 // out = Ry Rx in over the whole of a 2-D (per z slice) block of the given output size.
 void Resample2D(const vtkBloomBuffer& in, const vtkBloomLinearOperator& rx,
@@ -89,6 +119,7 @@ vtkImageBloom::vtkImageBloom()
   this->Strength = 1.0;
   this->Tint[0] = this->Tint[1] = this->Tint[2] = 1.0;
   this->ComputeStatistics = true;
+  this->SanitizeNonFinite = true;
   this->ResetStatistics();
 }
 
@@ -386,6 +417,10 @@ int vtkImageBloom::RequestData(
   vtkBloomBuffer source;
   const int wholeLo[3] = { inExt[0], inExt[2], inExt[4] };
   vtkBloomImport(input, inExt, wholeLo, 0, colours, source);
+  if (this->SanitizeNonFinite)
+  {
+    ReplaceNonFinite(source.Data, FiniteMaximum(input->GetScalarType()));
+  }
   this->UpdateProgress(0.05);
   const auto sizes = this->ComputeLevelSizes(width, height);
   if (sizes.empty())
@@ -412,13 +447,26 @@ int vtkImageBloom::RequestData(
     vtkBloomBuffer& bright = levels[0];
     const int mode = this->ThresholdMode;
     const double t = this->Threshold, knee = this->Knee, clampLum = this->ClampLuminance;
+    // BrightPass maps non-finite colours in every mode but NONE; do the same for NONE, so that
+    // nothing non-finite ever enters the pyramid (a no-op on finite samples).
+    const double ceiling = std::min(clampLum, static_cast<double>(VTK_FLOAT_MAX));
     vtkSMPTools::For(0, static_cast<vtkIdType>(bright.GetNumberOfSamples()),
       [&](vtkIdType begin, vtkIdType end)
       {
         for (vtkIdType s = begin; s < end; ++s)
         {
-          vtkImageBloomThreshold::BrightPass(
-            bright.Data.data() + s * colours, colours, mode, t, knee, clampLum);
+          double* colour = bright.Data.data() + s * colours;
+          if (mode == vtkImageBloomThreshold::NONE)
+          {
+            for (int c = 0; c < colours; ++c)
+            {
+              if (!std::isfinite(colour[c]))
+              {
+                colour[c] = colour[c] > 0.0 ? ceiling : 0.0;
+              }
+            }
+          }
+          vtkImageBloomThreshold::BrightPass(colour, colours, mode, t, knee, clampLum);
         }
       });
   }
@@ -607,6 +655,11 @@ void vtkImageBloom::Composite(
   const int wholeLo[3] = { inExt[0], inExt[2], inExt[4] };
   vtkBloomBuffer piece;
   vtkBloomImport(input, outExt, wholeLo, 0, nc, piece);
+  const double maximum = FiniteMaximum(output->GetScalarType());
+  if (this->SanitizeNonFinite)
+  {
+    ReplaceNonFinite(piece.Data, FiniteMaximum(input->GetScalarType()));
+  }
   const size_t samples = piece.GetNumberOfSamples();
   const size_t slice = static_cast<size_t>(piece.Size[0]) * piece.Size[1];
   for (size_t p = 0; p < samples; ++p)
@@ -620,6 +673,11 @@ void vtkImageBloom::Composite(
     for (int c = 0; c < colours; ++c)
     {
       v[c] = keep * v[c] + (b ? s * tint[c] * b[c] : 0.0);
+      if (this->SanitizeNonFinite)
+      {
+        // Clamp to the output type's finite range; NaN (only an overflow makes one) becomes 0.
+        v[c] = std::isnan(v[c]) ? 0.0 : std::min(std::max(v[c], -maximum), maximum);
+      }
     }
   }
   vtkBloomExport(piece, wholeLo, output, outExt, 0);
@@ -668,6 +726,7 @@ void vtkImageBloom::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Tint: (" << this->Tint[0] << ", " << this->Tint[1] << ", " << this->Tint[2]
      << ")\n";
   os << indent << "ComputeStatistics: " << (this->ComputeStatistics ? "On" : "Off") << "\n";
+  os << indent << "SanitizeNonFinite: " << (this->SanitizeNonFinite ? "On" : "Off") << "\n";
   os << indent << "EnergyIn: " << this->EnergyIn << "\n";
   os << indent << "EnergyOut: " << this->EnergyOut << "\n";
   os << indent << "NumberOfBrightPixels: " << this->NumberOfBrightPixels << "\n";

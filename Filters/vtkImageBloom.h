@@ -53,6 +53,19 @@
  * Work runs in double precision, threaded with vtkSMPTools. Input must be float or double with
  * 1 to 4 components.
  *
+ * Non-finite input (SanitizeNonFinite):
+ * - On (the default): every input sample that is not finite is replaced before use, NaN by 0,
+ *   +Inf by the largest finite value of the input scalar type and -Inf by the lowest, in every
+ *   component (alpha included), both where the chain reads the input and in the composite. The
+ *   result is then clamped to the finite range of the output scalar type (NaN, which finite
+ *   arithmetic cannot produce from finite input but an overflow can, becomes 0), so every
+ *   output sample is finite.
+ * - Off: the bright pass maps NaN and -Inf to 0 and +Inf to min(ClampLuminance, float max), as
+ *   vtkImageBloomThreshold does, in every ThresholdMode (NONE included), so nothing non-finite
+ *   enters the pyramid. The composite reads the input as stored, so a non-finite input sample
+ *   reaches only its own output pixel.
+ * Finite input gives the same output bit for bit either way.
+ *
  * Statistics. With ComputeStatistics on (the default), every successful update measures the
  * bloom over the output extent E (the whole image unless a piece was requested). With L(p) the
  * Rec. 709 luminance 0.2126 R + 0.7152 G + 0.0722 B of pixel p for 3-4 components, or the value
@@ -75,7 +88,9 @@
  * Get*ArrayName() functions: vtkDoubleArray for energies and peaks, vtkIdTypeArray for the
  * pixel count, vtkIntArray for the levels) and returned by the getters. After a failed update,
  * or with ComputeStatistics off, the getters return 0 and the arrays are absent. The point
- * scalars are the same bit for bit with statistics on or off.
+ * scalars are the same bit for bit with statistics on or off. The statistics see the input as
+ * stored (they are not sanitized, so a NaN or Inf input sample makes EnergyIn non-finite;
+ * PeakLuminanceIn ignores NaN) and the output as written.
  */
 
 #ifndef vtkImageBloom_h
@@ -221,6 +236,16 @@ public:
 
   ///@{
   /**
+   * Replace non-finite input samples and clamp the output to the finite range of its scalar
+   * type (see the class description). Default on.
+   */
+  vtkSetMacro(SanitizeNonFinite, bool);
+  vtkGetMacro(SanitizeNonFinite, bool);
+  vtkBooleanMacro(SanitizeNonFinite, bool);
+  ///@}
+
+  ///@{
+  /**
    * Measure the bloom statistics (see the class description) on every update and attach them
    * to the output's field data. Default on; the cost is one read of the input and the output.
    */
@@ -300,6 +325,7 @@ protected:
   double Strength;
   double Tint[3];
   bool ComputeStatistics;
+  bool SanitizeNonFinite;
 
   double EnergyIn;
   double EnergyOut;
