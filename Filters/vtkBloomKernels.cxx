@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <complex>
 
 namespace
 {
@@ -205,4 +206,136 @@ std::vector<double> vtkBloomKernels::PingPongBlurHalfKernel()
 {
   // Seed 002 sums to 1.0179994; 64 passes would compound that to a gain of about 3.
   return NormalizeHalfKernel({ 0.227027, 0.1945946, 0.1216216, 0.054054, 0.016216, 0.007, 0.002 });
+}
+
+//------------------------------------------------------------------------------
+vtkBloomKernels::ExtendedBox vtkBloomKernels::ExtendedBoxForVariance(double variance)
+{
+  ExtendedBox box;
+  if (!(variance > 0.0) || !std::isfinite(variance))
+  {
+    return box;
+  }
+  // Largest r with r (r + 1) / 3 <= v (the variance of the plain box of radius r).
+  int r = static_cast<int>(std::floor(0.5 * (std::sqrt(1.0 + 12.0 * variance) - 1.0)));
+  while (r > 0 && r * (r + 1.0) / 3.0 > variance)
+  {
+    --r;
+  }
+  while ((r + 1.0) * (r + 2.0) / 3.0 <= variance)
+  {
+    ++r;
+  }
+  // Solve v c = r (r + 1) (2r + 1) / 3 + 2 alpha (r + 1)^2 with c = 2r + 1 + 2 alpha for alpha.
+  const double plain = r * (r + 1.0) / 3.0;
+  const double alpha =
+    (2.0 * r + 1.0) * (plain - variance) / (2.0 * (variance - (r + 1.0) * (r + 1.0)));
+  box.Radius = r;
+  box.Alpha = std::min(std::max(alpha, 0.0), 1.0);
+  return box;
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkBloomKernels::ExtendedBoxHalfKernel(const ExtendedBox& box)
+{
+  std::vector<double> half(static_cast<size_t>(box.Radius) + 1, 1.0);
+  if (box.Alpha > 0.0)
+  {
+    half.push_back(box.Alpha);
+  }
+  return NormalizeHalfKernel(half);
+}
+
+namespace
+{
+// van Vliet, Young and Verbeek (1998), third order, L-infinity optimized, for sigma 2:
+// d = 1.86543 and 1.41650 +/- 1.00829 i. The causal part has poles p = d^(-1/q).
+void RecursivePoles(double q, double& real, std::complex<double>& pair)
+{
+  const std::complex<double> d2(1.41650, 1.00829);
+  real = std::exp(-std::log(1.86543) / q);
+  pair = std::exp(-std::log(d2) / q);
+}
+}
+
+//------------------------------------------------------------------------------
+double vtkBloomKernels::RecursiveGaussianVariance(double q)
+{
+  // A causal first-order section (1 - p) / (1 - p z^-1) has variance p / (1 - p)^2; variances
+  // of cascaded sections add, and the anti-causal pass doubles the sum.
+  double real;
+  std::complex<double> pair;
+  RecursivePoles(q, real, pair);
+  const double v =
+    real / ((1.0 - real) * (1.0 - real)) + 2.0 * std::real(pair / ((1.0 - pair) * (1.0 - pair)));
+  return 2.0 * v;
+}
+
+//------------------------------------------------------------------------------
+vtkBloomKernels::RecursiveGaussian vtkBloomKernels::RecursiveGaussianCoefficients(double sigma)
+{
+  RecursiveGaussian c;
+  if (!(sigma > 0.0) || !std::isfinite(sigma))
+  {
+    return c;
+  }
+  c.Sigma = sigma;
+  // The variance grows monotonically with q: bisect on log q.
+  const double target = sigma * sigma;
+  double lo = std::log(1e-4), hi = std::log(1e8);
+  for (int iteration = 0; iteration < 200; ++iteration)
+  {
+    const double mid = 0.5 * (lo + hi);
+    if (RecursiveGaussianVariance(std::exp(mid)) < target)
+    {
+      lo = mid;
+    }
+    else
+    {
+      hi = mid;
+    }
+  }
+  c.Q = std::exp(0.5 * (lo + hi));
+  double real;
+  std::complex<double> pair;
+  RecursivePoles(c.Q, real, pair);
+  // (1 - p1 z^-1)(1 - p2 z^-1)(1 - p3 z^-1) = 1 + F1 z^-1 + F2 z^-2 + F3 z^-3.
+  const double sumPair = 2.0 * pair.real();
+  const double productPair = std::norm(pair);
+  c.Feedback[0] = -(real + sumPair);
+  c.Feedback[1] = real * sumPair + productPair;
+  c.Feedback[2] = -real * productPair;
+  c.Gain = 1.0 + c.Feedback[0] + c.Feedback[1] + c.Feedback[2];
+
+  // Decay length: the slowest pole falls below 1e-20.
+  const double slowest = std::max(real, std::abs(pair));
+  const double length = slowest > 0.0 ? std::log(1e-20) / std::log(slowest) : 1.0;
+  c.DecayLength = static_cast<int>(std::min(std::ceil(length) + 8.0, 1.0e8));
+
+  // Triggs-Sdika boundary matrix, column k: the response (y[N], y[N+1], y[N+2]) of the
+  // extended signal (input 0 beyond the end) to the causal state w[N-1-k] = 1.
+  const int n = c.DecayLength;
+  std::vector<double> w(static_cast<size_t>(n) + 3), y(static_cast<size_t>(n) + 3);
+  for (int k = 0; k < 3; ++k)
+  {
+    // w[0..2] hold w[N-3], w[N-2], w[N-1]; w[3 + m] is w[N + m].
+    std::fill(w.begin(), w.end(), 0.0);
+    w[2 - k] = 1.0;
+    for (int m = 3; m < n + 3; ++m)
+    {
+      w[m] = -c.Feedback[0] * w[m - 1] - c.Feedback[1] * w[m - 2] - c.Feedback[2] * w[m - 3];
+    }
+    std::fill(y.begin(), y.end(), 0.0);
+    for (int m = n - 1; m >= 0; --m)
+    {
+      const double next1 = y[m + 1], next2 = y[m + 2], next3 = y[m + 3];
+      y[m] =
+        c.Gain * w[m + 3] - c.Feedback[0] * next1 - c.Feedback[1] * next2 - c.Feedback[2] * next3;
+    }
+    for (int j = 0; j < 3; ++j)
+    {
+      c.Boundary[j][k] = y[j];
+    }
+  }
+  return c;
 }

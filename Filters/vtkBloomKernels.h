@@ -108,6 +108,63 @@ public:
   static constexpr double LuminanceG = 0.7152;
   static constexpr double LuminanceB = 0.0722;
   ///@}
+
+  ///@{
+  /**
+   * Gwosdek, Grewenig, Bruhn and Weickert (2011), "Theoretical foundations of Gaussian
+   * convolution by extended box filtering": an extended box of radius r weighs 1 at |i| <= r and
+   * alpha in [0, 1) at |i| = r + 1, divided by c = 2r + 1 + 2 alpha. Its variance is
+   * (r (r + 1) (2r + 1) / 3 + 2 alpha (r + 1)^2) / c, which is continuous in alpha, so a cascade
+   * of K such boxes hits any variance sigma^2 exactly (each box carries sigma^2 / K) instead of
+   * snapping sigma to the integer radii of plain boxes.
+   */
+  struct ExtendedBox
+  {
+    int Radius = 0;
+    double Alpha = 0.0;
+  };
+  /// The extended box of the given variance (r is the largest radius with r (r + 1) / 3 <= v).
+  static ExtendedBox ExtendedBoxForVariance(double variance);
+  /// Its normalized half kernel: r + 2 entries (r + 1 when Alpha is 0).
+  static std::vector<double> ExtendedBoxHalfKernel(const ExtendedBox& box);
+  ///@}
+
+  ///@{
+  /**
+   * Third-order recursive Gaussian (Young and van Vliet 1995; van Vliet, Young and Verbeek
+   * 1998): a causal pass followed by an anti-causal pass,
+   *
+   *   w[n] = Gain x[n] - F1 w[n-1] - F2 w[n-2] - F3 w[n-3]
+   *   y[n] = Gain w[n] - F1 y[n+1] - F2 y[n+2] - F3 y[n+3],
+   *
+   * whose causal part has the poles p_i = d_i^(-1/q) with the 1998 L-infinity poles for sigma 2,
+   * d = 1.86543 and 1.41650 +/- 1.00829 i. Instead of the published fit of q(sigma), q is solved
+   * here (by bisection, in double) so that the variance of the two passes, 2 sum_i p_i / (1 -
+   * p_i)^2, equals sigma^2 exactly; Gain = prod_i (1 - p_i) makes the DC gain 1.
+   *
+   * Boundary (Triggs and Sdika 2006): beyond the last sample the signal continues as a constant
+   * u (the last sample for clamp, 0 for zero), and then (y[N], y[N+1], y[N+2]) - u = Boundary *
+   * (w[N-1] - u, w[N-2] - u, w[N-3] - u), exactly for the infinitely extended signal. Boundary
+   * is computed by running the homogeneous recursions over the decay length of the response
+   * (until it falls below 1e-20), which is equivalent to Triggs and Sdika's closed form.
+   *
+   * Every coefficient is double; the filter state must be kept in double too (at sigma = 200 the
+   * poles are within 1e-2 of 1 and float32 state loses about five digits).
+   */
+  struct RecursiveGaussian
+  {
+    double Sigma = 0.0;
+    double Q = 0.0;
+    double Gain = 1.0;
+    double Feedback[3] = { 0.0, 0.0, 0.0 };
+    double Boundary[3][3] = { { 0.0, 0.0, 0.0 }, { 0.0, 0.0, 0.0 }, { 0.0, 0.0, 0.0 } };
+    int DecayLength = 0; ///< samples after which the response is below 1e-20 of its start
+  };
+  /// Coefficients for standard deviation sigma > 0 (in samples); sigma <= 0 gives the identity.
+  static RecursiveGaussian RecursiveGaussianCoefficients(double sigma);
+  /// Variance of the two-pass recursive filter for the 1998 poles scaled by q.
+  static double RecursiveGaussianVariance(double q);
+  ///@}
 };
 
 #endif
