@@ -1,0 +1,177 @@
+/**
+ * @class   vtkBloomPass
+ * @brief   HDR bloom as a render pass: the vtkImageBloom chain as GLSL passes on float targets.
+ *
+ * The delegate pass renders the scene into a floating-point framebuffer (RGBA16F by default,
+ * RGBA32F with SetFloatPrecisionTo32Bit()), so nothing above 1 is clipped before the bloom:
+ * VTK's vtkImageProcessingPass::RenderDelegate renders into 8-bit targets, which is why
+ * vtkGaussianBlurPass cannot bloom HDR content. The pass then evaluates the chain described by
+ * a vtkImageBloom's parameters (GetParameters(); every parameter and preset of the filter
+ * applies) as full-screen GLSL passes, and composites the result into the framebuffer that was
+ * bound when the pass started, at the renderer's viewport:
+ *
+ *   threshold -> pyramid down -> per-level separable blur -> upsample-accumulate -> composite.
+ *
+ * The operators of every step come from vtkBloomChain, which builds them with the same C++ code
+ * as the CPU filters; they are uploaded as small float textures (one row per output sample:
+ * first input index and band weights) and applied with exact texel fetches. Hardware bilinear
+ * filtering is never used, so odd sizes, clamped borders and composed blur iterations match the
+ * CPU chain, and the GPU result agrees with vtkImageBloom applied to the same float render to
+ * within float rounding (tested per preset). Output alpha is the scene's alpha, as in
+ * vtkImageBloom, so figures with a transparent background keep it.
+ *
+ * Selective bloom. By default every pixel of the scene can bloom (EMISSION_SCENE). With
+ * SetEmissionSourceToEmitters() only the props given with AddEmitter() bloom: they are rendered
+ * a second time, alone, into an emission buffer, and a sample counts only where the emitter is
+ * the visible surface (its depth is not behind the scene's), so occluded emitters do not shine
+ * through. An emitter need not be in the renderer: a copy of an actor with a lookup table that
+ * is black outside a scalar range (CreateScalarRangeEmitter) makes only that range glow, for
+ * example the hot spots of a temperature field.
+ *
+ * Chain it before vtkToneMappingPass (tone mapping's delegate is this pass) to bloom in linear
+ * HDR and tone-map afterwards. Resources are made on first use and remade when the viewport
+ * size, the precision or the parameters change; ReleaseGraphicsResources frees them and
+ * forwards to the delegate. The pass needs OpenGL 3.2 and works with any vtkOpenGLRenderWindow
+ * (X, OSMesa or EGL).
+ *
+ * With CaptureResult on, the bloomed image is also kept in a float texture after each render,
+ * and ReadSceneImage() / ReadResultImage() return the un-bloomed float render and the bloomed
+ * result as float RGBA vtkImageData (origin 0, spacing 1, row 0 at the bottom) for tests,
+ * EXR output and statistics.
+ */
+
+#ifndef vtkBloomPass_h
+#define vtkBloomPass_h
+
+#include "vtkImageProcessingPass.h"
+#include "vtkRenderingBloomModule.h" // For export macro
+#include "vtkSmartPointer.h"         // For the parameters
+
+#include <memory> // For the internal state
+
+class vtkActor;
+class vtkImageBloom;
+class vtkImageData;
+class vtkOpenGLRenderWindow;
+class vtkProp;
+class vtkPropCollection;
+
+class VTKRENDERINGBLOOM_EXPORT vtkBloomPass : public vtkImageProcessingPass
+{
+public:
+  static vtkBloomPass* New();
+  vtkTypeMacro(vtkBloomPass, vtkImageProcessingPass);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  /// Render the delegate into a float target, bloom it and composite it.
+  void Render(const vtkRenderState* s) override;
+
+  /// Free every texture, framebuffer and shader, and forward to the delegate.
+  void ReleaseGraphicsResources(vtkWindow* w) override;
+
+  ///@{
+  /**
+   * The bloom parameters: a vtkImageBloom whose parameters (and SetPreset) define the chain.
+   * Never null; a new pass holds a filter with its defaults. Its input is never used.
+   */
+  void SetParameters(vtkImageBloom* parameters);
+  vtkImageBloom* GetParameters() { return this->Parameters; }
+  ///@}
+
+  /// Shortcut for GetParameters()->SetPreset(name).
+  bool SetPreset(const char* name);
+
+  ///@{
+  /// Precision of every target: 16-bit half floats (default) or 32-bit floats.
+  enum
+  {
+    FLOAT16 = 16,
+    FLOAT32 = 32
+  };
+  vtkSetClampMacro(FloatPrecision, int, FLOAT16, FLOAT32);
+  vtkGetMacro(FloatPrecision, int);
+  void SetFloatPrecisionTo16Bit() { this->SetFloatPrecision(FLOAT16); }
+  void SetFloatPrecisionTo32Bit() { this->SetFloatPrecision(FLOAT32); }
+  ///@}
+
+  ///@{
+  /// What may bloom: the whole scene (default) or only the emitter props.
+  enum
+  {
+    EMISSION_SCENE = 0,
+    EMISSION_EMITTERS = 1
+  };
+  vtkSetClampMacro(EmissionSource, int, EMISSION_SCENE, EMISSION_EMITTERS);
+  vtkGetMacro(EmissionSource, int);
+  void SetEmissionSourceToScene() { this->SetEmissionSource(EMISSION_SCENE); }
+  void SetEmissionSourceToEmitters() { this->SetEmissionSource(EMISSION_EMITTERS); }
+  ///@}
+
+  ///@{
+  /// The props that emit when EmissionSource is EMISSION_EMITTERS.
+  void AddEmitter(vtkProp* prop);
+  void RemoveEmitter(vtkProp* prop);
+  void RemoveAllEmitters();
+  vtkPropCollection* GetEmitters() { return this->Emitters; }
+  ///@}
+
+  /**
+   * A new actor that draws `actor`'s geometry with its colours only where the mapped scalar
+   * lies in [range[0], range[1]], and black elsewhere: use it as an emitter to make a scalar
+   * range glow. It shares the mapper's input and the actor's transform and property; the
+   * lookup table samples the actor's own table over the range. Returns null when the actor
+   * has no mapper with a lookup table.
+   */
+  static vtkSmartPointer<vtkActor> CreateScalarRangeEmitter(vtkActor* actor, const double range[2]);
+
+  ///@{
+  /**
+   * Keep the bloomed result in a float texture after each render (off by default; it costs
+   * one extra full-screen copy). Needed by ReadResultImage().
+   */
+  vtkSetMacro(CaptureResult, bool);
+  vtkGetMacro(CaptureResult, bool);
+  vtkBooleanMacro(CaptureResult, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Read back, as float RGBA, the un-bloomed scene of the last render (ReadSceneImage) or the
+   * bloomed result (ReadResultImage, with CaptureResult on). The window's context must be
+   * current (it is after Render). Return false, with an error, when there is nothing to read.
+   */
+  bool ReadSceneImage(vtkImageData* image);
+  bool ReadResultImage(vtkImageData* image);
+  ///@}
+
+  /**
+   * Bloom a float image on the GPU with the same chain, without rendering a scene: `input`
+   * (float or double, 3 or 4 components, 2-D) is uploaded as the scene, and `output` receives
+   * the float RGBA result (alpha 1 for 3-component input). `window` provides the context; it
+   * is initialized if needed. Returns false, with an error, on bad input.
+   */
+  bool ApplyToImage(vtkOpenGLRenderWindow* window, vtkImageData* input, vtkImageData* output);
+
+  /// Number of GPU passes the last evaluation ran (0 when the bloom was skipped).
+  vtkGetMacro(NumberOfPasses, int);
+
+protected:
+  vtkBloomPass();
+  ~vtkBloomPass() override;
+
+  vtkSmartPointer<vtkImageBloom> Parameters;
+  vtkPropCollection* Emitters;
+  int FloatPrecision;
+  int EmissionSource;
+  bool CaptureResult;
+  int NumberOfPasses;
+
+private:
+  vtkBloomPass(const vtkBloomPass&) = delete;
+  void operator=(const vtkBloomPass&) = delete;
+
+  class vtkInternals;
+  std::unique_ptr<vtkInternals> Internals;
+};
+
+#endif

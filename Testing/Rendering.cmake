@@ -1,0 +1,17 @@
+# Tests of the render pass (VTKBloom::RenderingBloom); included by Testing/CMakeLists.txt.
+# They need an OpenGL context: with the OSMesa VTK they run anywhere; with an X11 VTK they need
+# a display (scripts/test.sh runs CTest under xvfb-run there). Every test is named Rendering*.
+if (NOT VTKBLOOM_ENABLE_RENDERING)
+  return ()
+endif ()
+
+set(vtkbloom_rendering_baselines "${CMAKE_CURRENT_LIST_DIR}/Data/Baseline")
+
+vtkbloom_add_gtest(TestBloomPass
+  SOURCES Rendering/TestBloomPass.cxx
+  LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom
+    VTK::RenderingOpenGL2 VTK::RenderingCore VTK::FiltersSources VTK::CommonDataModel
+    VTK::CommonCore VTK::opengl)
+vtk_module_autoinit(TARGETS TestBloomPass MODULES VTK::RenderingOpenGL2)
+target_compile_definitions(TestBloomPass PRIVATE
+  VTKBLOOM_BASELINE_DIR="${vtkbloom_rendering_baselines}")
