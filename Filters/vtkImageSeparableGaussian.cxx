@@ -267,6 +267,33 @@ void BoxCascadeLine(double* line, int n, int lanes, int border,
   std::copy(ext, ext + static_cast<size_t>(n) * L, line);
 }
 
+// A direct convolution with a short symmetric half kernel (the recursive method below sigma
+// 0.5, where a third-order recursion cannot reach the variance).
+void DirectLine(double* line, int n, int lanes, int border, const std::vector<double>& half,
+  std::vector<double>& scratch)
+{
+  const size_t L = static_cast<size_t>(lanes);
+  const int radius = static_cast<int>(half.size()) - 1;
+  scratch.assign(static_cast<size_t>(n) * L, 0.0);
+  for (int m = 0; m < n; ++m)
+  {
+    for (int k = -radius; k <= radius; ++k)
+    {
+      const int source = vtkBloomLinearOperator::FoldIndex(m + k, n, border);
+      if (source < 0)
+      {
+        continue;
+      }
+      const double w = half[static_cast<size_t>(std::abs(k))];
+      for (size_t l = 0; l < L; ++l)
+      {
+        scratch[m * L + l] += w * line[source * L + l];
+      }
+    }
+  }
+  std::copy(scratch.begin(), scratch.end(), line);
+}
+
 // 3 x 3 helpers for the periodic steady state of the recursion.
 using Matrix3 = std::array<std::array<double, 3>, 3>;
 
@@ -379,6 +406,25 @@ void RecursiveLine(double* line, int n, int lanes, int border,
   std::vector<double>& scratch)
 {
   const size_t L = static_cast<size_t>(lanes);
+  if (border == vtkBloomLinearOperator::BORDER_REFLECT && c.Sigma >= 3.0 * n)
+  {
+    // Far wider than the mirrored period 2n, the Gaussian's periodic ripple is below
+    // exp(-2 pi^2 1.5^2) ~ 1e-19: the answer is the mean. The recursion itself would only add
+    // round-off there (its poles are within 1e-3 of 1).
+    for (size_t l = 0; l < L; ++l)
+    {
+      double sum = 0.0;
+      for (int m = 0; m < n; ++m)
+      {
+        sum += line[m * L + l];
+      }
+      for (int m = 0; m < n; ++m)
+      {
+        line[m * L + l] = sum / n;
+      }
+    }
+    return;
+  }
   if (border == vtkBloomLinearOperator::BORDER_REFLECT)
   {
     const int period = 2 * n;
@@ -827,7 +873,14 @@ void vtkImageSeparableGaussian::ExecuteFast(
       vtkBloomKernels::ExtendedBoxForVariance(sigma * sigma / passes);
     vtkBloomKernels::RecursiveGaussian recursive;
     Matrix3 periodic{};
-    if (method == RECURSIVE)
+    // Below sigma 0.5 the third-order recursion cannot reach the variance: use Lindeberg's
+    // discrete kernel (exact variance) directly there.
+    const bool direct = method == RECURSIVE && sigma < 0.5;
+    const std::vector<double> half = direct
+      ? vtkBloomKernels::GaussianHalfKernel(
+          sigma, vtkBloomKernels::RadiusForSigma(sigma, 6.0), vtkBloomKernels::GAUSSIAN_DISCRETE)
+      : std::vector<double>();
+    if (method == RECURSIVE && !direct)
     {
       recursive = vtkBloomKernels::RecursiveGaussianCoefficients(sigma);
       periodic = PeriodicSteadyState(recursive, 2LL * n);
@@ -848,7 +901,11 @@ void vtkImageSeparableGaussian::ExecuteFast(
           {
             std::copy(base + m * stride, base + m * stride + lanes, line.data() + m * lanes);
           }
-          if (method == RECURSIVE)
+          if (direct)
+          {
+            DirectLine(line.data(), n, static_cast<int>(lanes), border, half, scratch);
+          }
+          else if (method == RECURSIVE)
           {
             RecursiveLine(
               line.data(), n, static_cast<int>(lanes), border, recursive, periodic, scratch);

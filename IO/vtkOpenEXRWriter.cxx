@@ -122,6 +122,17 @@ struct vtkOpenEXRConvertWorker
       // Only reached for unsigned int scalars (UINT channels).
       return static_cast<T>(value);
     }
+    else if constexpr (std::is_same<T, Imath::half>::value)
+    {
+      // Finite values beyond the half range clamp to +/-65504 (HALF_MAX) instead of rounding
+      // to +/-Inf, so that finite input never becomes Inf; infinities and NaN are kept.
+      const float f = ToFloat(value);
+      if (std::isfinite(f) && std::fabs(f) > 65504.0f)
+      {
+        return static_cast<T>(f > 0 ? 65504.0f : -65504.0f);
+      }
+      return static_cast<T>(f);
+    }
     else
     {
       return static_cast<T>(ToFloat(value));

@@ -8,11 +8,12 @@
  *
  * Scalar types. float and double scalars are written as HALF or FLOAT channels (PixelType,
  * default float); double is first rounded to float. Float output of float input is bit-exact,
- * including NaN payloads, infinities and subnormals. Half output uses Imath's float-to-half
- * conversion, which rounds to nearest even: finite values of magnitude 65520 or more (half of
- * the way past the largest half, 65504) become +/-Inf, values in (65504, 65520) become 65504,
- * magnitudes up to 2^-25 become +/-0 (smaller magnitudes become half subnormals), and NaN stays
- * NaN (the payload keeps its top ten mantissa bits, so NaNs that came from half survive). unsigned
+ * including NaN payloads, infinities and subnormals. Half output clamps: every finite value of
+ * magnitude above 65504 (the largest half) is written as +/-65504, so finite input never becomes
+ * Inf; +/-Inf input stays +/-Inf. Within the range, Imath's float-to-half conversion rounds to
+ * nearest even: magnitudes up to 2^-25 become +/-0 (smaller magnitudes become half subnormals),
+ * and NaN stays NaN (the payload keeps its top ten mantissa bits, so NaNs that came from half
+ * survive). unsigned
  * int scalars are written losslessly as UINT channels whatever PixelType says. Any other scalar
  * type is refused with an error.
  *

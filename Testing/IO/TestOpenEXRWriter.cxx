@@ -266,10 +266,10 @@ TEST(OpenEXRWriter, HalfRoundingIsDocumented)
   const float infinity = std::numeric_limits<float>::infinity();
   // input -> value stored as half, as the class documentation states.
   const std::vector<std::pair<float, float>> cases = { { 65504.0f, 65504.0f },
-    { 65519.0f, 65504.0f }, { 65520.0f, infinity }, { -70000.0f, -infinity }, { 1e30f, infinity },
-    { 1.0e-8f, 0.0f }, { -1.0e-8f, -0.0f }, { 5.9604645e-8f /* 2^-24 */, 5.9604645e-8f },
-    { 1.0009765625f, 1.0009765625f }, { 1.00048828125f /* tie -> even */, 1.0f },
-    { 0.1f, 0.0999755859375f } };
+    { 65519.0f, 65504.0f }, { 65520.0f, 65504.0f }, { -70000.0f, -65504.0f }, { 1e30f, 65504.0f },
+    { infinity, infinity }, { -infinity, -infinity }, { 1.0e-8f, 0.0f }, { -1.0e-8f, -0.0f },
+    { 5.9604645e-8f /* 2^-24 */, 5.9604645e-8f }, { 1.0009765625f, 1.0009765625f },
+    { 1.00048828125f /* tie -> even */, 1.0f }, { 0.1f, 0.0999755859375f } };
   const int extent[6] = { 0, static_cast<int>(cases.size()), 0, 0, 0, 0 };
   auto image = vtkSmartPointer<vtkImageData>::New();
   image->SetExtent(const_cast<int*>(extent));

@@ -1,0 +1,25 @@
+# Numerical hard cases and accuracy bounds (issue 4); included by Testing/CMakeLists.txt.
+# Every suite here is named Numerics*, so `ctest -R ^Numerics` runs them all.
+
+find_package(OpenEXR 3 REQUIRED)
+
+# The hard cases' inputs and expectations, shared with the GPU suites (no library code in it).
+add_library(vtkbloom_hardcases STATIC "${CMAKE_CURRENT_LIST_DIR}/Support/vtkBloomHardCases.cxx")
+target_include_directories(vtkbloom_hardcases PUBLIC "${CMAKE_CURRENT_LIST_DIR}/Support")
+target_link_libraries(vtkbloom_hardcases PUBLIC VTK::CommonCore VTK::CommonDataModel
+  vtkbloom_build_flags)
+
+if (NOT TARGET vtkbloom_reference)
+  add_library(vtkbloom_reference STATIC
+    "${CMAKE_CURRENT_LIST_DIR}/Support/vtkBloomReference.cxx")
+  target_include_directories(vtkbloom_reference PUBLIC "${CMAKE_CURRENT_LIST_DIR}/Support")
+  target_link_libraries(vtkbloom_reference PUBLIC VTK::CommonCore VTK::CommonDataModel
+    vtkbloom_build_flags)
+endif ()
+
+foreach (test IN ITEMS TestNumericsGaussian TestNumericsHardCases)
+  vtkbloom_add_gtest(${test}
+    SOURCES "${CMAKE_CURRENT_LIST_DIR}/Numerics/${test}.cxx"
+    LIBRARIES vtkbloom_hardcases vtkbloom_reference VTKBloom::FiltersBloom VTKBloom::IOOpenEXR
+      OpenEXR::OpenEXR VTK::CommonExecutionModel VTK::CommonDataModel VTK::CommonCore)
+endforeach ()
