@@ -650,10 +650,6 @@ vtkBloomPass::vtkBloomPass()
 //------------------------------------------------------------------------------
 vtkBloomPass::~vtkBloomPass()
 {
-  if (this->Internals->Context)
-  {
-    vtkErrorMacro(<< "ReleaseGraphicsResources() was not called before the pass was deleted.");
-  }
   this->Emitters->Delete();
 }
 
@@ -737,7 +733,23 @@ vtkSmartPointer<vtkActor> vtkBloomPass::CreateScalarRangeEmitter(
 
   vtkSmartPointer<vtkMapper> copy;
   copy.TakeReference(mapper->NewInstance());
-  copy->ShallowCopy(mapper);
+  // Not ShallowCopy: the OpenGL mapper's copies its deprecated shader-code members too.
+  if (mapper->GetNumberOfInputConnections(0) > 0)
+  {
+    copy->SetInputConnection(mapper->GetInputConnection(0, 0));
+  }
+  else
+  {
+    copy->SetInputDataObject(mapper->GetInputDataObject(0, 0));
+  }
+  copy->SetScalarVisibility(true);
+  copy->SetScalarMode(mapper->GetScalarMode());
+  copy->SetArrayAccessMode(mapper->GetArrayAccessMode());
+  copy->SetArrayId(mapper->GetArrayId());
+  copy->SetArrayName(mapper->GetArrayName());
+  copy->SetArrayComponent(mapper->GetArrayComponent());
+  copy->SetColorMode(mapper->GetColorMode());
+  copy->SetInterpolateScalarsBeforeMapping(mapper->GetInterpolateScalarsBeforeMapping());
   copy->SetLookupTable(table);
   copy->SetScalarRange(range[0], range[1]);
 

@@ -9,7 +9,8 @@ set(vtkbloom_rendering_baselines "${CMAKE_CURRENT_LIST_DIR}/Data/Baseline")
 
 vtkbloom_add_gtest(TestBloomPass
   SOURCES Rendering/TestBloomPass.cxx
-  LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom
+  LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom VTKBloom::IOOpenEXR
+    VTK::TestingRendering
     VTK::RenderingOpenGL2 VTK::RenderingCore VTK::FiltersSources VTK::CommonDataModel
     VTK::CommonCore VTK::opengl)
 vtk_module_autoinit(TARGETS TestBloomPass MODULES VTK::RenderingOpenGL2)

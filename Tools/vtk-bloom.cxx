@@ -44,6 +44,14 @@
 #include <unistd.h>
 #include <vector>
 
+#ifdef VTKBLOOM_HAS_RENDERING
+#include "vtkBloomExampleScenes.h"
+#include "vtkBloomPass.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+#endif
+
 namespace fs = std::filesystem;
 
 namespace
@@ -51,6 +59,8 @@ namespace
 const char* const Usage = R"(usage:
   vtk-bloom image [--preset NAME] [options] IN.exr OUT.exr|OUT.png
   vtk-bloom blur --radius R [--sigma S] [--border clamp|reflect|zero] IN.exr OUT.exr|OUT.png
+  vtk-bloom render [--size WxH] [--precision 16|32] [--no-bloom] [options] SCENE OUT.exr|OUT.png
+  vtk-bloom render --list
   vtk-bloom --help
 
 image: HDR bloom (vtkImageBloom). A preset is applied first; options then override it.
@@ -79,6 +89,13 @@ blur: separable Gaussian (vtkImageSeparableGaussian), seed 004 semantics.
   --sigma S              standard deviation in pixels (default R/2; 0 is an exact copy)
   --border B             clamp (default) | reflect | zero
   --kernel K             sampled (default) | integrated | discrete
+
+render: render an example emissive scene headless with the GPU pass (vtkBloomPass).
+  --list                 print the scene names, one per line
+  --size WxH             image size in pixels (default 960x540)
+  --precision P          16 (default) or 32: float precision of the scene render target
+  --no-bloom             write the float render without bloom (the "before" image)
+  The scene chooses its bloom parameters; the image options above override them.
 
 common:
   --exposure E           exposure multiplier for .png output (default 1)
@@ -707,6 +724,108 @@ int RunBlur(int argc, char* argv[])
 }
 }
 
+int RunRender(int argc, char* argv[])
+{
+  Arguments args(argc, argv, 2, { "--list", "--no-bloom", "--karis", "--quiet" });
+  std::string value;
+  if (args.Take("--list", value))
+  {
+    args.CheckAllTaken();
+    if (!args.Positional.empty())
+    {
+      throw UsageError{ "render --list takes no other argument" };
+    }
+#ifdef VTKBLOOM_HAS_RENDERING
+    for (const auto& name : vtkBloomExampleSceneNames())
+    {
+      std::cout << name << "\n";
+    }
+#endif
+    return 0;
+  }
+#ifndef VTKBLOOM_HAS_RENDERING
+  throw RunError{ "this vtk-bloom was built without the render pass (VTKBLOOM_ENABLE_RENDERING)" };
+#else
+  CommonOptions common;
+  TakeCommon(args, common);
+  int size[2] = { 960, 540 };
+  if (args.Take("--size", value))
+  {
+    const auto x = value.find('x');
+    if (x == std::string::npos)
+    {
+      throw UsageError{ "--size expects WxH, got '" + value + "'" };
+    }
+    size[0] = ParseInt("--size", value.substr(0, x), 1, 8192);
+    size[1] = ParseInt("--size", value.substr(x + 1), 1, 8192);
+  }
+  int precision = vtkBloomPass::FLOAT16;
+  if (args.Take("--precision", value))
+  {
+    precision = ParseInt("--precision", value, 16, 32);
+    if (precision != 16 && precision != 32)
+    {
+      throw UsageError{ "--precision expects 16 or 32, got '" + value + "'" };
+    }
+  }
+  const bool bloom = !args.Take("--no-bloom", value);
+  if (args.Positional.size() != 2)
+  {
+    throw UsageError{ "render needs a scene name and an output file (see render --list)" };
+  }
+  const std::string scene = args.Positional[0], out = args.Positional[1];
+  const auto names = vtkBloomExampleSceneNames();
+  if (std::find(names.begin(), names.end(), scene) == names.end())
+  {
+    throw UsageError{ "unknown scene '" + scene + "' (see render --list)" };
+  }
+  const std::string ext = Extension(out);
+  if (ext != ".exr" && ext != ".png")
+  {
+    throw UsageError{ "output must be .exr or .png: " + out };
+  }
+
+  ErrorCollector errors;
+  vtkNew<vtkRenderWindow> window;
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkBloomPass> pass;
+  vtkNew<vtkRenderStepsPass> steps;
+  errors.Watch(window);
+  errors.Watch(pass);
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(size[0], size[1]);
+  window->AddRenderer(renderer);
+  pass->SetDelegatePass(steps);
+  renderer->SetPass(pass);
+  vtkBloomBuildExampleScene(scene, renderer, pass);
+  ApplyImageOptions(args, pass->GetParameters());
+  args.CheckAllTaken();
+  pass->SetFloatPrecision(precision);
+  pass->CaptureResultOn();
+  window->Render();
+  vtkNew<vtkImageData> image;
+  if (bloom)
+  {
+    pass->ReadResultImage(image);
+  }
+  else
+  {
+    pass->ReadSceneImage(image);
+  }
+  window->ReleaseGraphicsResources(window);
+  errors.ThrowIfAny("render " + scene + " failed:");
+  const int displayWindow[4] = { 0, 0, size[0] - 1, size[1] - 1 };
+  WriteOutput(image, displayWindow, out, common, errors);
+  if (!common.Quiet)
+  {
+    std::cerr << "vtk-bloom: rendered " << scene << " (" << size[0] << "x" << size[1] << ", "
+              << pass->GetNumberOfPasses() << " GPU passes) to " << out << "\n";
+  }
+  return 0;
+#endif
+}
+
 int main(int argc, char* argv[])
 {
   const std::string command = argc > 1 ? argv[1] : "";
@@ -732,6 +851,10 @@ int main(int argc, char* argv[])
     if (command == "blur")
     {
       return RunBlur(argc, argv);
+    }
+    if (command == "render")
+    {
+      return RunRender(argc, argv);
     }
     throw UsageError{ command.empty() ? "no command given" : "unknown command '" + command + "'" };
   }

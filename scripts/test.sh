@@ -1,20 +1,59 @@
 #!/usr/bin/env bash
 # Install what vtk-bloom needs, build it, and run the whole test suite.
-#   bash scripts/test.sh          release build in build/
-#   bash scripts/test.sh --asan   AddressSanitizer + UndefinedBehaviorSanitizer build in build-asan/
+#   bash scripts/test.sh           both backends: the system VTK 9.1 (X11) in build/, run under a
+#                                  private Xvfb, then the OSMesa VTK (built from Debian's source
+#                                  on first use, see scripts/build-osmesa-vtk.sh) in
+#                                  build-osmesa/, run with no display at all
+#   bash scripts/test.sh --x11     only the system-VTK leg
+#   bash scripts/test.sh --osmesa  only the OSMesa leg
+#   bash scripts/test.sh --asan    AddressSanitizer + UndefinedBehaviorSanitizer build in
+#                                  build-asan/ (system VTK, under Xvfb)
 # Tests whose shared data (../shared/data) is missing are skipped, except under CI=true, where
 # they fail.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/scripts/install-deps.sh"
+mode=${1:-all}
 
-build="$root/build"
-args=(-DCMAKE_BUILD_TYPE=Release -DVTKBLOOM_WARNINGS_AS_ERRORS=ON)
-if [ "${1:-}" = "--asan" ]; then
-  build="$root/build-asan"
-  args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DVTKBLOOM_ENABLE_SANITIZERS=ON)
-  export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
-  export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-fi
-bash "$root/scripts/configure.sh" "$build" "${args[@]}"
-ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
+run_x11() {
+  local build=$1
+  shift
+  bash "$root/scripts/configure.sh" "$build" "$@"
+  echo "test: running the suite against the system VTK (X11, private Xvfb)"
+  bash "$root/scripts/with-xvfb.sh" ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
+}
+
+run_osmesa() {
+  local prefix
+  prefix=$(bash "$root/scripts/build-osmesa-vtk.sh" | tail -n 1)
+  # No Python wrapping: the OSMesa VTK is built without it (the X11 leg covers Python).
+  bash "$root/scripts/configure.sh" "$root/build-osmesa" -DCMAKE_BUILD_TYPE=Release \
+    -DVTKBLOOM_WARNINGS_AS_ERRORS=ON -DVTKBLOOM_WRAP_PYTHON=OFF \
+    -DVTK_DIR="$prefix/lib/cmake/vtk-9.1"
+  echo "test: running the suite against the OSMesa VTK (no DISPLAY, no X server)"
+  env -u DISPLAY -u WAYLAND_DISPLAY ctest --test-dir "$root/build-osmesa" --output-on-failure \
+    -j"$(nproc)"
+}
+
+case "$mode" in
+  all)
+    run_x11 "$root/build" -DCMAKE_BUILD_TYPE=Release -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
+    run_osmesa
+    ;;
+  --x11)
+    run_x11 "$root/build" -DCMAKE_BUILD_TYPE=Release -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
+    ;;
+  --osmesa)
+    run_osmesa
+    ;;
+  --asan)
+    export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
+    export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
+    export LSAN_OPTIONS="suppressions=$root/Testing/lsan.supp:print_suppressions=0"
+    run_x11 "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVTKBLOOM_ENABLE_SANITIZERS=ON
+    ;;
+  *)
+    echo "usage: bash scripts/test.sh [--x11 | --osmesa | --asan]" >&2
+    exit 2
+    ;;
+esac

@@ -77,7 +77,7 @@ void ScalarField(vtkRenderer* renderer, vtkBloomPass* pass)
   slice->GetProperty()->SetDiffuse(0.0);
   renderer->AddActor(slice);
 
-  const double hot[2] = { 225.0, 277.0 };
+  const double hot[2] = { 245.0, 277.0 };
   auto emitter = vtkBloomPass::CreateScalarRangeEmitter(slice, hot);
   pass->AddEmitter(emitter);
   pass->SetEmissionSourceToEmitters();
@@ -85,7 +85,7 @@ void ScalarField(vtkRenderer* renderer, vtkBloomPass* pass)
   vtkImageBloom* p = pass->GetParameters();
   p->SetThresholdMode(vtkImageBloomThreshold::NONE);
   p->SetNumberOfLevels(6);
-  p->SetStrength(1.6);
+  p->SetStrength(0.7);
 
   renderer->SetBackground(0.02, 0.02, 0.03);
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -93,7 +93,7 @@ void ScalarField(vtkRenderer* renderer, vtkBloomPass* pass)
   camera->SetFocalPoint(0.0, 0.0, 0.0);
   camera->SetViewUp(0.0, 1.0, 0.0);
   renderer->ResetCamera();
-  camera->Zoom(1.35);
+  camera->Zoom(1.9);
 }
 
 // Field lines of a magnetic dipole, traced with RK4, drawn as HDR emissive lines, with
@@ -181,8 +181,8 @@ void FieldLines(vtkRenderer* renderer, vtkBloomPass* pass)
   // Emissive HDR colour: ambient only, with an ambient colour above 1.
   fieldLines->GetProperty()->SetAmbient(1.0);
   fieldLines->GetProperty()->SetDiffuse(0.0);
-  fieldLines->GetProperty()->SetAmbientColor(0.6, 1.6, 4.0);
-  fieldLines->GetProperty()->SetLineWidth(2.0);
+  fieldLines->GetProperty()->SetAmbientColor(1.0, 2.5, 6.0);
+  fieldLines->GetProperty()->SetLineWidth(3.0);
   renderer->AddActor(fieldLines);
 
   // Particles: small spheres along the lines, hotter near the poles.
@@ -234,7 +234,7 @@ void LitScene(vtkRenderer* renderer, vtkBloomPass* pass)
   planeMapper->SetInputConnection(plane->GetOutputPort());
   vtkNew<vtkActor> ground;
   ground->SetMapper(planeMapper);
-  ground->GetProperty()->SetColor(0.35, 0.36, 0.4);
+  ground->GetProperty()->SetColor(0.22, 0.23, 0.26);
   renderer->AddActor(ground);
 
   const double spheres[3][4] = { { -1.6, 0.4, 0.8, 0.8 }, { 0.6, -0.8, 0.6, 0.6 },
@@ -281,7 +281,7 @@ void LitScene(vtkRenderer* renderer, vtkBloomPass* pass)
   key->SetLightTypeToSceneLight();
   key->SetPosition(-3.0, -4.0, 6.0);
   key->SetFocalPoint(0.0, 0.0, 0.0);
-  key->SetIntensity(2.2);
+  key->SetIntensity(1.7);
   renderer->AddLight(key);
   vtkNew<vtkLight> fill;
   fill->SetLightTypeToHeadlight();

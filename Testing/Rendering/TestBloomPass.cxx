@@ -11,6 +11,7 @@
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"
 #include "vtkNew.h"
+#include "vtkOpenEXRReader.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkPolyDataMapper.h"
@@ -19,7 +20,9 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
+#include "vtkTesting.h"
 #include "vtkToneMappingPass.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtk_glew.h"
 
 #include <gtest/gtest.h>
@@ -27,6 +30,7 @@
 #include <cmath>
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace
 {
@@ -152,5 +156,194 @@ TEST(RenderingBloomPass, AgreesWithTheCPUFilterForEveryPresetInFloat16)
     const double error = PresetAgreement(preset, vtkBloomPass::FLOAT16, "lit-spheres");
     EXPECT_LE(error, 1e-3) << preset;
     std::cout << "[ float16 ] " << preset << " relative L2 " << error << "\n";
+  }
+}
+
+//------------------------------------------------------------------------------
+// The GPU chain on an image (ApplyToImage) matches the shared presets' float64 expectations as
+// closely as the CPU filter does: the same operators, evaluated in float32.
+TEST(RenderingBloomPass, ApplyToImageMatchesThePresetExamples)
+{
+  VTKBLOOM_REQUIRE_DATA(input, "presets/example_161x91.exr");
+  vtkNew<vtkOpenEXRReader> reader;
+  reader->SetFileName(input.c_str());
+  reader->Update();
+  BloomWindow w(16, 16);
+  w.Bloom->SetFloatPrecisionTo32Bit(); // the image is stored at the pass's precision
+  for (const auto& preset : vtkImageBloom::GetPresetNames())
+  {
+    vtkNew<vtkOpenEXRReader> expectedReader;
+    expectedReader->SetFileName(
+      vtkBloomTest::SharedDataPath("presets/example_161x91__" + preset + ".exr").c_str());
+    expectedReader->Update();
+    ASSERT_TRUE(w.Bloom->SetPreset(preset.c_str()));
+    vtkNew<vtkImageData> gpu;
+    ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), reader->GetOutput(), gpu));
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    const double error = ColourRelativeL2(gpu, expectedReader->GetOutput());
+    EXPECT_LE(error, 1e-5) << preset;
+    std::cout << "[ presets ] " << preset << " relative L2 vs float64 " << error << "\n";
+  }
+}
+
+//------------------------------------------------------------------------------
+// Selective bloom: an emitter hidden behind an opaque wall adds nothing; in front it glows.
+TEST(RenderingBloomPass, OccludedEmittersDoNotGlow)
+{
+  for (const bool inFront : { false, true })
+  {
+    BloomWindow w(160, 120);
+    vtkNew<vtkSphereSource> wallSource;
+    wallSource->SetRadius(3.0);
+    wallSource->SetCenter(0.0, 0.0, inFront ? -6.0 : 0.0);
+    vtkNew<vtkPolyDataMapper> wallMapper;
+    wallMapper->SetInputConnection(wallSource->GetOutputPort());
+    vtkNew<vtkActor> wall;
+    wall->SetMapper(wallMapper);
+    wall->GetProperty()->SetColor(0.2, 0.2, 0.2);
+    vtkNew<vtkSphereSource> lampSource;
+    lampSource->SetRadius(0.5);
+    lampSource->SetCenter(0.0, 0.0, -1.0);
+    vtkNew<vtkPolyDataMapper> lampMapper;
+    lampMapper->SetInputConnection(lampSource->GetOutputPort());
+    vtkNew<vtkActor> lamp;
+    lamp->SetMapper(lampMapper);
+    lamp->GetProperty()->SetAmbient(1.0);
+    lamp->GetProperty()->SetDiffuse(0.0);
+    lamp->GetProperty()->SetAmbientColor(20.0, 10.0, 5.0);
+    w.Renderer->AddActor(wall);
+    w.Renderer->AddActor(lamp);
+    w.Renderer->GetActiveCamera()->SetPosition(0.0, 0.0, 20.0);
+    w.Renderer->GetActiveCamera()->SetFocalPoint(0.0, 0.0, 0.0);
+    w.Bloom->SetPreset("webgpu-market");
+    w.Bloom->AddEmitter(lamp);
+    w.Bloom->SetEmissionSourceToEmitters();
+    w.Bloom->SetFloatPrecisionTo32Bit();
+    w.Bloom->CaptureResultOn();
+    w.Window->Render();
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    vtkNew<vtkImageData> sceneImage, result;
+    ASSERT_TRUE(w.Bloom->ReadSceneImage(sceneImage));
+    ASSERT_TRUE(w.Bloom->ReadResultImage(result));
+    const double change = ColourRelativeL2(result, sceneImage);
+    if (inFront)
+    {
+      EXPECT_GT(change, 0.05) << "a visible emitter must glow";
+    }
+    else
+    {
+      EXPECT_EQ(change, 0.0) << "an emitter behind the wall must add nothing";
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// Output alpha is the scene's: a transparent background stays transparent under the glow.
+TEST(RenderingBloomPass, KeepsTheSceneAlpha)
+{
+  BloomWindow w(200, 150);
+  w.Window->SetAlphaBitPlanes(1);
+  ASSERT_TRUE(vtkBloomBuildExampleScene("field-lines", w.Renderer, w.Bloom));
+  w.Renderer->SetBackgroundAlpha(0.0);
+  w.Bloom->CaptureResultOn();
+  w.Window->Render();
+  vtkNew<vtkImageData> sceneImage, result;
+  ASSERT_TRUE(w.Bloom->ReadSceneImage(sceneImage));
+  ASSERT_TRUE(w.Bloom->ReadResultImage(result));
+  vtkIdType transparent = 0;
+  for (vtkIdType p = 0; p < result->GetNumberOfPoints(); ++p)
+  {
+    const double a = sceneImage->GetPointData()->GetScalars()->GetComponent(p, 3);
+    ASSERT_EQ(result->GetPointData()->GetScalars()->GetComponent(p, 3), a) << p;
+    transparent += a == 0.0 ? 1 : 0;
+  }
+  EXPECT_GT(transparent, result->GetNumberOfPoints() / 2) << "the background must be transparent";
+  EXPECT_GT(ColourRelativeL2(result, sceneImage), 0.05);
+}
+
+//------------------------------------------------------------------------------
+// Bloom in linear HDR, then tone mapping: vtkToneMappingPass's delegate is the bloom pass.
+TEST(RenderingBloomPass, ChainsWithToneMapping)
+{
+  double mean[2] = { 0.0, 0.0 };
+  for (const bool bloom : { false, true })
+  {
+    BloomWindow w(240, 160);
+    ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
+    vtkNew<vtkToneMappingPass> toneMapping;
+    toneMapping->SetToneMappingType(vtkToneMappingPass::GenericFilmic);
+    toneMapping->SetGenericFilmicDefaultPresets();
+    toneMapping->SetDelegatePass(w.Bloom);
+    w.Renderer->SetPass(toneMapping);
+    w.Bloom->GetParameters()->SetStrength(bloom ? 1.0 : 0.0);
+    w.Window->Render();
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    vtkNew<vtkUnsignedCharArray> pixels;
+    w.Window->GetPixelData(0, 0, 239, 159, 0, pixels, 0);
+    const vtkIdType n = pixels->GetNumberOfValues();
+    for (vtkIdType i = 0; i < n; ++i)
+    {
+      mean[bloom] += pixels->GetValue(i) / static_cast<double>(n);
+    }
+    EXPECT_GT(w.Bloom->GetNumberOfPasses(), 10);
+  }
+  // Tone mapping compresses highlights, so the glow must still show as added light.
+  EXPECT_GT(mean[1], mean[0] + 1.0);
+  EXPECT_LT(mean[1], 250.0);
+}
+
+//------------------------------------------------------------------------------
+// 1,000 frames with a resize every 50: no GL error, no growth of memory. Every resize remakes
+// about 10 MB of targets, so a leak of any of them over the 16 resizes after the warm-up would
+// exceed the bound many times over.
+TEST(RenderingBloomPass, NoErrorsOrGrowthOverManyFramesWithResizes)
+{
+  BloomWindow w(240, 160);
+  ASSERT_TRUE(vtkBloomBuildExampleScene("field-lines", w.Renderer, w.Bloom));
+  w.Bloom->CaptureResultOn();
+  long rssAfterWarmUp = 0;
+  int passes = 0;
+  for (int frame = 0; frame < 1000; ++frame)
+  {
+    if (frame % 50 == 0)
+    {
+      const int k = (frame / 50) % 4;
+      w.Window->SetSize(240 + 37 * k, 160 + 23 * k);
+    }
+    w.Window->Render();
+    ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << "frame " << frame;
+    if (frame == 199)
+    {
+      rssAfterWarmUp = ResidentKiB();
+      passes = w.Bloom->GetNumberOfPasses();
+    }
+  }
+  EXPECT_EQ(w.Bloom->GetNumberOfPasses(), passes);
+  EXPECT_LT(ResidentKiB() - rssAfterWarmUp, 16 * 1024) << "resident memory grew";
+}
+
+//------------------------------------------------------------------------------
+// Regression images of the three example scenes (8-bit, through vtkTesting's comparison).
+TEST(RenderingBloomPass, RegressionImages)
+{
+  for (const auto& scene : vtkBloomExampleSceneNames())
+  {
+    BloomWindow w(320, 180);
+    ASSERT_TRUE(vtkBloomBuildExampleScene(scene, w.Renderer, w.Bloom));
+    vtkNew<vtkToneMappingPass> toneMapping;
+    toneMapping->SetToneMappingType(vtkToneMappingPass::GenericFilmic);
+    toneMapping->SetGenericFilmicDefaultPresets();
+    toneMapping->SetDelegatePass(w.Bloom);
+    w.Renderer->SetPass(toneMapping);
+    w.Window->Render();
+    const std::string baseline =
+      std::string(VTKBLOOM_BASELINE_DIR) + "/TestBloomPass_" + scene + ".png";
+    vtkNew<vtkTesting> testing;
+    testing->AddArgument("-V");
+    testing->AddArgument(baseline.c_str());
+    testing->AddArgument("-T");
+    testing->AddArgument(vtkBloomTest::OutputDirectory().c_str());
+    testing->SetRenderWindow(w.Window);
+    EXPECT_EQ(testing->RegressionTest(15.0), vtkTesting::PASSED) << scene << " vs " << baseline;
   }
 }
