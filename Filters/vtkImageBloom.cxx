@@ -1,5 +1,6 @@
 #include "vtkImageBloom.h"
 
+#include "vtkBloomFastChain.h"
 #include "vtkBloomImageOps.h"
 #include "vtkBloomKernels.h"
 #include "vtkBloomStatistics.h"
@@ -120,11 +121,54 @@ vtkImageBloom::vtkImageBloom()
   this->Tint[0] = this->Tint[1] = this->Tint[2] = 1.0;
   this->ComputeStatistics = true;
   this->SanitizeNonFinite = true;
+  this->ExecutionMode = FAST;
+  this->SkipEmptyBloom = true;
+  this->SkipDisabledEffects = true;
+  this->TrimPyramid = true;
+  this->RestrictToBrightRegion = true;
+  this->LastRunWasFast = false;
+  this->LastBloomSkipped = false;
+  this->LastPassedThrough = false;
+  this->LastLevelsBuilt = 0;
+  this->LastWorkspaceBytes = 0;
+  this->FastChain = new vtkBloomFastChain;
   this->ResetStatistics();
 }
 
 //------------------------------------------------------------------------------
-vtkImageBloom::~vtkImageBloom() = default;
+vtkImageBloom::~vtkImageBloom()
+{
+  delete this->FastChain;
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::ReleaseWorkspace()
+{
+  this->FastChain->ReleaseWorkspace();
+  this->LastWorkspaceBytes = 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkImageBloom::BloomIsDisabled(int colours, size_t levels) const
+{
+  double tint[3] = { this->Tint[0], this->Tint[1], this->Tint[2] };
+  if (colours == 1)
+  {
+    tint[0] = vtkBloomKernels::LuminanceR * tint[0] + vtkBloomKernels::LuminanceG * tint[1] +
+      vtkBloomKernels::LuminanceB * tint[2];
+  }
+  bool zeroTerm = true;
+  for (int c = 0; c < colours; ++c)
+  {
+    zeroTerm &= this->Strength * tint[c] == 0.0;
+  }
+  bool zeroWeights = true;
+  for (size_t i = 0; i < levels; ++i)
+  {
+    zeroWeights &= this->GetLevelWeight(static_cast<int>(i)) == 0.0;
+  }
+  return zeroTerm || zeroWeights;
+}
 
 //------------------------------------------------------------------------------
 std::vector<std::string> vtkImageBloom::GetPresetNames()
@@ -410,8 +454,60 @@ int vtkImageBloom::RequestData(
     return 0;
   }
 
-  this->AllocateOutputData(output, outInfo);
+  this->LastRunWasFast = false;
+  this->LastBloomSkipped = false;
+  this->LastPassedThrough = false;
+  this->LastLevelsBuilt = -1;
   const int colours = nc >= 3 ? 3 : 1;
+  if (this->ExecutionMode == FAST)
+  {
+    vtkBloomFastChainParameters p;
+    p.ThresholdMode = this->ThresholdMode;
+    p.Threshold = this->Threshold;
+    p.Knee = this->Knee;
+    p.ClampLuminance = this->ClampLuminance;
+    p.StartLevel = this->StartLevel;
+    p.LevelSizes = this->ComputeLevelSizes(width, height);
+    for (size_t i = 0; i < p.LevelSizes.size(); ++i)
+    {
+      p.LevelWeights.push_back(this->GetLevelWeight(static_cast<int>(i)));
+    }
+    p.DownsampleKernel = this->DownsampleKernel;
+    p.KarisAverage = this->KarisAverage;
+    p.BlurHalfKernel = this->GetEffectiveBlurHalfKernel();
+    p.BlurTapSpacing = this->BlurTapSpacing;
+    p.BlurIterations = this->BlurIterations;
+    p.UpsampleKernel = this->UpsampleKernel;
+    p.AccumulateMode = this->AccumulateMode;
+    p.CompositeMode = this->CompositeMode;
+    p.Strength = this->Strength;
+    std::copy(this->Tint, this->Tint + 3, p.Tint);
+    p.SanitizeNonFinite = this->SanitizeNonFinite;
+    p.SkipEmpty = this->SkipEmptyBloom;
+    p.TrimPyramid = this->TrimPyramid;
+    p.RestrictToBrightRegion = this->RestrictToBrightRegion;
+    p.SkipDisabled = this->SkipDisabledEffects;
+    if (vtkBloomFastChain::Supports(p, input))
+    {
+      int outExt[6];
+      std::copy(inExt, inExt + 6, outExt);
+      if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+      {
+        outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
+      }
+      vtkBloomFastChainReport report;
+      this->FastChain->Execute(p, input, outExt, output, report, this);
+      this->LastRunWasFast = true;
+      this->LastBloomSkipped = report.ChainSkipped;
+      this->LastPassedThrough = report.PassedThrough;
+      this->LastLevelsBuilt = report.LevelsBuilt;
+      this->LastWorkspaceBytes = static_cast<vtkIdType>(report.WorkspaceBytes);
+      this->ComputeOutputStatistics(input, output, static_cast<int>(p.LevelSizes.size()));
+      this->UpdateProgress(1.0);
+      return 1;
+    }
+  }
+  this->AllocateOutputData(output, outInfo);
 
   // 1. Bright pass at the start level: bilinear fetch first, threshold second.
   vtkBloomBuffer source;
@@ -423,10 +519,11 @@ int vtkImageBloom::RequestData(
   }
   this->UpdateProgress(0.05);
   const auto sizes = this->ComputeLevelSizes(width, height);
-  if (sizes.empty())
+  if (sizes.empty() || (this->SkipDisabledEffects && this->BloomIsDisabled(colours, sizes.size())))
   {
     // No level fits (LimitLevelsToImageSize with a start level beyond the mip chain): there
     // is nothing to bloom, and the composite sees a black bloom image.
+    this->LastBloomSkipped = !sizes.empty();
     this->Composite(input, nullptr, output);
     this->ComputeOutputStatistics(input, output, 0);
     this->UpdateProgress(1.0);
@@ -469,6 +566,16 @@ int vtkImageBloom::RequestData(
           vtkImageBloomThreshold::BrightPass(colour, colours, mode, t, knee, clampLum);
         }
       });
+  }
+  if (this->SkipEmptyBloom &&
+    std::all_of(levels[0].Data.begin(), levels[0].Data.end(), [](double v) { return v == 0.0; }))
+  {
+    // Nothing is bright: every level, and so the bloom, is zero.
+    this->LastBloomSkipped = true;
+    this->Composite(input, nullptr, output);
+    this->ComputeOutputStatistics(input, output, static_cast<int>(sizes.size()));
+    this->UpdateProgress(1.0);
+    return 1;
   }
   this->UpdateProgress(0.15);
 
@@ -672,7 +779,9 @@ void vtkImageBloom::Composite(
     double* v = piece.Data.data() + p * nc;
     for (int c = 0; c < colours; ++c)
     {
-      v[c] = keep * v[c] + (b ? s * tint[c] * b[c] : 0.0);
+      // "+ 0.0" makes a zero bloom term +0 whatever the sign of the zero, so skipping a zero
+      // bloom gives the same bits as computing it.
+      v[c] = keep * v[c] + (s * tint[c] * (b ? b[c] : 0.0) + 0.0);
       if (this->SanitizeNonFinite)
       {
         // Clamp to the output type's finite range; NaN (only an overflow makes one) becomes 0.
@@ -727,6 +836,12 @@ void vtkImageBloom::PrintSelf(ostream& os, vtkIndent indent)
      << ")\n";
   os << indent << "ComputeStatistics: " << (this->ComputeStatistics ? "On" : "Off") << "\n";
   os << indent << "SanitizeNonFinite: " << (this->SanitizeNonFinite ? "On" : "Off") << "\n";
+  os << indent << "ExecutionMode: " << (this->ExecutionMode == FAST ? "Fast" : "Reference") << "\n";
+  os << indent << "SkipEmptyBloom: " << (this->SkipEmptyBloom ? "On" : "Off") << "\n";
+  os << indent << "SkipDisabledEffects: " << (this->SkipDisabledEffects ? "On" : "Off") << "\n";
+  os << indent << "TrimPyramid: " << (this->TrimPyramid ? "On" : "Off") << "\n";
+  os << indent << "RestrictToBrightRegion: " << (this->RestrictToBrightRegion ? "On" : "Off")
+     << "\n";
   os << indent << "EnergyIn: " << this->EnergyIn << "\n";
   os << indent << "EnergyOut: " << this->EnergyOut << "\n";
   os << indent << "NumberOfBrightPixels: " << this->NumberOfBrightPixels << "\n";

@@ -1,0 +1,116 @@
+/**
+ * @file    vtkBloomFastChain.h
+ * @brief   Internal: the fused, content-aware float32 bloom chain vtkImageBloom runs by default.
+ *
+ * Not installed and not part of the public API. It computes the chain vtkImageBloom documents
+ * (same operators, taken from vtkBloomLinearOperator, vtkBloomKernels and
+ * vtkBloomDownsampleTerms) in float32 arithmetic, in few passes over the full-resolution data:
+ *
+ * 1. Bright pass: one read of the input. The bilinear fetch to the start level and the
+ *    threshold are fused per output row; the pass also finds the bounding box of the non-zero
+ *    bright samples and whether the input holds -0, NaN or Inf (for the pass-through below).
+ * 2. Pyramid: each level from the level above, over the region its support can reach.
+ * 3. Blur fused with the upsample-accumulate: acc_i = up(acc_{i+1}) + w_i blur(level_i), one
+ *    output row at a time (CASCADE); DIRECT blurs each level in place.
+ * 4. Composite fused with the last upsample: each output row interpolates its bloom row from
+ *    acc_0 (CASCADE) or from every weighted level (DIRECT) and writes
+ *    keep * in + (S t bloom + 0). Adding +0 makes every zero bloom term +0, so the result does
+ *    not depend on the sign of a zero bloom and the content-aware skips are exact.
+ * Rows are threaded with vtkSMPTools; every output sample is computed by the same expression
+ * whatever the threading and the regions, so the output is deterministic.
+ *
+ * Content-aware work (each can be switched off; the output is bit-identical either way):
+ * - SkipEmpty: nothing non-zero after the bright pass means a zero bloom: no pyramid, and the
+ *   input scalars are passed through (shared, not copied) when keep = 1 and the input has no
+ *   -0, NaN or (with sanitizing) Inf, which are the only samples "in + 0" would change.
+ * - TrimPyramid: trailing levels of weight 0 are not built (they only add zeros).
+ * - RestrictToBrightRegion: every step computes only the region its operators can reach from
+ *   the bounding box of the bright samples; outside, samples are zero and the composite is
+ *   keep * in + 0.
+ * - SkipDisabled: Strength 0, a black tint or all weights 0 skip the whole chain.
+ * Double input, Karis averaging and 3-D (multi-slice) inputs are not handled (Supports()
+ * returns false) and vtkImageBloom runs its double-precision reference for them.
+ */
+
+#ifndef vtkBloomFastChain_h
+#define vtkBloomFastChain_h
+
+#include "vtkSmartPointer.h" // For the recycled output array
+
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+class vtkAlgorithm;
+class vtkDataArray;
+class vtkImageData;
+
+/// Everything the chain needs, as vtkImageBloom's parameters say it.
+struct vtkBloomFastChainParameters
+{
+  int ThresholdMode = 0;
+  double Threshold = 1.0;
+  double Knee = 0.5;
+  double ClampLuminance = 0.0;
+  int StartLevel = 1;
+  std::vector<std::pair<int, int>> LevelSizes; ///< vtkImageBloom::ComputeLevelSizes
+  std::vector<double> LevelWeights;            ///< one per level
+  int DownsampleKernel = 0;
+  bool KarisAverage = false;
+  std::vector<double> BlurHalfKernel; ///< effective half kernel
+  double BlurTapSpacing = 1.0;
+  int BlurIterations = 1;
+  int UpsampleKernel = 0;
+  int AccumulateMode = 0; ///< vtkImageBloom::CASCADE or DIRECT
+  int CompositeMode = 0;  ///< vtkImageBloom::ADDITIVE or LERP
+  double Strength = 1.0;
+  double Tint[3] = { 1.0, 1.0, 1.0 };
+  bool SanitizeNonFinite = true;
+  bool SkipEmpty = true;
+  bool TrimPyramid = true;
+  bool RestrictToBrightRegion = true;
+  bool SkipDisabled = true;
+};
+
+/// What the last Execute did (for tests and the benchmark).
+struct vtkBloomFastChainReport
+{
+  bool ChainSkipped = false;      ///< zero bloom: no pyramid was built
+  bool PassedThrough = false;     ///< the output shares the input scalars
+  int LevelsBuilt = 0;            ///< pyramid levels computed
+  long long SamplesProcessed = 0; ///< level samples computed (all levels, all steps)
+  size_t WorkspaceBytes = 0;      ///< bytes of intermediate buffers held
+};
+
+class vtkBloomFastChain
+{
+public:
+  vtkBloomFastChain();
+  ~vtkBloomFastChain();
+
+  /**
+   * False for what the fast chain does not handle: double input (which asks for double
+   * precision, so vtkImageBloom runs its reference), Karis average, more than one slice.
+   */
+  static bool Supports(const vtkBloomFastChainParameters& p, vtkImageData* input);
+
+  /**
+   * Run the chain on `input` (float or double, 1-4 components, one slice) and write the output
+   * extent `outExt` of `output` (allocated here, or sharing the input scalars).
+   */
+  void Execute(const vtkBloomFastChainParameters& p, vtkImageData* input, const int outExt[6],
+    vtkImageData* output, vtkBloomFastChainReport& report, vtkAlgorithm* progress);
+
+  /// Free the intermediate buffers and the recycled output array.
+  void ReleaseWorkspace();
+
+  struct Internals;
+
+private:
+  vtkBloomFastChain(const vtkBloomFastChain&) = delete;
+  void operator=(const vtkBloomFastChain&) = delete;
+  Internals* Impl;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkBloomFastChain.h
