@@ -39,7 +39,7 @@ void HotTable(vtkLookupTable* table, double lo, double hi)
     const double r = std::min(1.0, 0.1 + 1.6 * t);
     const double g = std::min(1.0, std::max(0.0, 1.8 * t - 0.45));
     const double b = std::min(1.0, std::max(0.0, 3.0 * t - 2.0) + 0.25 * (1.0 - t));
-    table->SetTableValue(i, r, g, b, 1.0);
+    table->SetTableValue(i, 0.7 * r, 0.7 * g, 0.7 * b, 1.0);
   }
   table->Build();
 }
@@ -85,7 +85,7 @@ void ScalarField(vtkRenderer* renderer, vtkBloomPass* pass)
   vtkImageBloom* p = pass->GetParameters();
   p->SetThresholdMode(vtkImageBloomThreshold::NONE);
   p->SetNumberOfLevels(6);
-  p->SetStrength(0.7);
+  p->SetStrength(1.5);
 
   renderer->SetBackground(0.02, 0.02, 0.03);
   vtkCamera* camera = renderer->GetActiveCamera();
