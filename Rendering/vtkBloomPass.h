@@ -43,6 +43,7 @@
 #ifndef vtkBloomPass_h
 #define vtkBloomPass_h
 
+#include "vtkImageBloom.h" // For GetParameters
 #include "vtkImageProcessingPass.h"
 #include "vtkRenderingBloomModule.h" // For export macro
 #include "vtkSmartPointer.h"         // For the parameters
@@ -50,7 +51,6 @@
 #include <memory> // For the internal state
 
 class vtkActor;
-class vtkImageBloom;
 class vtkImageData;
 class vtkOpenGLRenderWindow;
 class vtkProp;
