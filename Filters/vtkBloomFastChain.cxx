@@ -25,6 +25,14 @@ const int AccumulateDirect = 1; // vtkImageBloom::DIRECT
 const int CompositeLerp = 1;    // vtkImageBloom::LERP
 const float FloatMax = std::numeric_limits<float>::max();
 
+// A sample sanitized: NaN 0, +-Inf the finite extremes of T.
+template <typename T>
+inline T Finite(T v)
+{
+  const T m = std::numeric_limits<T>::max();
+  return v == v ? std::min(std::max(v, -m), m) : T(0);
+}
+
 // A vtkBloomLinearOperator in float, with its translation-invariant interior found once so the
 // x passes can run it as a flat convolution over interleaved samples (which vectorizes).
 struct Op
@@ -418,6 +426,12 @@ inline float Load(T v, bool sanitize)
   return static_cast<float>(d);
 }
 
+template <>
+inline float Load<float>(float v, bool sanitize)
+{
+  return sanitize ? Finite(v) : v;
+}
+
 // True when a sample is -0, NaN or +-Inf: the only values "v + 0" or sanitizing would change.
 inline bool Special(float v)
 {
@@ -571,6 +585,36 @@ struct Source
   Box Region; // non-zero samples of the plane
 };
 
+// One output row: colour = keep * in + term, alpha copied (sanitized when asked).
+template <typename T, int NC, int C>
+void CompositeRow(const T* __restrict src, const float* __restrict term, T keep, bool sanitize,
+  int n, T* __restrict dst)
+{
+  if (sanitize)
+  {
+    for (int x = 0; x < n; ++x)
+    {
+      for (int c = 0; c < NC; ++c)
+      {
+        const T v = Finite(src[x * NC + c]);
+        dst[x * NC + c] =
+          c < C ? Finite(static_cast<T>(keep * v + static_cast<T>(term[x * C + c]))) : v;
+      }
+    }
+  }
+  else
+  {
+    for (int x = 0; x < n; ++x)
+    {
+      for (int c = 0; c < NC; ++c)
+      {
+        const T v = src[x * NC + c];
+        dst[x * NC + c] = c < C ? static_cast<T>(keep * v + static_cast<T>(term[x * C + c])) : v;
+      }
+    }
+  }
+}
+
 // Pass 4: out = keep * in + (S t bloom + 0) over outExt, the bloom row interpolated per row.
 template <typename T, int C>
 void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inExt[6], int nc,
@@ -581,7 +625,6 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
   const int x0 = outExt[0] - inExt[0];
   const T keep = static_cast<T>(p.CompositeMode == CompositeLerp ? 1.0 - p.Strength : 1.0);
   const bool sanitize = p.SanitizeNonFinite;
-  const double m = std::numeric_limits<T>::max();
   // Full-resolution bloom columns and rows each source reaches.
   std::vector<Box> reach(sources.size());
   for (size_t i = 0; i < sources.size(); ++i)
@@ -592,6 +635,11 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
     [&](int begin, int end)
     {
       std::vector<float> bloom(static_cast<size_t>(inW) * C), yrow;
+      std::vector<float> term(static_cast<size_t>(outW) * C), stRow(term.size());
+      for (size_t q = 0; q < stRow.size(); ++q)
+      {
+        stRow[q] = st[q % C];
+      }
       for (int y = begin; y < end; ++y)
       {
         const int j = y - inExt[2];
@@ -625,34 +673,31 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
             }
           }
         }
+        // term = S t clamp(bloom) + 0 over the row (flat, vectorizable), then the composite.
+        const float* b = bloom.data() + static_cast<size_t>(x0) * C;
+        const int n = outW * C;
+        for (int q = 0; q < n; ++q)
+        {
+          float bv = b[q];
+          bv = bv == bv ? std::min(std::max(bv, -FloatMax), FloatMax) : 0.0f;
+          term[q] = stRow[q] * bv + 0.0f;
+        }
         const T* src = in + (static_cast<size_t>(j) * inW + x0) * nc;
         T* dst = out + static_cast<size_t>(y - outExt[2]) * outW * nc;
-        const float* b = bloom.data() + static_cast<size_t>(x0) * C;
-        for (int x = 0; x < outW; ++x)
+        switch (nc)
         {
-          for (int c = 0; c < nc; ++c)
-          {
-            T v = src[x * nc + c];
-            if (sanitize)
-            {
-              v = v == v ? static_cast<T>(std::min(std::max(static_cast<double>(v), -m), m)) : T(0);
-            }
-            if (c < C)
-            {
-              // The bloom is kept finite so that a zero weight gives a zero term; "+ 0" makes
-              // every zero term +0.
-              float bv = b[x * C + c];
-              bv = bv == bv ? std::min(std::max(bv, -FloatMax), FloatMax) : 0.0f;
-              const float term = st[c] * bv + 0.0f;
-              v = keep * v + static_cast<T>(term);
-              if (sanitize)
-              {
-                v =
-                  v == v ? static_cast<T>(std::min(std::max(static_cast<double>(v), -m), m)) : T(0);
-              }
-            }
-            dst[x * nc + c] = v;
-          }
+          case 1:
+            CompositeRow<T, 1, C>(src, term.data(), keep, sanitize, outW, dst);
+            break;
+          case 2:
+            CompositeRow<T, 2, C>(src, term.data(), keep, sanitize, outW, dst);
+            break;
+          case 3:
+            CompositeRow<T, 3, C>(src, term.data(), keep, sanitize, outW, dst);
+            break;
+          default:
+            CompositeRow<T, 4, C>(src, term.data(), keep, sanitize, outW, dst);
+            break;
         }
       }
     });
