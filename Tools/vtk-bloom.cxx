@@ -677,6 +677,8 @@ int RunImage(int argc, char* argv[])
   CommonOptions common;
   TakeCommon(args, common);
   vtkNew<vtkImageBloom> bloom;
+  // Files are processed once: the exact double-precision chain, bit for bit PRESETS.md's.
+  bloom->SetExecutionModeToReference();
   bloom->SetPreset("webgpu-market");
   ApplyImageOptions(args, bloom);
   return RunFilter(args, common, bloom, "image", false);
