@@ -722,6 +722,19 @@ int vtkImageSeparableGaussian::RequestData(
   int result = 1;
   if (this->Method == EXACT)
   {
+    // Every piece repeats the x pass over the rows its y support needs, so the default pieces of
+    // 64 KiB (a few rows) would redo it about 2R / rows times: cut slabs, about four per thread.
+    int updateExtent[6];
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), updateExtent);
+    vtkIdType bytes =
+      static_cast<vtkIdType>(input->GetNumberOfScalarComponents()) * input->GetScalarSize();
+    for (int a = 0; a < 3; ++a)
+    {
+      bytes *= std::max(updateExtent[2 * a + 1] - updateExtent[2 * a] + 1, 1);
+    }
+    const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+    this->SplitMode = SLAB;
+    this->DesiredBytesPerPiece = std::max<vtkIdType>(65536, bytes / (4 * threads));
     result = this->Superclass::RequestData(request, inputVector, outputVector);
   }
   else
