@@ -6,3 +6,6 @@ vtkbloom_add_gtest(TestCommandLine
 target_compile_definitions(TestCommandLine PRIVATE
   VTKBLOOM_TOOL="$<TARGET_FILE:vtk-bloom>")
 add_dependencies(TestCommandLine vtk-bloom)
+if (VTKBLOOM_ENABLE_RENDERING)
+  target_compile_definitions(TestCommandLine PRIVATE VTKBLOOM_HAS_RENDERING)
+endif ()

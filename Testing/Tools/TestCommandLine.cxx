@@ -274,3 +274,46 @@ TEST(CommandLine, EveryDamagedFileFailsCleanly)
   }
   EXPECT_EQ(files, 145);
 }
+
+#ifdef VTKBLOOM_HAS_RENDERING
+//------------------------------------------------------------------------------
+// `render`: the scene list, usage errors, and a headless render whose bloom adds light.
+TEST(CommandLine, RenderListsAndRendersTheExampleScenes)
+{
+  const std::string list = vtkBloomTest::OutputPath("render-list.txt");
+  ASSERT_EQ(std::system((std::string(VTKBLOOM_TOOL) + " render --list >" + list).c_str()), 0);
+  std::ifstream in(list);
+  std::vector<std::string> names;
+  for (std::string line; std::getline(in, line);)
+  {
+    names.push_back(line);
+  }
+  ASSERT_EQ(names.size(), 3u);
+  EXPECT_EQ(names[0], "scalar-field");
+
+  const std::string before = vtkBloomTest::OutputPath("render-before.exr");
+  const std::string after = vtkBloomTest::OutputPath("render-after.exr");
+  EXPECT_EQ(RunTool("render nope " + Quote(after)), 2);
+  EXPECT_EQ(RunTool("render --size 0x10 lit-spheres " + Quote(after)), 2);
+  EXPECT_EQ(RunTool("render lit-spheres out.tiff"), 2);
+  EXPECT_FALSE(fs::exists(after));
+  ASSERT_EQ(RunTool("render --quiet --size 96x64 --no-bloom lit-spheres " + Quote(before)), 0);
+  ASSERT_EQ(RunTool("render --quiet --size 96x64 lit-spheres " + Quote(after)), 0);
+  const Pixels a = ReadEXR(before), b = ReadEXR(after);
+  ASSERT_EQ(a.Width, 96);
+  ASSERT_EQ(b.Height, 64);
+  double sumBefore = 0.0, sumAfter = 0.0, peak = 0.0;
+  for (size_t i = 0; i < a.Rgba.size(); ++i)
+  {
+    ASSERT_TRUE(std::isfinite(b.Rgba[i]));
+    if (i % 4 != 3)
+    {
+      sumBefore += a.Rgba[i];
+      sumAfter += b.Rgba[i];
+      peak = std::max(peak, static_cast<double>(a.Rgba[i]));
+    }
+  }
+  EXPECT_GT(peak, 1.5) << "the render is not HDR";
+  EXPECT_GT(sumAfter, sumBefore * 1.01) << "the bloom added no light";
+}
+#endif
