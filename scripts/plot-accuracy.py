@@ -46,7 +46,7 @@ def main():
         chart.GetAxis(axis).SetLogScale(True)
         chart.GetAxis(axis).SetTitle(title)
     for index, (name, points) in enumerate(curves.items()):
-        points.sort()
+        # Points stay in sigma (or level) order, so a curve runs from narrow to wide.
         table = vtkTable()
         x = vtkFloatArray()
         x.SetName("time " + name)
