@@ -7,7 +7,7 @@ endif ()
 
 set(vtkbloom_rendering_baselines "${CMAKE_CURRENT_LIST_DIR}/Data/Baseline")
 
-vtkbloom_add_gtest(TestBloomPass
+vtkbloom_add_gtest(TestBloomPass OPENGL
   SOURCES Rendering/TestBloomPass.cxx
   LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom VTKBloom::IOOpenEXR
     VTK::TestingRendering

@@ -1,6 +1,6 @@
 # End-to-end tests of the vtk-bloom command-line tool, run exactly as users call it.
 find_package(OpenEXR 3 REQUIRED)
-vtkbloom_add_gtest(TestCommandLine
+vtkbloom_add_gtest(TestCommandLine OPENGL
   SOURCES Tools/TestCommandLine.cxx
   LIBRARIES OpenEXR::OpenEXR VTK::IOImage)
 target_compile_definitions(TestCommandLine PRIVATE
