@@ -1,6 +1,7 @@
 #include "vtkBloomFastChain.h"
 
 #include "vtkAlgorithm.h"
+#include "vtkBloomBrightPass.h"
 #include "vtkBloomImageOps.h"
 #include "vtkBloomKernels.h"
 #include "vtkBloomLinearOperator.h"
@@ -320,86 +321,6 @@ void Separable(const Plane& src, const Op& ox, const Op& oy, const Box& box, flo
     });
 }
 
-double Smoothstep(double edge0, double edge1, double x)
-{
-  const double t = std::min(std::max((x - edge0) / (edge1 - edge0), 0.0), 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
-// vtkImageBloomThreshold::BrightPass, inlined, with vtkImageBloom's mapping of non-finite
-// colours in mode NONE too.
-template <int C>
-inline void Bright(
-  double* colour, int mode, double threshold, double knee, double clampLum, double ceiling)
-{
-  for (int c = 0; c < C; ++c)
-  {
-    if (std::isnan(colour[c]))
-    {
-      colour[c] = 0.0;
-    }
-    else if (std::isinf(colour[c]))
-    {
-      colour[c] = colour[c] > 0.0 ? ceiling : 0.0;
-    }
-  }
-  if (mode == vtkImageBloomThreshold::NONE)
-  {
-    return;
-  }
-  auto luminance = [&]()
-  {
-    return C == 3 ? vtkBloomKernels::LuminanceR * colour[0] +
-        vtkBloomKernels::LuminanceG * colour[1] + vtkBloomKernels::LuminanceB * colour[2]
-                  : colour[0];
-  };
-  double lum = luminance();
-  if (lum > clampLum)
-  {
-    const double scale = clampLum / lum;
-    for (int c = 0; c < C; ++c)
-    {
-      colour[c] *= scale;
-    }
-    lum = luminance();
-  }
-  const double k = threshold * knee;
-  double factor = 1.0;
-  switch (mode)
-  {
-    case vtkImageBloomThreshold::SMOOTHSTEP_KNEE:
-      factor = k > 0.0 ? Smoothstep(threshold - k, threshold + k, lum) : (lum >= threshold ? 1 : 0);
-      break;
-    case vtkImageBloomThreshold::QUADRATIC_KNEE:
-    {
-      double brightness = colour[0];
-      for (int c = 1; c < C; ++c)
-      {
-        brightness = std::max(brightness, colour[c]);
-      }
-      double q = std::min(std::max(brightness - threshold + k, 0.0), 2.0 * k);
-      q = q * q / (4.0 * k + 1e-5);
-      factor = std::max(q, brightness - threshold) / std::max(brightness, 1e-5);
-      break;
-    }
-    case vtkImageBloomThreshold::HARD_LUMINANCE:
-      factor = lum > threshold ? 1.0 : 0.0;
-      break;
-    case vtkImageBloomThreshold::PER_CHANNEL:
-      for (int c = 0; c < C; ++c)
-      {
-        colour[c] = std::max(colour[c] - threshold, 0.0);
-      }
-      return;
-    default:
-      break;
-  }
-  for (int c = 0; c < C; ++c)
-  {
-    colour[c] = std::max(colour[c] * factor, 0.0);
-  }
-}
-
 // An input sample as the chain reads it: sanitized (NaN 0, +-Inf +-max) when asked, and in
 // float range.
 template <typename T>
@@ -518,7 +439,8 @@ BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int
           {
             colour[c] = acc[x * C + c];
           }
-          Bright<C>(colour, p.ThresholdMode, p.Threshold, p.Knee, p.ClampLuminance, ceiling);
+          vtkBloomMapNonFinite<C>(colour, ceiling);
+          vtkBloomBrightPass<C>(colour, p.ThresholdMode, p.Threshold, p.Knee, p.ClampLuminance);
           bool nonzero = false;
           for (int c = 0; c < C; ++c)
           {

@@ -1,5 +1,7 @@
 #include "vtkImageBloom.h"
 
+#include "vtkBloomBrightPass.h"
+#include "vtkBloomChain.h"
 #include "vtkBloomFastChain.h"
 #include "vtkBloomImageOps.h"
 #include "vtkBloomKernels.h"
@@ -30,7 +32,6 @@ vtkStandardNewMacro(vtkImageBloom);
 
 namespace
 {
-const int Clamp = vtkBloomLinearOperator::BORDER_CLAMP;
 
 // The largest finite value of a float or double scalar type.
 double FiniteMaximum(int scalarType)
@@ -71,27 +72,22 @@ void Resample2D(const vtkBloomBuffer& in, const vtkBloomLinearOperator& rx,
   vtkBloomApplySeparable(in, ops, lo, size, out, true);
 }
 
-// One level of the downsample chain, with the same terms as vtkImagePyramidDown.
-void Downsample(
-  const vtkBloomBuffer& in, int kernel, bool karis, int outW, int outH, vtkBloomBuffer& out)
+// One level of the downsample chain: the chain's terms, combined (Karis-weighted or not).
+void Downsample(const vtkBloomBuffer& in, const vtkBloomChain::Level& level, vtkBloomBuffer& out)
 {
-  const int inSize[2] = { in.Size[0], in.Size[1] };
-  const int outSize[2] = { outW, outH };
-  const auto terms = vtkBloomDownsampleTerms(kernel, karis, inSize, outSize);
-  std::vector<vtkBloomBuffer> results(terms.size());
+  std::vector<vtkBloomBuffer> results(level.Down.size());
   std::vector<double> weights;
-  for (size_t t = 0; t < terms.size(); ++t)
+  for (size_t t = 0; t < level.Down.size(); ++t)
   {
-    Resample2D(in, terms[t].X, terms[t].Y, results[t]);
-    weights.push_back(terms[t].Weight);
+    Resample2D(in, level.Down[t].X, level.Down[t].Y, results[t]);
+    weights.push_back(level.Down[t].Weight);
   }
-  if (terms.size() == 1 && weights[0] == 1.0)
+  if (results.size() == 1 && weights[0] == 1.0)
   {
     out = std::move(results[0]);
     return;
   }
-  vtkBloomCombineTerms(
-    results, weights, karis && kernel == vtkImagePyramidDown::JIMENEZ13, out, true);
+  vtkBloomCombineTerms(results, weights, level.Karis, out, true);
 }
 }
 
@@ -529,23 +525,25 @@ int vtkImageBloom::RequestData(
     this->UpdateProgress(1.0);
     return 1;
   }
-  std::vector<vtkBloomBuffer> levels(sizes.size());
-  if (this->StartLevel == 0)
+  // The operators of every step, shared with vtkBloomPass.
+  vtkBloomChain chain;
+  chain.Build(this, width, height);
+  const size_t n = chain.Levels.size();
+  std::vector<vtkBloomBuffer> levels(n);
+  if (chain.SourceIsIdentity)
   {
     levels[0] = source;
   }
   else
   {
-    const auto bilinear = vtkBloomKernels::BilinearTaps();
-    Resample2D(source, vtkBloomLinearOperator::Resample(width, sizes[0].first, bilinear, Clamp),
-      vtkBloomLinearOperator::Resample(height, sizes[0].second, bilinear, Clamp), levels[0]);
+    Resample2D(source, chain.Source.X, chain.Source.Y, levels[0]);
   }
   {
     vtkBloomBuffer& bright = levels[0];
     const int mode = this->ThresholdMode;
     const double t = this->Threshold, knee = this->Knee, clampLum = this->ClampLuminance;
-    // BrightPass maps non-finite colours in every mode but NONE; do the same for NONE, so that
-    // nothing non-finite ever enters the pyramid (a no-op on finite samples).
+    // The chain maps non-finite colours in every mode, NONE included, so that nothing
+    // non-finite ever enters the pyramid (a no-op on finite samples).
     const double ceiling = std::min(clampLum, static_cast<double>(VTK_FLOAT_MAX));
     vtkSMPTools::For(0, static_cast<vtkIdType>(bright.GetNumberOfSamples()),
       [&](vtkIdType begin, vtkIdType end)
@@ -553,17 +551,16 @@ int vtkImageBloom::RequestData(
         for (vtkIdType s = begin; s < end; ++s)
         {
           double* colour = bright.Data.data() + s * colours;
-          if (mode == vtkImageBloomThreshold::NONE)
+          if (colours == 3)
           {
-            for (int c = 0; c < colours; ++c)
-            {
-              if (!std::isfinite(colour[c]))
-              {
-                colour[c] = colour[c] > 0.0 ? ceiling : 0.0;
-              }
-            }
+            vtkBloomMapNonFinite<3>(colour, ceiling);
+            vtkBloomBrightPass<3>(colour, mode, t, knee, clampLum);
           }
-          vtkImageBloomThreshold::BrightPass(colour, colours, mode, t, knee, clampLum);
+          else
+          {
+            vtkBloomMapNonFinite<1>(colour, ceiling);
+            vtkBloomBrightPass<1>(colour, mode, t, knee, clampLum);
+          }
         }
       });
   }
@@ -580,36 +577,23 @@ int vtkImageBloom::RequestData(
   this->UpdateProgress(0.15);
 
   // 2. The pyramid, each level from the unblurred level above it.
-  for (size_t i = 1; i < levels.size() && !this->AbortExecute; ++i)
+  for (size_t i = 1; i < n && !this->AbortExecute; ++i)
   {
-    Downsample(levels[i - 1], this->DownsampleKernel, this->KarisAverage && i == 1, sizes[i].first,
-      sizes[i].second, levels[i]);
+    Downsample(levels[i - 1], chain.Levels[i], levels[i]);
   }
   this->UpdateProgress(0.35);
 
   // 3. Blur each level that contributes; repeated passes are folded into one operator.
-  const auto taps =
-    vtkBloomKernels::SymmetricTaps(this->GetEffectiveBlurHalfKernel(), this->BlurTapSpacing);
-  for (size_t i = 0; i < levels.size() && !this->AbortExecute; ++i)
+  for (size_t i = 0; i < n && !this->AbortExecute; ++i)
   {
-    if (this->GetLevelWeight(static_cast<int>(i)) == 0.0 || this->BlurIterations == 0)
+    const vtkBloomChain::Level& level = chain.Levels[i];
+    if (level.Blur)
     {
-      continue;
+      vtkBloomBuffer blurred;
+      Resample2D(levels[i], level.BlurPass.X, level.BlurPass.Y, blurred);
+      levels[i] = std::move(blurred);
     }
-    auto blurAxis = [&](int n)
-    {
-      const vtkBloomLinearOperator once = vtkBloomLinearOperator::Convolve(n, taps, Clamp);
-      vtkBloomLinearOperator result = once;
-      for (int it = 1; it < this->BlurIterations; ++it)
-      {
-        result = once.Compose(result);
-      }
-      return result;
-    };
-    vtkBloomBuffer blurred;
-    Resample2D(levels[i], blurAxis(sizes[i].first), blurAxis(sizes[i].second), blurred);
-    levels[i] = std::move(blurred);
-    this->UpdateProgress(0.35 + 0.35 * (i + 1) / levels.size());
+    this->UpdateProgress(0.35 + 0.35 * (i + 1) / n);
   }
   if (this->AbortExecute)
   {
@@ -617,67 +601,52 @@ int vtkImageBloom::RequestData(
   }
 
   // 4. Accumulate into a full-resolution bloom image.
-  const auto bilinear = vtkBloomKernels::BilinearTaps();
-  auto toFull = [&](const vtkBloomBuffer& level, vtkBloomBuffer& full)
-  {
-    Resample2D(level, vtkBloomLinearOperator::Resample(level.Size[0], width, bilinear, Clamp),
-      vtkBloomLinearOperator::Resample(level.Size[1], height, bilinear, Clamp), full);
-  };
-  auto scale = [](vtkBloomBuffer& b, double w)
-  {
-    if (w != 1.0)
-    {
-      for (double& v : b.Data)
-      {
-        v *= w;
-      }
-    }
-  };
   vtkBloomBuffer bloom;
-  if (this->AccumulateMode == DIRECT)
+  if (chain.AccumulateMode == DIRECT)
   {
     int lo[3] = { 0, 0, 0 };
     int size[3] = { width, height, source.Size[2] };
     bloom.Allocate(lo, size, colours);
-    for (size_t i = 0; i < levels.size(); ++i)
+    for (size_t i = 0; i < n; ++i)
     {
-      const double w = this->GetLevelWeight(static_cast<int>(i));
-      if (w == 0.0)
+      const vtkBloomChain::Level& level = chain.Levels[i];
+      if (level.Weight != 0.0)
       {
-        continue;
+        vtkBloomBuffer full;
+        Resample2D(levels[i], level.Full.X, level.Full.Y, full);
+        vtkBloomAddScaled(full, level.Weight, bloom);
       }
-      vtkBloomBuffer full;
-      toFull(levels[i], full);
-      vtkBloomAddScaled(full, w, bloom);
     }
   }
   else
   {
-    const auto up = this->UpsampleKernel == vtkImagePyramidUp::BILINEAR
-      ? vtkBloomKernels::BilinearTaps()
-      : vtkBloomKernels::TentTaps();
-    const size_t last = levels.size() - 1;
+    const size_t last = n - 1;
     vtkBloomBuffer acc = std::move(levels[last]);
-    scale(acc, this->GetLevelWeight(static_cast<int>(last)));
+    if (chain.Levels[last].Weight != 1.0)
+    {
+      for (double& v : acc.Data)
+      {
+        v *= chain.Levels[last].Weight;
+      }
+    }
     for (size_t i = last; i-- > 0;)
     {
+      const vtkBloomChain::Level& level = chain.Levels[i];
       vtkBloomBuffer upsampled;
-      Resample2D(acc, vtkBloomLinearOperator::Resample(acc.Size[0], sizes[i].first, up, Clamp),
-        vtkBloomLinearOperator::Resample(acc.Size[1], sizes[i].second, up, Clamp), upsampled);
-      const double w = this->GetLevelWeight(static_cast<int>(i));
-      if (w != 0.0)
+      Resample2D(acc, level.Up.X, level.Up.Y, upsampled);
+      if (level.Weight != 0.0)
       {
-        vtkBloomAddScaled(levels[i], w, upsampled);
+        vtkBloomAddScaled(levels[i], level.Weight, upsampled);
       }
       acc = std::move(upsampled);
     }
-    if (this->StartLevel == 0)
+    if (chain.FinalIsIdentity)
     {
       bloom = std::move(acc);
     }
     else
     {
-      toFull(acc, bloom);
+      Resample2D(acc, chain.Final.X, chain.Final.Y, bloom);
     }
   }
   levels.clear();

@@ -1,6 +1,6 @@
 #include "vtkImageBloomThreshold.h"
 
-#include "vtkBloomKernels.h"
+#include "vtkBloomBrightPass.h"
 #include "vtkImageData.h"
 #include "vtkImageSeparableAlgorithm.h"
 #include "vtkInformation.h"
@@ -15,12 +15,6 @@ vtkStandardNewMacro(vtkImageBloomThreshold);
 
 namespace
 {
-double Smoothstep(double edge0, double edge1, double x)
-{
-  const double t = std::min(std::max((x - edge0) / (edge1 - edge0), 0.0), 1.0);
-  return t * t * (3.0 - 2.0 * t);
-}
-
 template <typename T>
 void vtkImageBloomThresholdExecute(vtkImageBloomThreshold* self, vtkImageData* inData,
   vtkImageData* outData, const int outExt[6], int threadId)
@@ -107,75 +101,20 @@ const char* vtkImageBloomThreshold::GetModeName(int mode)
 void vtkImageBloomThreshold::BrightPass(
   double* colour, int n, int mode, double threshold, double knee, double clampLuminance)
 {
-  if (mode == NONE)
+  switch (n)
   {
-    return;
-  }
-  const double ceiling = std::min(clampLuminance, static_cast<double>(VTK_FLOAT_MAX));
-  for (int c = 0; c < n; ++c)
-  {
-    if (std::isnan(colour[c]))
-    {
-      colour[c] = 0.0;
-    }
-    else if (std::isinf(colour[c]))
-    {
-      colour[c] = colour[c] > 0.0 ? ceiling : 0.0;
-    }
-  }
-  auto luminance = [&]()
-  {
-    return n == 3 ? vtkBloomKernels::LuminanceR * colour[0] +
-        vtkBloomKernels::LuminanceG * colour[1] + vtkBloomKernels::LuminanceB * colour[2]
-                  : colour[0];
-  };
-
-  // Firefly guard: scale the colour so its luminance does not exceed the clamp.
-  double lum = luminance();
-  if (lum > clampLuminance)
-  {
-    const double scale = clampLuminance / lum;
-    for (int c = 0; c < n; ++c)
-    {
-      colour[c] *= scale;
-    }
-    lum = luminance();
-  }
-
-  const double k = threshold * knee;
-  double factor = 1.0;
-  switch (mode)
-  {
-    case SMOOTHSTEP_KNEE:
-      factor = k > 0.0 ? Smoothstep(threshold - k, threshold + k, lum) : (lum >= threshold ? 1 : 0);
+    case 1:
+      vtkBloomBrightPass<1>(colour, mode, threshold, knee, clampLuminance);
       break;
-    case QUADRATIC_KNEE:
-    {
-      double brightness = colour[0];
-      for (int c = 1; c < n; ++c)
-      {
-        brightness = std::max(brightness, colour[c]);
-      }
-      double q = std::min(std::max(brightness - threshold + k, 0.0), 2.0 * k);
-      q = q * q / (4.0 * k + 1e-5);
-      factor = std::max(q, brightness - threshold) / std::max(brightness, 1e-5);
+    case 2:
+      vtkBloomBrightPass<2>(colour, mode, threshold, knee, clampLuminance);
       break;
-    }
-    case HARD_LUMINANCE:
-      factor = lum > threshold ? 1.0 : 0.0;
+    case 3:
+      vtkBloomBrightPass<3>(colour, mode, threshold, knee, clampLuminance);
       break;
-    case PER_CHANNEL:
-      for (int c = 0; c < n; ++c)
-      {
-        colour[c] = std::max(colour[c] - threshold, 0.0);
-      }
-      return;
     default:
+      vtkBloomBrightPass<4>(colour, mode, threshold, knee, clampLuminance);
       break;
-  }
-  for (int c = 0; c < n; ++c)
-  {
-    colour[c] = std::max(colour[c] * factor, 0.0);
   }
 }
 

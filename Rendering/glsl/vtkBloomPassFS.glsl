@@ -56,12 +56,10 @@ vec4 fetchSource(ivec2 q)
   return value;
 }
 
+// vtkBloomBrightPass.h: non-finite colours are mapped in every mode (vtkBloomMapNonFinite),
+// then the threshold (vtkBloomBrightPass).
 vec3 brightPass(vec3 c)
 {
-  if (thresholdMode == MODE_NONE)
-  {
-    return c;
-  }
   for (int i = 0; i < 3; ++i)
   {
     if (isnan(c[i]))
@@ -72,6 +70,10 @@ vec3 brightPass(vec3 c)
     {
       c[i] = c[i] > 0.0 ? ceiling : 0.0;
     }
+  }
+  if (thresholdMode == MODE_NONE)
+  {
+    return c;
   }
   float lum = dot(c, lumaWeights);
   // Firefly guard: scale the colour so that its luminance does not exceed the clamp.

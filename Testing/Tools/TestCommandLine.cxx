@@ -293,6 +293,8 @@ TEST(CommandLine, RenderListsAndRendersTheExampleScenes)
 
   const std::string before = vtkBloomTest::OutputPath("render-before.exr");
   const std::string after = vtkBloomTest::OutputPath("render-after.exr");
+  fs::remove(before);
+  fs::remove(after);
   EXPECT_EQ(RunTool("render nope " + Quote(after)), 2);
   EXPECT_EQ(RunTool("render --size 0x10 lit-spheres " + Quote(after)), 2);
   EXPECT_EQ(RunTool("render lit-spheres out.tiff"), 2);
