@@ -2,6 +2,7 @@
 
 #include "vtkAlgorithm.h"
 #include "vtkBloomBrightPass.h"
+#include "vtkBloomChain.h"
 #include "vtkBloomImageOps.h"
 #include "vtkBloomKernels.h"
 #include "vtkBloomLinearOperator.h"
@@ -9,7 +10,6 @@
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"
 #include "vtkImagePyramidDown.h"
-#include "vtkImagePyramidUp.h"
 #include "vtkPointData.h"
 #include "vtkSMPTools.h"
 
@@ -21,7 +21,6 @@
 
 namespace
 {
-const int Clamp = vtkBloomLinearOperator::BORDER_CLAMP;
 const int AccumulateDirect = 1; // vtkImageBloom::DIRECT
 const int CompositeLerp = 1;    // vtkImageBloom::LERP
 const float FloatMax = std::numeric_limits<float>::max();
@@ -767,11 +766,13 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
     // 1. Bright pass into level 0.
     ws.Levels.resize(std::max<size_t>(ws.Levels.size(), levelsBuilt));
     auto& levels = ws.Levels;
-    const auto bilinear = vtkBloomKernels::BilinearTaps();
     const int w0 = p.LevelSizes[0].first, h0 = p.LevelSizes[0].second;
     levels[0].Resize(w0, h0, C);
-    const Op rx = MakeOp(vtkBloomLinearOperator::Resample(width, w0, bilinear, Clamp));
-    const Op ry = MakeOp(vtkBloomLinearOperator::Resample(height, h0, bilinear, Clamp));
+    const vtkBloomChain& chain = *p.Chain;
+    const Op rx =
+      MakeOp(chain.SourceIsIdentity ? vtkBloomLinearOperator::Identity(width) : chain.Source.X);
+    const Op ry =
+      MakeOp(chain.SourceIsIdentity ? vtkBloomLinearOperator::Identity(height) : chain.Source.Y);
     const bool scan = p.SkipEmpty && keep == 1.0 && whole;
     const BrightResult bright = BrightPass<T, C>(p, in, width, height, nc, rx, ry, scan, levels[0]);
     report.SamplesProcessed += static_cast<long long>(w0) * h0;
@@ -790,11 +791,10 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
       // 2. The pyramid, each level over the region its terms reach.
       for (int i = 1; i < levelsBuilt; ++i)
       {
-        const int inSize[2] = { levels[i - 1].W, levels[i - 1].H };
         const int outSize[2] = { p.LevelSizes[i].first, p.LevelSizes[i].second };
         levels[i].Resize(outSize[0], outSize[1], C);
         std::fill(levels[i].D.begin(), levels[i].D.end(), 0.0f);
-        const auto terms = vtkBloomDownsampleTerms(p.DownsampleKernel, false, inSize, outSize);
+        const auto& terms = chain.Levels[i].Down;
         std::vector<Op> ox, oy;
         Box box;
         for (const auto& t : terms)
@@ -816,35 +816,21 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
       reportProgress(0.4);
 
       // 3. Blur, fused with the upsample-accumulate (CASCADE) or in place (DIRECT).
-      const auto taps = vtkBloomKernels::SymmetricTaps(p.BlurHalfKernel, p.BlurTapSpacing);
-      auto blurOp = [&](int n)
-      {
-        const vtkBloomLinearOperator once = vtkBloomLinearOperator::Convolve(n, taps, Clamp);
-        vtkBloomLinearOperator result = once;
-        for (int it = 1; it < p.BlurIterations; ++it)
-        {
-          result = once.Compose(result);
-        }
-        return MakeOp(result);
-      };
-      const auto upTaps = p.UpsampleKernel == vtkImagePyramidUp::BILINEAR
-        ? vtkBloomKernels::BilinearTaps()
-        : vtkBloomKernels::TentTaps();
       const bool cascade = p.AccumulateMode != AccumulateDirect;
       std::vector<Box> acc(levelsBuilt);
       for (int i = levelsBuilt - 1; i >= 0; --i)
       {
         Plane& level = levels[i];
         const float w = static_cast<float>(p.LevelWeights[i]);
-        const bool blurred = w != 0.0f && p.BlurIterations > 0;
+        const bool blurred = chain.Levels[i].Blur;
         Op bx, by;
         Box blurBox;
         if (w != 0.0f)
         {
           if (blurred)
           {
-            bx = blurOp(level.W);
-            by = blurOp(level.H);
+            bx = MakeOp(chain.Levels[i].BlurPass.X);
+            by = MakeOp(chain.Levels[i].BlurPass.Y);
             blurBox = ReachBox(bx, by, boxes[i]);
           }
           else
@@ -877,8 +863,8 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
         Box upBox;
         if (up)
         {
-          ux = MakeOp(vtkBloomLinearOperator::Resample(levels[i + 1].W, level.W, upTaps, Clamp));
-          uy = MakeOp(vtkBloomLinearOperator::Resample(levels[i + 1].H, level.H, upTaps, Clamp));
+          ux = MakeOp(chain.Levels[i].Up.X);
+          uy = MakeOp(chain.Levels[i].Up.Y);
           upBox = ReachBox(ux, uy, acc[i + 1]);
         }
         const Box box = p.RestrictToBrightRegion ? Union(upBox, blurBox) : full(i);
@@ -980,8 +966,18 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
         s.Level = &levels[i];
         s.Weight = static_cast<float>(p.LevelWeights[i]);
         s.Scaled = scaled;
-        s.X = MakeOp(vtkBloomLinearOperator::Resample(levels[i].W, width, bilinear, Clamp));
-        s.Y = MakeOp(vtkBloomLinearOperator::Resample(levels[i].H, height, bilinear, Clamp));
+        if (!cascade)
+        {
+          s.X = MakeOp(chain.Levels[i].Full.X);
+          s.Y = MakeOp(chain.Levels[i].Full.Y);
+        }
+        else
+        {
+          s.X =
+            MakeOp(chain.FinalIsIdentity ? vtkBloomLinearOperator::Identity(width) : chain.Final.X);
+          s.Y = MakeOp(
+            chain.FinalIsIdentity ? vtkBloomLinearOperator::Identity(height) : chain.Final.Y);
+        }
         s.Region = acc[i];
         sources.push_back(std::move(s));
       };

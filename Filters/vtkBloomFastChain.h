@@ -37,6 +37,8 @@
 
 #include "vtkSmartPointer.h" // For the recycled output array
 
+class vtkBloomChain;
+
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -52,15 +54,13 @@ struct vtkBloomFastChainParameters
   double Threshold = 1.0;
   double Knee = 0.5;
   double ClampLuminance = 0.0;
-  int StartLevel = 1;
+  /// The operators of every step (vtkBloomChain::Build for the input's size); not owned.
+  const vtkBloomChain* Chain = nullptr;
   std::vector<std::pair<int, int>> LevelSizes; ///< vtkImageBloom::ComputeLevelSizes
   std::vector<double> LevelWeights;            ///< one per level
   int DownsampleKernel = 0;
   bool KarisAverage = false;
-  std::vector<double> BlurHalfKernel; ///< effective half kernel
-  double BlurTapSpacing = 1.0;
   int BlurIterations = 1;
-  int UpsampleKernel = 0;
   int AccumulateMode = 0; ///< vtkImageBloom::CASCADE or DIRECT
   int CompositeMode = 0;  ///< vtkImageBloom::ADDITIVE or LERP
   double Strength = 1.0;

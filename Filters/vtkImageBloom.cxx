@@ -455,6 +455,9 @@ int vtkImageBloom::RequestData(
   this->LastPassedThrough = false;
   this->LastLevelsBuilt = -1;
   const int colours = nc >= 3 ? 3 : 1;
+  // The operators of every step, shared by both paths here and by vtkBloomPass.
+  vtkBloomChain chain;
+  chain.Build(this, width, height);
   if (this->ExecutionMode == FAST)
   {
     vtkBloomFastChainParameters p;
@@ -462,7 +465,7 @@ int vtkImageBloom::RequestData(
     p.Threshold = this->Threshold;
     p.Knee = this->Knee;
     p.ClampLuminance = this->ClampLuminance;
-    p.StartLevel = this->StartLevel;
+    p.Chain = &chain;
     p.LevelSizes = this->ComputeLevelSizes(width, height);
     for (size_t i = 0; i < p.LevelSizes.size(); ++i)
     {
@@ -470,10 +473,7 @@ int vtkImageBloom::RequestData(
     }
     p.DownsampleKernel = this->DownsampleKernel;
     p.KarisAverage = this->KarisAverage;
-    p.BlurHalfKernel = this->GetEffectiveBlurHalfKernel();
-    p.BlurTapSpacing = this->BlurTapSpacing;
     p.BlurIterations = this->BlurIterations;
-    p.UpsampleKernel = this->UpsampleKernel;
     p.AccumulateMode = this->AccumulateMode;
     p.CompositeMode = this->CompositeMode;
     p.Strength = this->Strength;
@@ -525,9 +525,6 @@ int vtkImageBloom::RequestData(
     this->UpdateProgress(1.0);
     return 1;
   }
-  // The operators of every step, shared with vtkBloomPass.
-  vtkBloomChain chain;
-  chain.Build(this, width, height);
   const size_t n = chain.Levels.size();
   std::vector<vtkBloomBuffer> levels(n);
   if (chain.SourceIsIdentity)
