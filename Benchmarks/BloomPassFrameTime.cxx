@@ -49,8 +49,7 @@ int main(int argc, char* argv[])
       window->Render();
       window->WaitForCompletion();
       const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-          .count();
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
       if (f >= 0)
       {
         times[withBloom].push_back(ms);

@@ -32,6 +32,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <iomanip>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -69,9 +70,31 @@ std::string ShaderConstants()
      << "\n#define MODE_QUADRATIC_KNEE " << vtkImageBloomThreshold::QUADRATIC_KNEE
      << "\n#define MODE_HARD_LUMINANCE " << vtkImageBloomThreshold::HARD_LUMINANCE
      << "\n#define MODE_PER_CHANNEL " << vtkImageBloomThreshold::PER_CHANNEL
-     << "\n#define MODE_NONE " << vtkImageBloomThreshold::NONE << "\n";
+     << "\n#define MODE_NONE " << vtkImageBloomThreshold::NONE << "\n#define FLOAT_MAX "
+     << std::scientific << std::setprecision(9) << VTK_FLOAT_MAX << "\n";
   return os.str();
 }
+
+// The OpenGL state the pass changes, restored when it returns.
+struct SavedState
+{
+  vtkOpenGLState::ScopedglEnableDisable Blend, Depth, Scissor;
+  vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglScissor ScissorBox;
+  vtkOpenGLState::ScopedglClearColor ClearColor;
+
+  explicit SavedState(vtkOpenGLState* state)
+    : Blend(state, GL_BLEND)
+    , Depth(state, GL_DEPTH_TEST)
+    , Scissor(state, GL_SCISSOR_TEST)
+    , BlendFunc(state)
+    , Viewport(state)
+    , ScissorBox(state)
+    , ClearColor(state)
+  {
+  }
+};
 
 // A float texture and the framebuffer that renders into it.
 struct Target
@@ -308,18 +331,31 @@ public:
     state->vtkglClear(GL_COLOR_BUFFER_BIT);
   }
 
+  // How the first pass reads the chain's source: masked by depth (selective bloom) and with
+  // non-finite samples replaced (SanitizeNonFinite), as vtkImageBloom reads its input.
+  bool MaskSource = false;
+  bool SanitizeSource = false;
+
+  /// Whether the next passes read the chain's source (the scene or the emitters).
+  void ReadingSource(bool source)
+  {
+    vtkShaderProgram* program = this->Program();
+    program->SetUniformi("maskByDepth", source && this->MaskSource ? 1 : 0);
+    program->SetUniformi("sanitizeSource", source && this->SanitizeSource ? 1 : 0);
+  }
+
   /**
    * dst = step(term.Y term.X src): the x pass into Temp, then the y pass into dst (blended
-   * additively when `blend`). `mask` masks the source by depth (first pass only).
+   * additively when `blend`). `source`: src is the chain's source (first pass only).
    */
   void Separable(vtkTextureObject* src, int srcHeight, const vtkBloomChain::Term& term, Target& dst,
-    int step, double weight, bool blend, bool mask)
+    int step, double weight, bool blend, bool source)
   {
     const int zero[2] = { 0, 0 };
-    this->Program()->SetUniformi("maskByDepth", mask ? 1 : 0);
+    this->ReadingSource(source);
     this->Draw(&this->Temp, zero, term.X.OutputSize, srcHeight, src, &term.X, AXIS_X, STEP_SCALE,
       1.0, false);
-    this->Program()->SetUniformi("maskByDepth", 0);
+    this->ReadingSource(false);
     this->Draw(&dst, zero, term.X.OutputSize, term.Y.OutputSize, this->Temp.Color, &term.Y, AXIS_Y,
       step, weight, blend);
   }
@@ -327,7 +363,7 @@ public:
   bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h);
   void RenderDelegate(vtkBloomPass* self, const vtkRenderState* s, SceneTarget& target,
     vtkProp** props, int count, bool emitters);
-  void RunChain(vtkTextureObject* emission, bool mask);
+  void RunChain(vtkTextureObject* emission, bool mask, bool sanitize);
   void Composite(vtkBloomPass* self, Target* target, const int origin[2], int width, int height);
 };
 
@@ -464,8 +500,10 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPass::vtkInternals::RunChain(vtkTextureObject* emission, bool mask)
+void vtkBloomPass::vtkInternals::RunChain(vtkTextureObject* emission, bool mask, bool sanitize)
 {
+  this->MaskSource = mask;
+  this->SanitizeSource = sanitize;
   const vtkBloomChain& c = this->Chain;
   const size_t n = c.Levels.size();
   if (n == 0)
@@ -474,7 +512,7 @@ void vtkBloomPass::vtkInternals::RunChain(vtkTextureObject* emission, bool mask)
   }
   vtkShaderProgram* program = this->Program();
   const int zero[2] = { 0, 0 };
-  program->SetUniformi("maskByDepth", 0);
+  this->ReadingSource(false);
   program->SetUniformi("thresholdMode", c.ThresholdMode);
   program->SetUniformf("threshold", static_cast<float>(c.Threshold));
   program->SetUniformf("knee", static_cast<float>(c.Knee));
@@ -496,15 +534,15 @@ void vtkBloomPass::vtkInternals::RunChain(vtkTextureObject* emission, bool mask)
   }
   if (c.SourceIsIdentity)
   {
-    program->SetUniformi("maskByDepth", mask ? 1 : 0);
+    this->ReadingSource(true);
     this->Draw(&this->Levels[0], zero, c.Width, c.Height, emission, nullptr, AXIS_NONE,
       STEP_THRESHOLD, 1.0, false);
-    program->SetUniformi("maskByDepth", 0);
+    this->ReadingSource(false);
   }
   else
   {
     this->Separable(
-      emission, c.Height, c.Source, this->Levels[0], STEP_THRESHOLD, 1.0, false, mask);
+      emission, c.Height, c.Source, this->Levels[0], STEP_THRESHOLD, 1.0, false, true);
   }
   if (mask)
   {
@@ -599,8 +637,8 @@ void vtkBloomPass::vtkInternals::Composite(
   vtkBloomPass* self, Target* target, const int origin[2], int width, int height)
 {
   const vtkBloomChain& c = this->Chain;
+  this->ReadingSource(false);
   vtkShaderProgram* program = this->Program();
-  program->SetUniformi("maskByDepth", 0);
   program->SetUniformf("keep", static_cast<float>(c.Keep));
   float strengthTint[3];
   for (int i = 0; i < 3; ++i)
@@ -784,13 +822,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     return;
   }
   vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  vtkOpenGLState::ScopedglScissor scissorBoxSaver(state);
-  vtkOpenGLState::ScopedglClearColor clearSaver(state);
+  const SavedState saved(state);
   vtkInternals& in = *this->Internals;
   if (!in.Prepare(this, window, w, h))
   {
@@ -824,7 +856,8 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // 2. The chain, then 3. the composite into the framebuffer the pass was called with.
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  in.RunChain(selective ? in.Emitter.Color : in.Scene.Color, selective);
+  in.RunChain(selective ? in.Emitter.Color : in.Scene.Color, selective,
+    this->Parameters->GetSanitizeNonFinite());
   const int zero[2] = { 0, 0 };
   const int origin[2] = { x, y };
   if (this->CaptureResult)
@@ -870,12 +903,7 @@ bool vtkBloomPass::ApplyToImage(
   window->MakeCurrent();
   const int w = dims[0], h = dims[1];
   vtkOpenGLState* state = window->GetState();
-  vtkOpenGLState::ScopedglEnableDisable blendSaver(state, GL_BLEND);
-  vtkOpenGLState::ScopedglEnableDisable depthSaver(state, GL_DEPTH_TEST);
-  vtkOpenGLState::ScopedglEnableDisable scissorSaver(state, GL_SCISSOR_TEST);
-  vtkOpenGLState::ScopedglBlendFuncSeparate blendFuncSaver(state);
-  vtkOpenGLState::ScopedglViewport viewportSaver(state);
-  vtkOpenGLState::ScopedglClearColor clearSaver(state);
+  const SavedState saved(state);
   vtkInternals& in = *this->Internals;
   if (!in.Prepare(this, window, w, h))
   {
@@ -900,7 +928,7 @@ bool vtkBloomPass::ApplyToImage(
   state->PushFramebufferBindings();
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  in.RunChain(in.Scene.Color, false);
+  in.RunChain(in.Scene.Color, false, this->Parameters->GetSanitizeNonFinite());
   const int zero[2] = { 0, 0 };
   in.Composite(this, &in.Result, zero, w, h);
   state->PopFramebufferBindings();

@@ -46,9 +46,20 @@ uniform vec3 strengthTint;
 uniform int sanitize;
 uniform float largest; // largest finite value of the output target
 
+// The chain's source as vtkImageBloom reads its input: with SanitizeNonFinite, NaN becomes 0
+// and +-Inf the largest finite float, before any resampling.
+uniform int sanitizeSource;
+
 vec4 fetchSource(ivec2 q)
 {
   vec4 value = texelFetch(source, q, 0);
+  if (sanitizeSource != 0)
+  {
+    for (int i = 0; i < 4; ++i)
+    {
+      value[i] = isnan(value[i]) ? 0.0 : clamp(value[i], -FLOAT_MAX, FLOAT_MAX);
+    }
+  }
   if (maskByDepth != 0 && texelFetch(emitterDepth, q, 0).r > texelFetch(sceneDepth, q, 0).r)
   {
     value = vec4(0.0);
@@ -79,7 +90,10 @@ vec3 brightPass(vec3 c)
   // Firefly guard: scale the colour so that its luminance does not exceed the clamp.
   if (lum > clampLuminance)
   {
-    c *= clampLuminance / lum;
+    // In float32 the luminance of colours near the largest float overflows to Inf (double, on
+    // the CPU, does not); take the ratio on scaled values then.
+    const float s = 5.421010862e-20; // 2^-64
+    c *= isinf(lum) ? (clampLuminance * s) / dot(c * s, lumaWeights) : clampLuminance / lum;
     lum = dot(c, lumaWeights);
   }
   float k = threshold * knee;
@@ -133,8 +147,12 @@ void main()
     for (int k = 0; k < bandWidth; ++k)
     {
       float w = texelFetch(operatorRows, ivec2(k + 1, j), 0).r;
-      ivec2 q = axis == AXIS_X ? ivec2(first + k, p.y) : ivec2(p.x, first + k);
-      sum += w * fetchSource(q);
+      // The band's padding has zero weights; skipping them keeps 0 * Inf from making a NaN.
+      if (w != 0.0)
+      {
+        ivec2 q = axis == AXIS_X ? ivec2(first + k, p.y) : ivec2(p.x, first + k);
+        sum += w * fetchSource(q);
+      }
     }
   }
 
