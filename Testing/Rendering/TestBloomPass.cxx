@@ -312,7 +312,14 @@ TEST(RenderingBloomPass, NoErrorsOrGrowthOverManyFramesWithResizes)
     }
   }
   EXPECT_EQ(w.Bloom->GetNumberOfPasses(), passes);
-  EXPECT_LT(ResidentKiB() - rssAfterWarmUp, 16 * 1024) << "resident memory grew";
+  // AddressSanitizer keeps freed blocks in its quarantine (capped at 32 MB for these tests by
+  // Testing/CMakeLists.txt), which shows as resident memory; a leak would be ~160 MB.
+#ifdef __SANITIZE_ADDRESS__
+  const long boundKiB = (16 + 32) * 1024;
+#else
+  const long boundKiB = 16 * 1024;
+#endif
+  EXPECT_LT(ResidentKiB() - rssAfterWarmUp, boundKiB) << "resident memory grew";
 }
 
 //------------------------------------------------------------------------------
