@@ -16,28 +16,33 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 /// NaN -> 0, -Inf -> 0, +Inf -> ceiling: what the bloom chain feeds its pyramid in every mode.
-template <int N>
-inline void vtkBloomMapNonFinite(double* colour, double ceiling)
+template <int N, typename Real>
+inline void vtkBloomMapNonFinite(Real* colour, double ceiling)
 {
   for (int c = 0; c < N; ++c)
   {
     if (std::isnan(colour[c]))
     {
-      colour[c] = 0.0;
+      colour[c] = Real(0);
     }
     else if (std::isinf(colour[c]))
     {
-      colour[c] = colour[c] > 0.0 ? ceiling : 0.0;
+      colour[c] = colour[c] > Real(0) ? static_cast<Real>(ceiling) : Real(0);
     }
   }
 }
 
-/// vtkImageBloomThreshold::BrightPass for N colour values (see that class for the formulas).
-template <int N>
+/**
+ * vtkImageBloomThreshold::BrightPass for N colour values (see that class for the formulas), in
+ * the arithmetic of Real: double for the reference chain and the filters, float for the fused
+ * float32 chain of vtkImageBloom's FAST mode.
+ */
+template <int N, typename Real>
 inline void vtkBloomBrightPass(
-  double* colour, int mode, double threshold, double knee, double clampLuminance)
+  Real* colour, int mode, double threshold, double knee, double clampLuminance)
 {
   if (mode == vtkImageBloomThreshold::NONE)
   {
@@ -46,16 +51,20 @@ inline void vtkBloomBrightPass(
   vtkBloomMapNonFinite<N>(colour, std::min(clampLuminance, static_cast<double>(VTK_FLOAT_MAX)));
   auto luminance = [colour]()
   {
-    return N == 3 ? vtkBloomKernels::LuminanceR * colour[0] +
-        vtkBloomKernels::LuminanceG * colour[1] + vtkBloomKernels::LuminanceB * colour[2]
+    return N == 3 ? static_cast<Real>(vtkBloomKernels::LuminanceR) * colour[0] +
+        static_cast<Real>(vtkBloomKernels::LuminanceG) * colour[1] +
+        static_cast<Real>(vtkBloomKernels::LuminanceB) * colour[2]
                   : colour[0];
   };
+  const Real zero(0), one(1);
+  const Real clampLum = static_cast<Real>(clampLuminance);
+  const Real t0 = static_cast<Real>(threshold);
 
   // Firefly guard: scale the colour so its luminance does not exceed the clamp.
-  double lum = luminance();
-  if (lum > clampLuminance)
+  Real lum = luminance();
+  if (lum > clampLum)
   {
-    const double scale = clampLuminance / lum;
+    const Real scale = clampLum / lum;
     for (int c = 0; c < N; ++c)
     {
       colour[c] *= scale;
@@ -63,42 +72,42 @@ inline void vtkBloomBrightPass(
     lum = luminance();
   }
 
-  const double k = threshold * knee;
-  double factor = 1.0;
+  const Real k = static_cast<Real>(threshold * knee);
+  Real factor = one;
   switch (mode)
   {
     case vtkImageBloomThreshold::SMOOTHSTEP_KNEE:
-      if (k > 0.0)
+      if (k > zero)
       {
-        const double edge0 = threshold - k, edge1 = threshold + k;
-        const double t = std::min(std::max((lum - edge0) / (edge1 - edge0), 0.0), 1.0);
-        factor = t * t * (3.0 - 2.0 * t);
+        const Real edge0 = t0 - k, edge1 = t0 + k;
+        const Real t = std::min(std::max((lum - edge0) / (edge1 - edge0), zero), one);
+        factor = t * t * (Real(3) - Real(2) * t);
       }
       else
       {
         // knee 0 is the step lum >= T; smoothstep(T, T, x) is undefined.
-        factor = lum >= threshold ? 1.0 : 0.0;
+        factor = lum >= t0 ? one : zero;
       }
       break;
     case vtkImageBloomThreshold::QUADRATIC_KNEE:
     {
-      double brightness = colour[0];
+      Real brightness = colour[0];
       for (int c = 1; c < N; ++c)
       {
         brightness = std::max(brightness, colour[c]);
       }
-      double q = std::min(std::max(brightness - threshold + k, 0.0), 2.0 * k);
-      q = q * q / (4.0 * k + 1e-5);
-      factor = std::max(q, brightness - threshold) / std::max(brightness, 1e-5);
+      Real q = std::min(std::max(brightness - t0 + k, zero), Real(2) * k);
+      q = q * q / (Real(4) * k + Real(1e-5));
+      factor = std::max(q, brightness - t0) / std::max(brightness, Real(1e-5));
       break;
     }
     case vtkImageBloomThreshold::HARD_LUMINANCE:
-      factor = lum > threshold ? 1.0 : 0.0;
+      factor = lum > t0 ? one : zero;
       break;
     case vtkImageBloomThreshold::PER_CHANNEL:
       for (int c = 0; c < N; ++c)
       {
-        colour[c] = std::max(colour[c] - threshold, 0.0);
+        colour[c] = std::max(colour[c] - t0, zero);
       }
       return;
     default:
@@ -106,7 +115,51 @@ inline void vtkBloomBrightPass(
   }
   for (int c = 0; c < N; ++c)
   {
-    colour[c] = std::max(colour[c] * factor, 0.0);
+    colour[c] = std::max(colour[c] * factor, zero);
+  }
+}
+
+/**
+ * True when vtkBloomBrightPass<N, Real> certainly gives zero for `colour` (it may answer false
+ * for some colours that do give zero): every value finite and the measure the mode compares
+ * below its zero edge. The fused chain uses it to skip the full formula for dark samples.
+ */
+template <int N, typename Real>
+inline bool vtkBloomBrightPassIsZero(
+  const Real* colour, int mode, double threshold, double knee, double clampLuminance)
+{
+  const Real m = std::numeric_limits<Real>::max();
+  bool finite = true;
+  Real brightness = colour[0];
+  for (int c = 0; c < N; ++c)
+  {
+    finite &= colour[c] >= -m && colour[c] <= m;
+    brightness = std::max(brightness, colour[c]);
+  }
+  const Real lum = N == 3 ? static_cast<Real>(vtkBloomKernels::LuminanceR) * colour[0] +
+      static_cast<Real>(vtkBloomKernels::LuminanceG) * colour[1] +
+      static_cast<Real>(vtkBloomKernels::LuminanceB) * colour[2]
+                          : colour[0];
+  // Non-finite colours are mapped and colours above the clamp are scaled first: not decided here.
+  if (!finite || !(lum <= static_cast<Real>(clampLuminance)))
+  {
+    return false;
+  }
+  const Real t0 = static_cast<Real>(threshold);
+  const Real k = static_cast<Real>(threshold * knee);
+  switch (mode)
+  {
+    case vtkImageBloomThreshold::SMOOTHSTEP_KNEE:
+      return k > Real(0) ? lum <= t0 - k : lum < t0; // smoothstep 0, or the step lum >= T
+    case vtkImageBloomThreshold::HARD_LUMINANCE:
+      return lum <= t0;
+    case vtkImageBloomThreshold::QUADRATIC_KNEE:
+      // Both terms of the factor <= 0, evaluated as the formula evaluates them.
+      return k >= Real(0) && brightness - t0 + k <= Real(0) && brightness - t0 <= Real(0);
+    case vtkImageBloomThreshold::PER_CHANNEL:
+      return brightness <= t0;
+    default:
+      return false;
   }
 }
 

@@ -11,6 +11,7 @@
 #include "vtkImageData.h"
 #include "vtkImagePyramidDown.h"
 #include "vtkPointData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
@@ -18,6 +19,7 @@
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 namespace
 {
@@ -372,79 +374,163 @@ struct BrightResult
   bool AnySpecial = false;
 };
 
-// Pass 1: level 0 = threshold(bilinear(input)), one read of the input, fused per level-0 row.
-template <typename T, int C>
-BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int width, int height,
-  int nc, const Op& rx, const Op& ry, bool scan, Plane& level)
+// Samples per pixel in the levels: colour images keep RGB in four lanes (the fourth is zero) so
+// every per-pixel operation is one 4-wide vector operation; one colour keeps one lane.
+template <int C>
+constexpr int Lanes()
 {
+  return C == 3 ? 4 : C;
+}
+
+// line[q] = sum_k wy_k load(row_k[q]) over n values: the bright pass's y fetch, flat.
+template <typename T, bool Sanitize>
+void CombineRows(
+  const Op& ry, int j, const T* base, size_t stride, size_t n, float* __restrict line)
+{
+  const float* wy = ry.W.data() + static_cast<size_t>(j) * ry.Width;
+  for (int k = 0; k < ry.Width; ++k)
+  {
+    const T* __restrict in = base + static_cast<size_t>(ry.First[j] + k) * stride;
+    const float w = wy[k];
+    if (k == 0)
+    {
+      for (size_t q = 0; q < n; ++q)
+      {
+        line[q] = w * Load(in[q], Sanitize);
+      }
+    }
+    else
+    {
+      for (size_t q = 0; q < n; ++q)
+      {
+        line[q] += w * Load(in[q], Sanitize);
+      }
+    }
+  }
+}
+
+// True when any of the n values is -0, NaN or +-Inf.
+template <typename T>
+bool AnySpecial(const T* in, size_t n)
+{
+  bool any = false;
+  for (size_t q = 0; q < n; ++q)
+  {
+    any |= Special(in[q]);
+  }
+  return any;
+}
+
+// The same for float, on the bit patterns with an integer reduction that vectorizes.
+template <>
+bool AnySpecial<float>(const float* in, size_t n)
+{
+  uint32_t any = 0;
+  for (size_t q = 0; q < n; ++q)
+  {
+    uint32_t u;
+    std::memcpy(&u, in + q, sizeof(u));
+    any |= static_cast<uint32_t>((u & 0x7f800000u) == 0x7f800000u) |
+      static_cast<uint32_t>(u == 0x80000000u);
+  }
+  return any != 0;
+}
+
+// out[x] = sum_t W[x, t] line[First[x] + t] for the w0 samples of a level-0 row, L lanes each.
+// When the image's components line up with the lanes (NC == L), every lane is fetched (one
+// vector operation per tap); otherwise the lanes past the C colours are left unset.
+template <int NC, int C, int Width>
+void FetchX(const Op& rx, const float* __restrict line, int w0, float* __restrict out)
+{
+  constexpr int L = Lanes<C>();
+  constexpr int F = NC == L ? L : C;
+  const int width = Width > 0 ? Width : rx.Width;
+  for (int x = 0; x < w0; ++x)
+  {
+    const float* w = rx.W.data() + static_cast<size_t>(x) * width;
+    const float* s = line + static_cast<size_t>(rx.First[x]) * NC;
+    float a[F];
+    for (int c = 0; c < F; ++c)
+    {
+      a[c] = w[0] * s[c];
+    }
+    for (int t = 1; t < width; ++t)
+    {
+      for (int c = 0; c < F; ++c)
+      {
+        a[c] += w[t] * s[t * NC + c];
+      }
+    }
+    for (int c = 0; c < F; ++c)
+    {
+      out[static_cast<size_t>(x) * L + c] = a[c];
+    }
+  }
+}
+
+// Pass 1: level 0 = threshold(bilinear(input)), one read of the input, fused per level-0 row:
+// the y fetch combines whole input rows (flat), the x fetch gathers C colours into L lanes, and
+// the bright pass runs in float, its full formula only where vtkBloomBrightPassIsZero cannot
+// decide.
+template <typename T, int NC, int C>
+BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int width, int height,
+  const Op& rx, const Op& ry, Plane& level)
+{
+  constexpr int L = Lanes<C>();
   const int w0 = level.W, h0 = level.H;
   std::vector<int> rowLo(h0), rowHi(h0);
   std::vector<char> special(h0, 0);
   const double ceiling = std::min(p.ClampLuminance, static_cast<double>(VTK_FLOAT_MAX));
-  const bool sanitize = p.SanitizeNonFinite;
-  const size_t inStride = static_cast<size_t>(width) * nc;
+  const size_t inStride = static_cast<size_t>(width) * NC;
+  vtkSMPThreadLocal<std::vector<float>> lines;
   vtkSMPTools::For(0, h0, 4,
     [&](int begin, int end)
     {
-      std::vector<float> xrow(static_cast<size_t>(w0) * C), acc(static_cast<size_t>(w0) * C);
+      std::vector<float>& scratch = lines.Local();
+      scratch.resize(inStride);
+      float* line = scratch.data();
       for (int j = begin; j < end; ++j)
       {
-        for (int k = 0; k < ry.Width; ++k)
+        if (p.SanitizeNonFinite)
         {
-          const T* in = base + static_cast<size_t>(ry.First[j] + k) * inStride;
-          for (int x = 0; x < w0; ++x)
-          {
-            const float* w = rx.W.data() + static_cast<size_t>(x) * rx.Width;
-            const T* s = in + static_cast<size_t>(rx.First[x]) * nc;
-            float a[C];
-            for (int c = 0; c < C; ++c)
-            {
-              a[c] = w[0] * Load(s[c], sanitize);
-            }
-            for (int t = 1; t < rx.Width; ++t)
-            {
-              for (int c = 0; c < C; ++c)
-              {
-                a[c] += w[t] * Load(s[t * nc + c], sanitize);
-              }
-            }
-            for (int c = 0; c < C; ++c)
-            {
-              xrow[x * C + c] = a[c];
-            }
-          }
-          const float wy = ry.W[static_cast<size_t>(j) * ry.Width + k];
-          if (k == 0)
-          {
-            for (size_t q = 0; q < xrow.size(); ++q)
-            {
-              acc[q] = wy * xrow[q];
-            }
-          }
-          else
-          {
-            for (size_t q = 0; q < xrow.size(); ++q)
-            {
-              acc[q] += wy * xrow[q];
-            }
-          }
+          CombineRows<T, true>(ry, j, base, inStride, inStride, line);
         }
-        float* out = level.Row(j);
+        else
+        {
+          CombineRows<T, false>(ry, j, base, inStride, inStride, line);
+        }
+        float* __restrict out = level.Row(j);
+        if (rx.Width == 2)
+        {
+          FetchX<NC, C, 2>(rx, line, w0, out);
+        }
+        else
+        {
+          FetchX<NC, C, 0>(rx, line, w0, out);
+        }
         int lo = w0, hi = 0;
         for (int x = 0; x < w0; ++x)
         {
-          double colour[C];
-          for (int c = 0; c < C; ++c)
+          float* a = out + static_cast<size_t>(x) * L;
+          for (int c = C; c < L; ++c)
           {
-            colour[c] = acc[x * C + c];
+            a[c] = 0.0f; // the lane past the colours (alpha when NC == 4) stays zero
           }
-          vtkBloomMapNonFinite<C>(colour, ceiling);
-          vtkBloomBrightPass<C>(colour, p.ThresholdMode, p.Threshold, p.Knee, p.ClampLuminance);
+          if (vtkBloomBrightPassIsZero<C>(
+                a, p.ThresholdMode, p.Threshold, p.Knee, p.ClampLuminance))
+          {
+            for (int c = 0; c < C; ++c)
+            {
+              a[c] = 0.0f;
+            }
+            continue;
+          }
+          vtkBloomMapNonFinite<C>(a, ceiling);
+          vtkBloomBrightPass<C>(a, p.ThresholdMode, p.Threshold, p.Knee, p.ClampLuminance);
           bool nonzero = false;
           for (int c = 0; c < C; ++c)
           {
-            out[x * C + c] = static_cast<float>(colour[c]);
-            nonzero |= out[x * C + c] != 0.0f;
+            nonzero |= a[c] != 0.0f;
           }
           if (nonzero)
           {
@@ -454,23 +540,12 @@ BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int
         }
         rowLo[j] = lo;
         rowHi[j] = hi;
-        if (scan)
-        {
-          // Input rows [j H / h0, (j + 1) H / h0) belong to this row, so every row is scanned
-          // once (for a 2:1 level they are the rows just read, still in cache).
-          const int r0 = static_cast<int>(static_cast<long long>(j) * height / h0);
-          const int r1 = static_cast<int>(static_cast<long long>(j + 1) * height / h0);
-          bool any = false;
-          for (int r = r0; r < r1; ++r)
-          {
-            const T* in = base + static_cast<size_t>(r) * inStride;
-            for (size_t q = 0; q < inStride; ++q)
-            {
-              any |= Special(in[q]);
-            }
-          }
-          special[j] = any;
-        }
+        // Input rows [j H / h0, (j + 1) H / h0) belong to this row, so every row is scanned
+        // once (for a 2:1 level they are the rows just read, still in cache).
+        const int r0 = static_cast<int>(static_cast<long long>(j) * height / h0);
+        const int r1 = static_cast<int>(static_cast<long long>(j + 1) * height / h0);
+        special[j] = AnySpecial(
+          base + static_cast<size_t>(r0) * inStride, static_cast<size_t>(r1 - r0) * inStride);
       }
     });
   BrightResult result;
@@ -506,122 +581,273 @@ struct Source
   Box Region; // non-zero samples of the plane
 };
 
-// One output row: colour = keep * in + term, alpha copied (sanitized when asked).
-template <typename T, int NC, int C>
-void CompositeRow(const T* __restrict src, const float* __restrict term, T keep, bool sanitize,
+// out = keep * in + term over n pixels, term = S t clamp(bloom) + 0 (+0 without bloom); alpha
+// and any component past the colours are copied (sanitized when asked).
+template <typename T, int NC, int C, bool Sanitize, bool HasBloom>
+void CompositeSpan(const T* __restrict src, const float* __restrict bloom, const float* st, T keep,
   int n, T* __restrict dst)
 {
-  if (sanitize)
+  constexpr int L = Lanes<C>();
+  for (int x = 0; x < n; ++x)
   {
-    for (int x = 0; x < n; ++x)
+    for (int c = 0; c < NC; ++c)
     {
-      for (int c = 0; c < NC; ++c)
+      const T v = Sanitize ? Finite(src[x * NC + c]) : src[x * NC + c];
+      if (c < C)
       {
-        const T v = Finite(src[x * NC + c]);
-        dst[x * NC + c] =
-          c < C ? Finite(static_cast<T>(keep * v + static_cast<T>(term[x * C + c]))) : v;
+        float term = 0.0f;
+        if (HasBloom)
+        {
+          float b = bloom[x * L + c];
+          b = b == b ? std::min(std::max(b, -FloatMax), FloatMax) : 0.0f;
+          term = st[c] * b + 0.0f;
+        }
+        const T o = static_cast<T>(keep * v + static_cast<T>(term));
+        dst[x * NC + c] = Sanitize ? Finite(o) : o;
       }
-    }
-  }
-  else
-  {
-    for (int x = 0; x < n; ++x)
-    {
-      for (int c = 0; c < NC; ++c)
+      else
       {
-        const T v = src[x * NC + c];
-        dst[x * NC + c] = c < C ? static_cast<T>(keep * v + static_cast<T>(term[x * C + c])) : v;
+        dst[x * NC + c] = v;
       }
     }
   }
 }
 
+// CompositeSpan when the bloom samples line up with the image's components (L == NC): one flat
+// loop over the n values, which vectorizes. stFlat and colour repeat per pixel (S t, 0 for the
+// component past the colours; 1 where a component is a colour). KeepOne drops the product
+// 1 * v, which is v bit for bit. Sanitized, v and the term are finite, so their sum can only
+// overflow, never be NaN: clamping it is Finite().
+template <typename T, bool Sanitize, bool HasBloom, bool KeepOne>
+void CompositeFlat(const T* __restrict src, const float* __restrict bloom,
+  const float* __restrict stFlat, const unsigned char* __restrict colour, T keep, int n,
+  T* __restrict dst)
+{
+  const T m = std::numeric_limits<T>::max();
+  for (int q = 0; q < n; ++q)
+  {
+    const T v = Sanitize ? Finite(src[q]) : src[q];
+    float term = 0.0f;
+    if (HasBloom)
+    {
+      float b = bloom[q];
+      b = b == b ? std::min(std::max(b, -FloatMax), FloatMax) : 0.0f;
+      term = stFlat[q] * b + 0.0f;
+    }
+    T o = static_cast<T>((KeepOne ? v : keep * v) + static_cast<T>(term));
+    o = Sanitize ? std::min(std::max(o, -m), m) : o;
+    dst[q] = colour[q] ? o : v;
+  }
+}
+
+// True when none of the n values is NaN or +-Inf (an integer reduction that vectorizes).
+inline bool AllFinite(const float* v, size_t n)
+{
+  uint32_t any = 0;
+  for (size_t q = 0; q < n; ++q)
+  {
+    uint32_t u;
+    std::memcpy(&u, v + q, sizeof(u));
+    any |= static_cast<uint32_t>((u & 0x7f800000u) == 0x7f800000u);
+  }
+  return any == 0;
+}
+
+// CompositeFlat for any keep. With keep = 1, an input without -0, NaN or Inf (`clean`) and a
+// finite bloom, the loop above reduces to in + (S t bloom + 0) bit for bit: sanitizing changes
+// nothing, and v + (+0) is v for the components past the colours. Only an overflow of the sum
+// is left to sanitize; the row is checked after and, if one occurred, recomputed in full.
+template <typename T, bool Sanitize, bool HasBloom>
+void CompositeFlat(const T* src, const float* bloom, const float* stFlat,
+  const unsigned char* colour, T keep, bool clean, int n, T* dst)
+{
+  if (keep != T(1))
+  {
+    CompositeFlat<T, Sanitize, HasBloom, false>(src, bloom, stFlat, colour, keep, n, dst);
+    return;
+  }
+  if (std::is_same<T, float>::value && clean)
+  {
+    if (!HasBloom)
+    {
+      std::copy(src, src + n, dst);
+      return;
+    }
+    if (AllFinite(bloom, n))
+    {
+      const float* __restrict in = reinterpret_cast<const float*>(src);
+      float* __restrict out = reinterpret_cast<float*>(dst);
+      for (int q = 0; q < n; ++q)
+      {
+        out[q] = in[q] + (stFlat[q] * bloom[q] + 0.0f);
+      }
+      if (!Sanitize || AllFinite(out, n))
+      {
+        return;
+      }
+    }
+  }
+  CompositeFlat<T, Sanitize, HasBloom, true>(src, bloom, stFlat, colour, keep, n, dst);
+}
+
+template <typename T, int NC, int C, bool Sanitize>
+void CompositeSpans(const T* src, const float* bloom, int b0, int b1, const float* st,
+  const float* stFlat, const unsigned char* colour, T keep, bool clean, int n, T* dst)
+{
+  constexpr int L = Lanes<C>();
+  b0 = std::min(std::max(b0, 0), n);
+  b1 = std::min(std::max(b1, b0), n);
+  const size_t s0 = static_cast<size_t>(b0) * NC, s1 = static_cast<size_t>(b1) * NC;
+  if (L == NC)
+  {
+    CompositeFlat<T, Sanitize, false>(src, nullptr, stFlat, colour, keep, clean, b0 * NC, dst);
+    CompositeFlat<T, Sanitize, true>(
+      src + s0, bloom + s0, stFlat, colour, keep, clean, (b1 - b0) * NC, dst + s0);
+    CompositeFlat<T, Sanitize, false>(
+      src + s1, nullptr, stFlat, colour, keep, clean, (n - b1) * NC, dst + s1);
+    return;
+  }
+  CompositeSpan<T, NC, C, Sanitize, false>(src, nullptr, st, keep, b0, dst);
+  CompositeSpan<T, NC, C, Sanitize, true>(
+    src + s0, bloom + static_cast<size_t>(b0) * L, st, keep, b1 - b0, dst + s0);
+  CompositeSpan<T, NC, C, Sanitize, false>(src + s1, nullptr, st, keep, n - b1, dst + s1);
+}
+
+// bloom[x] (+)= weight * sum_t W[x, t] v[First[x] + t - c0] for x in [x0, x1), L lanes each.
+template <int L, int Width>
+void InterpolateX(const Op& o, const float* __restrict v, int c0, int x0, int x1, bool scaled,
+  float weight, float* __restrict bloom)
+{
+  const int width = Width > 0 ? Width : o.Width;
+  for (int x = x0; x < x1; ++x)
+  {
+    const float* w = o.W.data() + static_cast<size_t>(x) * width;
+    const float* s = v + static_cast<size_t>(o.First[x] - c0) * L;
+    float a[L];
+    for (int c = 0; c < L; ++c)
+    {
+      a[c] = w[0] * s[c];
+    }
+    for (int t = 1; t < width; ++t)
+    {
+      for (int c = 0; c < L; ++c)
+      {
+        a[c] += w[t] * s[t * L + c];
+      }
+    }
+    float* b = bloom + static_cast<size_t>(x) * L;
+    for (int c = 0; c < L; ++c)
+    {
+      b[c] = scaled ? b[c] + weight * a[c] : a[c];
+    }
+  }
+}
+
 // Pass 4: out = keep * in + (S t bloom + 0) over outExt, the bloom row interpolated per row.
-template <typename T, int C>
-void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inExt[6], int nc,
+template <typename T, int NC, int C, bool Sanitize>
+void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inExt[6], bool clean,
   const std::vector<Source>& sources, const float st[3], T* out, const int outExt[6])
 {
+  constexpr int L = Lanes<C>();
   const int inW = inExt[1] - inExt[0] + 1;
   const int outW = outExt[1] - outExt[0] + 1;
   const int x0 = outExt[0] - inExt[0];
   const T keep = static_cast<T>(p.CompositeMode == CompositeLerp ? 1.0 - p.Strength : 1.0);
-  const bool sanitize = p.SanitizeNonFinite;
-  // Full-resolution bloom columns and rows each source reaches.
+  float stL[L];
+  for (int c = 0; c < L; ++c)
+  {
+    stL[c] = c < C ? st[c] : 0.0f;
+  }
+  // Full-resolution bloom columns and rows each source reaches. Weighted sources (DIRECT)
+  // accumulate into a zeroed row; CASCADE's one source is assigned.
   std::vector<Box> reach(sources.size());
+  std::vector<std::pair<int, int>> columns(sources.size()); // level columns each one reads
+  bool accumulate = false;
   for (size_t i = 0; i < sources.size(); ++i)
   {
     reach[i] = ReachBox(sources[i].X, sources[i].Y, sources[i].Region);
+    Needs(sources[i].X, reach[i].X0, reach[i].X1, columns[i].first, columns[i].second);
+    accumulate |= sources[i].Scaled;
   }
+  // S t and "is a colour" for every value of a row, for the flat composite loop.
+  std::vector<float> stFlat(static_cast<size_t>(inW) * NC);
+  std::vector<unsigned char> colour(stFlat.size());
+  for (size_t q = 0; q < stFlat.size(); ++q)
+  {
+    const int c = static_cast<int>(q % NC);
+    stFlat[q] = c < C ? st[c] : 0.0f;
+    colour[q] = c < C;
+  }
+  struct Scratch
+  {
+    std::vector<float> Bloom, YRow;
+  };
+  vtkSMPThreadLocal<Scratch> scratch;
   vtkSMPTools::For(outExt[2], outExt[3] + 1, 4,
     [&](int begin, int end)
     {
-      std::vector<float> bloom(static_cast<size_t>(inW) * C), yrow;
-      std::vector<float> term(static_cast<size_t>(outW) * C), stRow(term.size());
-      for (size_t q = 0; q < stRow.size(); ++q)
-      {
-        stRow[q] = st[q % C];
-      }
+      std::vector<float>& bloom = scratch.Local().Bloom;
+      std::vector<float>& yrow = scratch.Local().YRow;
+      bloom.resize(static_cast<size_t>(inW) * L);
       for (int y = begin; y < end; ++y)
       {
         const int j = y - inExt[2];
-        std::fill(bloom.begin(), bloom.end(), 0.0f);
+        int b0 = inW, b1 = 0; // bloom columns of this row
+        for (size_t i = 0; i < sources.size(); ++i)
+        {
+          if (!reach[i].Empty() && j >= reach[i].Y0 && j < reach[i].Y1)
+          {
+            b0 = std::min(b0, reach[i].X0);
+            b1 = std::max(b1, reach[i].X1);
+          }
+        }
+        if (b0 < b1 && accumulate)
+        {
+          std::fill(bloom.begin() + static_cast<size_t>(b0) * L,
+            bloom.begin() + static_cast<size_t>(b1) * L, 0.0f);
+        }
         for (size_t i = 0; i < sources.size(); ++i)
         {
           const Source& s = sources[i];
           const Box& r = reach[i];
-          if (j < r.Y0 || j >= r.Y1 || r.Empty())
+          if (r.Empty() || j < r.Y0 || j >= r.Y1)
           {
             continue;
           }
-          int c0, c1;
-          Needs(s.X, r.X0, r.X1, c0, c1);
-          const size_t stride = static_cast<size_t>(s.Level->W) * C;
-          yrow.resize(static_cast<size_t>(c1 - c0) * C);
-          RowY(s.Y, j, s.Level->Row(0) + c0 * C, 0, stride, (c1 - c0) * C, yrow.data());
-          for (int x = r.X0; x < r.X1; ++x)
+          const int c0 = columns[i].first, c1 = columns[i].second;
+          const size_t stride = static_cast<size_t>(s.Level->W) * L;
+          yrow.resize(static_cast<size_t>(c1 - c0) * L);
+          RowY(s.Y, j, s.Level->Row(0) + c0 * L, 0, stride, (c1 - c0) * L, yrow.data());
+          if (s.X.Width == 2)
           {
-            const float* w = s.X.W.data() + static_cast<size_t>(x) * s.X.Width;
-            const float* v = yrow.data() + static_cast<size_t>(s.X.First[x] - c0) * C;
-            for (int c = 0; c < C; ++c)
-            {
-              float a = w[0] * v[c];
-              for (int t = 1; t < s.X.Width; ++t)
-              {
-                a += w[t] * v[t * C + c];
-              }
-              float& b = bloom[x * C + c];
-              b = s.Scaled ? b + s.Weight * a : a;
-            }
+            InterpolateX<L, 2>(s.X, yrow.data(), c0, r.X0, r.X1, s.Scaled, s.Weight, bloom.data());
+          }
+          else
+          {
+            InterpolateX<L, 0>(s.X, yrow.data(), c0, r.X0, r.X1, s.Scaled, s.Weight, bloom.data());
           }
         }
-        // term = S t clamp(bloom) + 0 over the row (flat, vectorizable), then the composite.
-        const float* b = bloom.data() + static_cast<size_t>(x0) * C;
-        const int n = outW * C;
-        for (int q = 0; q < n; ++q)
-        {
-          float bv = b[q];
-          bv = bv == bv ? std::min(std::max(bv, -FloatMax), FloatMax) : 0.0f;
-          term[q] = stRow[q] * bv + 0.0f;
-        }
-        const T* src = in + (static_cast<size_t>(j) * inW + x0) * nc;
-        T* dst = out + static_cast<size_t>(y - outExt[2]) * outW * nc;
-        switch (nc)
-        {
-          case 1:
-            CompositeRow<T, 1, C>(src, term.data(), keep, sanitize, outW, dst);
-            break;
-          case 2:
-            CompositeRow<T, 2, C>(src, term.data(), keep, sanitize, outW, dst);
-            break;
-          case 3:
-            CompositeRow<T, 3, C>(src, term.data(), keep, sanitize, outW, dst);
-            break;
-          default:
-            CompositeRow<T, 4, C>(src, term.data(), keep, sanitize, outW, dst);
-            break;
-        }
+        const T* src = in + (static_cast<size_t>(j) * inW + x0) * NC;
+        T* dst = out + static_cast<size_t>(y - outExt[2]) * outW * NC;
+        CompositeSpans<T, NC, C, Sanitize>(src, bloom.data() + static_cast<size_t>(x0) * L, b0 - x0,
+          b1 - x0, stL, stFlat.data(), colour.data(), keep, clean, outW, dst);
       }
     });
+}
+
+// Calls f(std::integral_constant<int, NC>()) for the image's component count NC: one or two
+// components hold one colour (C = 1), three or four hold RGB (C = 3).
+template <int C, typename F>
+void WithComponents(int nc, F&& f)
+{
+  if constexpr (C == 3)
+  {
+    nc == 3 ? f(std::integral_constant<int, 3>()) : f(std::integral_constant<int, 4>());
+  }
+  else
+  {
+    nc == 1 ? f(std::integral_constant<int, 1>()) : f(std::integral_constant<int, 2>());
+  }
 }
 }
 
@@ -736,6 +962,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
       progress->UpdateProgress(amount);
     }
   };
+  constexpr int L = Lanes<C>();
   int inExt[6];
   input->GetExtent(inExt);
   const int width = inExt[1] - inExt[0] + 1;
@@ -747,6 +974,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
   const double keep = p.CompositeMode == CompositeLerp ? 1.0 - p.Strength : 1.0;
 
   std::vector<Source> sources;
+  bool clean = false; // the input holds no -0, NaN or Inf (known after the bright pass)
   bool passThrough = false;
   int levelsBuilt = static_cast<int>(p.LevelSizes.size());
   if (p.TrimPyramid)
@@ -767,14 +995,23 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
     ws.Levels.resize(std::max<size_t>(ws.Levels.size(), levelsBuilt));
     auto& levels = ws.Levels;
     const int w0 = p.LevelSizes[0].first, h0 = p.LevelSizes[0].second;
-    levels[0].Resize(w0, h0, C);
+    levels[0].Resize(w0, h0, L);
     const vtkBloomChain& chain = *p.Chain;
     const Op rx =
       MakeOp(chain.SourceIsIdentity ? vtkBloomLinearOperator::Identity(width) : chain.Source.X);
     const Op ry =
       MakeOp(chain.SourceIsIdentity ? vtkBloomLinearOperator::Identity(height) : chain.Source.Y);
+    // The input is scanned for -0, NaN and Inf in any case (the composite takes a shorter loop
+    // without them); the pass-through needs the scan, a whole output and keep = 1.
     const bool scan = p.SkipEmpty && keep == 1.0 && whole;
-    const BrightResult bright = BrightPass<T, C>(p, in, width, height, nc, rx, ry, scan, levels[0]);
+    BrightResult bright;
+    WithComponents<C>(nc,
+      [&](auto components)
+      {
+        bright =
+          BrightPass<T, decltype(components)::value, C>(p, in, width, height, rx, ry, levels[0]);
+      });
+    clean = !bright.AnySpecial;
     report.SamplesProcessed += static_cast<long long>(w0) * h0;
     reportProgress(0.3);
     std::vector<Box> boxes(levelsBuilt);
@@ -792,7 +1029,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
       for (int i = 1; i < levelsBuilt; ++i)
       {
         const int outSize[2] = { p.LevelSizes[i].first, p.LevelSizes[i].second };
-        levels[i].Resize(outSize[0], outSize[1], C);
+        levels[i].Resize(outSize[0], outSize[1], L);
         std::fill(levels[i].D.begin(), levels[i].D.end(), 0.0f);
         const auto& terms = chain.Levels[i].Down;
         std::vector<Op> ox, oy;
@@ -806,7 +1043,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
         boxes[i] = p.RestrictToBrightRegion ? box : full(i);
         for (size_t t = 0; t < terms.size(); ++t)
         {
-          Separable<C>(levels[i - 1], ox[t], oy[t], boxes[i], static_cast<float>(terms[t].Weight),
+          Separable<L>(levels[i - 1], ox[t], oy[t], boxes[i], static_cast<float>(terms[t].Weight),
             t > 0, levels[i], ws.Block);
         }
         report.SamplesProcessed += static_cast<long long>(boxes[i].X1 - boxes[i].X0) *
@@ -849,8 +1086,8 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
           if (blurred)
           {
             Plane blurredLevel;
-            blurredLevel.Resize(level.W, level.H, C);
-            Separable<C>(level, bx, by, acc[i], 1.0f, false, blurredLevel, ws.Block);
+            blurredLevel.Resize(level.W, level.H, L);
+            Separable<L>(level, bx, by, acc[i], 1.0f, false, blurredLevel, ws.Block);
             std::swap(level.D, blurredLevel.D);
             report.SamplesProcessed +=
               static_cast<long long>(acc[i].X1 - acc[i].X0) * (acc[i].Y1 - acc[i].Y0);
@@ -874,7 +1111,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
           level.Zero(boxes[i]); // acc_i is zero: clear what level i held
           continue;
         }
-        const size_t stride = static_cast<size_t>(box.X1 - box.X0) * C;
+        const size_t stride = static_cast<size_t>(box.X1 - box.X0) * L;
         const int n = static_cast<int>(stride);
         int b0 = 0, b1 = 0, u0 = 0, u1 = 0;
         if (w != 0.0f)
@@ -882,7 +1119,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
           if (blurred)
           {
             Needs(by, box.Y0, box.Y1, b0, b1);
-            BlockX<C>(level, bx, b0, b1, box.X0, box.X1, ws.Block);
+            BlockX<L>(level, bx, b0, b1, box.X0, box.X1, ws.Block);
           }
           else
           {
@@ -892,7 +1129,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
             ws.Block.resize(static_cast<size_t>(b1 - b0) * stride);
             for (int r = b0; r < b1; ++r)
             {
-              std::copy(level.Row(r) + box.X0 * C, level.Row(r) + box.X1 * C,
+              std::copy(level.Row(r) + box.X0 * L, level.Row(r) + box.X1 * L,
                 ws.Block.data() + (r - b0) * stride);
             }
           }
@@ -900,7 +1137,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
         if (up)
         {
           Needs(uy, box.Y0, box.Y1, u0, u1);
-          BlockX<C>(levels[i + 1], ux, u0, u1, box.X0, box.X1, ws.Block2);
+          BlockX<L>(levels[i + 1], ux, u0, u1, box.X0, box.X1, ws.Block2);
         }
         if (p.RestrictToBrightRegion)
         {
@@ -913,7 +1150,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
             std::vector<float> brow(stride), urow(stride);
             for (int j = begin; j < end; ++j)
             {
-              float* __restrict d = level.Row(j) + box.X0 * C;
+              float* __restrict d = level.Row(j) + box.X0 * L;
               if (w != 0.0f)
               {
                 if (blurred)
@@ -999,7 +1236,10 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
   }
   report.LevelsBuilt = levelsBuilt;
 
-  // 4. Composite (or pass the input through when the result is the input bit for bit).
+  // 4. Composite (or pass the input through when the result is the input bit for bit). The
+  // output's previous scalars are dropped first, so that the array recycled below is held by
+  // nobody else unless a consumer still uses it.
+  output->GetPointData()->Initialize();
   output->SetExtent(const_cast<int*>(outExt));
   if (passThrough)
   {
@@ -1021,6 +1261,14 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
   r->SetName(inScalars->GetName());
   r->Modified();
   output->GetPointData()->SetScalars(r);
-  Composite<T, C>(p, in, inExt, nc, sources, st, static_cast<T*>(r->GetVoidPointer(0)), outExt);
+  T* out = static_cast<T*>(r->GetVoidPointer(0));
+  WithComponents<C>(nc,
+    [&](auto components)
+    {
+      constexpr int NC = decltype(components)::value;
+      p.SanitizeNonFinite
+        ? Composite<T, NC, C, true>(p, in, inExt, clean, sources, st, out, outExt)
+        : Composite<T, NC, C, false>(p, in, inExt, clean, sources, st, out, outExt);
+    });
 }
 }
