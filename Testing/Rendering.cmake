@@ -16,3 +16,11 @@ vtkbloom_add_gtest(TestBloomPass OPENGL
 vtk_module_autoinit(TARGETS TestBloomPass MODULES VTK::RenderingOpenGL2)
 target_compile_definitions(TestBloomPass PRIVATE
   VTKBLOOM_BASELINE_DIR="${vtkbloom_rendering_baselines}")
+
+# The numerical hard cases of issue 4 on the GPU (the CPU suite is NumericsHardCases).
+vtkbloom_add_gtest(TestBloomPassHardCases OPENGL
+  SOURCES Rendering/TestBloomPassHardCases.cxx
+  LIBRARIES vtkbloom_hardcases VTKBloom::RenderingBloom VTKBloom::FiltersBloom
+    VTKBloom::IOOpenEXR VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonDataModel
+    VTK::CommonCore VTK::opengl)
+vtk_module_autoinit(TARGETS TestBloomPassHardCases MODULES VTK::RenderingOpenGL2)
