@@ -35,6 +35,16 @@ inline T Finite(T v)
   return v == v ? std::min(std::max(v, -m), m) : T(0);
 }
 
+// Level samples saturate at +-FLT_MAX: a float32 sum that overflows stays the largest float
+// instead of becoming Inf (and then NaN where a zero weight of a band meets it).
+inline void Saturate(float* __restrict v, size_t n)
+{
+  for (size_t q = 0; q < n; ++q)
+  {
+    v[q] = v[q] > FloatMax ? FloatMax : (v[q] < -FloatMax ? -FloatMax : v[q]);
+  }
+}
+
 // A vtkBloomLinearOperator in float, with its translation-invariant interior found once so the
 // x passes can run it as a flat convolution over interleaved samples (which vectorizes).
 struct Op
@@ -274,6 +284,7 @@ void BlockX(
       for (int r = begin; r < end; ++r)
       {
         RowX<C>(ox, src.Row(r), block.data() + (r - r0) * stride, x0, x1);
+        Saturate(block.data() + (r - r0) * stride, stride);
       }
     });
 }
@@ -318,6 +329,7 @@ void Separable(const Plane& src, const Op& ox, const Op& oy, const Box& box, flo
             d[q] = scale * row[q];
           }
         }
+        Saturate(d, stride);
       }
     });
 }
@@ -1189,6 +1201,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
                   d[q] = w * brow[q];
                 }
               }
+              Saturate(d, stride);
             }
           });
         report.SamplesProcessed += static_cast<long long>(box.X1 - box.X0) * (box.Y1 - box.Y0);

@@ -1,6 +1,7 @@
 // vtkImageBloomThreshold: every mode against the formulas of its class documentation, on value
 // sweeps that cross the threshold, and the documented edge cases (knee 0, value equal to the
 // threshold, negative and non-finite input, alpha, the luminance clamp).
+#include "vtkBloomBrightPass.h"
 #include "vtkBloomReference.h"
 #include "vtkBloomTestSupport.h"
 
@@ -12,9 +13,11 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -405,4 +408,80 @@ TEST(FiltersThreshold, Defaults)
   filter->SetModeToPerChannel();
   EXPECT_EQ(filter->GetMode(), vtkImageBloomThreshold::PER_CHANNEL);
   EXPECT_STRNE(ModeName(0), ModeName(1));
+}
+
+// vtkBloomBrightPassIsZero lets the fused chain skip the full formula for dark samples, so it must
+// never claim zero for a colour that the formula keeps, in float and in double, at the exact
+// edges, for negative, huge and non-finite colours; and it must recognise clearly dark colours
+// (otherwise the fast path never runs).
+namespace
+{
+template <int N, typename Real>
+void CheckIsZeroIsSound(int mode, double threshold, double knee, double clampLuminance)
+{
+  const Real k = static_cast<Real>(threshold * knee);
+  const Real t = static_cast<Real>(threshold);
+  const Real inf = std::numeric_limits<Real>::infinity();
+  const Real special[] = { Real(0), -Real(0), t, t - k, t + k, std::nextafter(t - k, -inf),
+    std::nextafter(t - k, inf), std::nextafter(t, -inf), std::nextafter(t, inf), Real(-1),
+    Real(1e30), std::numeric_limits<Real>::max(), inf, -inf,
+    std::numeric_limits<Real>::quiet_NaN() };
+  std::mt19937 rng(17u + static_cast<unsigned>(mode));
+  std::uniform_real_distribution<double> uniform(0.0, 1.0);
+  int claimed = 0;
+  for (int trial = 0; trial < 20000; ++trial)
+  {
+    Real colour[N];
+    for (int c = 0; c < N; ++c)
+    {
+      const double u = uniform(rng);
+      colour[c] = trial % 3 == 0
+        ? special[static_cast<size_t>(u * (sizeof(special) / sizeof(special[0]))) %
+            (sizeof(special) / sizeof(special[0]))]
+        : static_cast<Real>(4.0 * threshold * (u - 0.25));
+    }
+    if (trial % 7 == 0)
+    {
+      for (int c = 0; c < N; ++c)
+      {
+        colour[c] = colour[0]; // grey: the luminance equals the value, edges are hit exactly
+      }
+    }
+    const bool zero = vtkBloomBrightPassIsZero<N>(colour, mode, threshold, knee, clampLuminance);
+    Real out[N];
+    std::copy(colour, colour + N, out);
+    vtkBloomMapNonFinite<N>(out, std::min(clampLuminance, static_cast<double>(VTK_FLOAT_MAX)));
+    vtkBloomBrightPass<N>(out, mode, threshold, knee, clampLuminance);
+    if (zero)
+    {
+      ++claimed;
+      for (int c = 0; c < N; ++c)
+      {
+        ASSERT_EQ(out[c], Real(0))
+          << "mode " << mode << " knee " << knee << " colour[" << c << "] " << colour[c];
+      }
+    }
+  }
+  EXPECT_GT(claimed, 1000) << "mode " << mode; // dark colours are recognised
+}
+}
+
+TEST(FiltersThreshold, ZeroTestOfTheFusedChainIsSound)
+{
+  for (int mode : { vtkImageBloomThreshold::SMOOTHSTEP_KNEE, vtkImageBloomThreshold::QUADRATIC_KNEE,
+         vtkImageBloomThreshold::HARD_LUMINANCE, vtkImageBloomThreshold::PER_CHANNEL })
+  {
+    for (double knee : { 0.0, 0.5, 1.0 })
+    {
+      for (double clampLuminance : { 1e4, static_cast<double>(VTK_FLOAT_MAX) })
+      {
+        CheckIsZeroIsSound<3, float>(mode, 0.8, knee, clampLuminance);
+        CheckIsZeroIsSound<1, float>(mode, 0.8, knee, clampLuminance);
+        CheckIsZeroIsSound<3, double>(mode, 1.0, knee, clampLuminance);
+      }
+    }
+  }
+  // NONE keeps every colour: nothing is ever claimed zero.
+  const float dark[3] = { 0.0f, 0.0f, 0.0f };
+  EXPECT_FALSE(vtkBloomBrightPassIsZero<3>(dark, vtkImageBloomThreshold::NONE, 1.0, 0.5, 1e4));
 }

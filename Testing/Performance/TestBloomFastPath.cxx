@@ -4,7 +4,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <cstring>
+#include <limits>
 #include <vector>
 
 using namespace vtkBloomPerformanceTest;
@@ -142,4 +144,63 @@ TEST(PerformanceFastPath, WorkspaceIsSmall)
   EXPECT_LE(bloom->GetLastWorkspaceBytes(), 1.5 * frame);
   bloom->ReleaseWorkspace();
   EXPECT_EQ(bloom->GetLastWorkspaceBytes(), 0);
+}
+
+// Finite input near FLT_MAX whose bloom pushes the sums past it. The double reference overflows
+// only when it casts its result; the float32 chain saturates its levels at FLT_MAX (an
+// overflowing sum must not become Inf, and then NaN where a zero band weight meets it, which
+// would drop the bloom). Sanitizing: every output finite and FLT_MAX exactly where the reference
+// gives FLT_MAX. Not sanitizing: no NaN, and >= FLT_MAX where the reference gives +Inf. The
+// composite's short form for clean input must leave the overflow to the general loop.
+TEST(PerformanceFastPath, OverflowOfCleanInput)
+{
+  // The left half at 3e38 in every colour (its bloom is of the same order), the right half dim.
+  auto input = MakeScene(BLOB, 64, 48, 4);
+  float* v = static_cast<float*>(input->GetScalarPointer());
+  for (vtkIdType t = 0; t < input->GetNumberOfPoints(); ++t)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      v[t * 4 + c] = t % 64 < 32 ? 3.0e38f : 0.1f;
+    }
+  }
+  for (bool sanitize : { true, false })
+  {
+    vtkNew<vtkImageBloom> fast, reference;
+    for (vtkImageBloom* bloom : { fast.Get(), reference.Get() })
+    {
+      bloom->SetPreset("webgpu-market");
+      bloom->SetClampLuminance(VTK_FLOAT_MAX);
+      bloom->SetSanitizeNonFinite(sanitize);
+      bloom->SetInputData(input);
+    }
+    reference->SetExecutionMode(vtkImageBloom::REFERENCE);
+    fast->Update();
+    reference->Update();
+    ASSERT_TRUE(fast->GetLastRunWasFast());
+    auto* f = static_cast<const float*>(fast->GetOutput()->GetScalarPointer());
+    auto* r = static_cast<const float*>(reference->GetOutput()->GetScalarPointer());
+    const float largest = std::numeric_limits<float>::max();
+    int overflowed = 0;
+    for (vtkIdType s = 0; s < input->GetNumberOfPoints() * 4; ++s)
+    {
+      ASSERT_FALSE(std::isnan(f[s])) << "sample " << s;
+      if (sanitize)
+      {
+        ASSERT_TRUE(std::isfinite(f[s])) << "sample " << s;
+        if (r[s] == largest)
+        {
+          ++overflowed;
+          ASSERT_EQ(f[s], largest) << "sample " << s;
+        }
+      }
+      else if (std::isinf(r[s]))
+      {
+        ++overflowed;
+        ASSERT_GE(f[s], largest) << "sample " << s;
+      }
+    }
+    EXPECT_GT(overflowed, 0) << "the scene must overflow somewhere";
+    EXPECT_TRUE(AlphaCopied(input, fast->GetOutput()));
+  }
 }
