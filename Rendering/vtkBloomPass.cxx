@@ -44,9 +44,9 @@ namespace
 // Values shared with vtkBloomPassFS.glsl, emitted into the shader as #defines.
 enum
 {
-  AXIS_NONE = -1,
-  AXIS_X = 0,
-  AXIS_Y = 1
+  OP_IDENTITY = 0,
+  OP_TABLE = 1,
+  OP_PERIODIC = 2
 };
 enum
 {
@@ -61,11 +61,11 @@ enum
 std::string ShaderConstants()
 {
   std::ostringstream os;
-  os << "#define AXIS_NONE " << AXIS_NONE << "\n#define AXIS_X " << AXIS_X << "\n#define AXIS_Y "
-     << AXIS_Y << "\n#define STEP_SCALE " << STEP_SCALE << "\n#define STEP_THRESHOLD "
-     << STEP_THRESHOLD << "\n#define STEP_KARIS_TERM " << STEP_KARIS_TERM
-     << "\n#define STEP_KARIS_NORMALIZE " << STEP_KARIS_NORMALIZE << "\n#define STEP_ADD "
-     << STEP_ADD << "\n#define STEP_COMPOSITE " << STEP_COMPOSITE
+  os << "#define OP_IDENTITY " << OP_IDENTITY << "\n#define OP_TABLE " << OP_TABLE
+     << "\n#define OP_PERIODIC " << OP_PERIODIC << "\n#define STEP_SCALE " << STEP_SCALE
+     << "\n#define STEP_THRESHOLD " << STEP_THRESHOLD << "\n#define STEP_KARIS_TERM "
+     << STEP_KARIS_TERM << "\n#define STEP_KARIS_NORMALIZE " << STEP_KARIS_NORMALIZE
+     << "\n#define STEP_ADD " << STEP_ADD << "\n#define STEP_COMPOSITE " << STEP_COMPOSITE
      << "\n#define MODE_SMOOTHSTEP_KNEE " << vtkImageBloomThreshold::SMOOTHSTEP_KNEE
      << "\n#define MODE_QUADRATIC_KNEE " << vtkImageBloomThreshold::QUADRATIC_KNEE
      << "\n#define MODE_HARD_LUMINANCE " << vtkImageBloomThreshold::HARD_LUMINANCE
@@ -74,6 +74,139 @@ std::string ShaderConstants()
      << std::scientific << std::setprecision(9) << VTK_FLOAT_MAX << "\n";
   return os.str();
 }
+
+/**
+ * The translation-invariant interior of a vtkBloomLinearOperator: output samples
+ * [Begin, End) whose rows repeat with period Period, First advancing by Stride per period
+ * (a convolution: period 1, stride 1; a 2:1 resample: 1, 2; a 1:2 resample: 2, 1). It is read
+ * from the operator's own rows, in the float precision the GPU uses, so a pass that computes
+ * the interior from these constants evaluates exactly the operator's weights.
+ */
+struct Interior
+{
+  int Begin = 0;
+  int End = 0; ///< End == Begin: no interior
+  int Period = 0;
+  int Stride = 0;
+  int Taps = 0;
+  int First[2] = { 0, 0 };    ///< First of rows Begin and Begin + 1 (period 2)
+  std::vector<float> Weights; ///< Period rows of Taps weights
+
+  static Interior Find(const vtkBloomLinearOperator& op)
+  {
+    const int n = op.OutputSize;
+    const int width = op.Width;
+    auto weight = [&op, width](int j, int k)
+    { return static_cast<float>(op.Weights[static_cast<size_t>(j) * width + k]); };
+    // Row b is row a moved by `stride` input samples.
+    auto repeats = [&](int a, int b, int stride)
+    {
+      if (op.First[b] != op.First[a] + stride)
+      {
+        return false;
+      }
+      for (int k = 0; k < width; ++k)
+      {
+        if (weight(a, k) != weight(b, k))
+        {
+          return false;
+        }
+      }
+      return true;
+    };
+    // Too short an interior is not worth its own draw.
+    const int minimum = 8;
+    for (int period : { 1, 2 })
+    {
+      const int c = n / 2;
+      if (n < minimum || c + period >= n)
+      {
+        continue;
+      }
+      // A stride of 0 (an input of one sample) would leave the shader independent of the
+      // fragment's position; the table evaluates such an operator.
+      const int stride = op.First[c + period] - op.First[c];
+      if (stride < 1 || !repeats(c, c + period, stride))
+      {
+        continue;
+      }
+      int begin = c, end = c + period + 1;
+      while (begin > 0 && repeats(begin - 1, begin - 1 + period, stride))
+      {
+        --begin;
+      }
+      while (end < n && repeats(end - period, end, stride))
+      {
+        ++end;
+      }
+      if (end - begin < std::max(minimum, 2 * period))
+      {
+        continue;
+      }
+      // Drop the band's zero padding common to every phase.
+      int lo = width, hi = 0;
+      for (int ph = 0; ph < period; ++ph)
+      {
+        for (int k = 0; k < width; ++k)
+        {
+          if (weight(begin + ph, k) != 0.0f)
+          {
+            lo = std::min(lo, k);
+            hi = std::max(hi, k + 1);
+          }
+        }
+      }
+      if (hi <= lo)
+      {
+        continue;
+      }
+      Interior interior;
+      interior.Begin = begin;
+      interior.End = end;
+      interior.Period = period;
+      interior.Stride = stride;
+      interior.Taps = hi - lo;
+      for (int ph = 0; ph < 2; ++ph)
+      {
+        interior.First[ph] = op.First[begin + std::min(ph, period - 1)] + lo;
+      }
+      for (int ph = 0; ph < period; ++ph)
+      {
+        for (int k = lo; k < hi; ++k)
+        {
+          interior.Weights.push_back(weight(begin + ph, k));
+        }
+      }
+      return interior;
+    }
+    return Interior();
+  }
+
+  /// The #defines of OP_PERIODIC along `axis` ("X" or "Y").
+  std::string Defines(const char* axis) const
+  {
+    std::ostringstream os;
+    os << "#define " << axis << "_PERIOD " << this->Period << "\n#define " << axis << "_STRIDE "
+       << this->Stride << "\n#define " << axis << "_TAPS " << this->Taps << "\n#define " << axis
+       << "_WEIGHTS ";
+    // Nine significant digits give back the same float.
+    os << std::scientific << std::setprecision(8);
+    for (size_t i = 0; i < this->Weights.size(); ++i)
+    {
+      os << (i ? ", " : "") << this->Weights[i];
+    }
+    os << "\n";
+    return os.str();
+  }
+};
+
+// A range of output samples along one axis and how the pass evaluates it.
+struct Segment
+{
+  int Begin;
+  int End;
+  int Mode;
+};
 
 // The OpenGL state the pass changes, restored when it returns.
 struct SavedState
@@ -182,8 +315,8 @@ struct SceneTarget : Target
 class vtkBloomPass::vtkInternals
 {
 public:
+  vtkBloomPass* Owner = nullptr;
   vtkOpenGLRenderWindow* Context = nullptr;
-  std::unique_ptr<vtkOpenGLQuadHelper> Quad;
   unsigned int Format = 0;
 
   SceneTarget Scene;
@@ -196,11 +329,23 @@ public:
   std::vector<Target> Levels; // L_i
   std::vector<Target> Work;   // blurred levels and Karis sums
   std::vector<Target> Accum;  // CASCADE accumulation A_i
-  Target Temp;                // the output of every x pass
+  Target Temp;                // the output of every x pass, at most the size of level 0
   Target Full;                // DIRECT: the full-size bloom
   std::map<const vtkBloomLinearOperator*, vtkSmartPointer<vtkTextureObject>> Operators;
+  std::map<const vtkBloomLinearOperator*, Interior> Interiors;
+
+  // One program per variant (operator modes, interior weights, step, flags), made on first use.
+  std::map<std::string, std::unique_ptr<vtkOpenGLQuadHelper>> Programs;
+
+  // Occlusion query that counts the non-zero samples of the bright pass (SkipEmptyBloom).
+  unsigned int Query = 0;
 
   int Passes = 0;
+
+  // Values of the current evaluation that the programs read as uniforms.
+  bool MaskSource = false;
+  bool SanitizeSource = false;
+  bool SanitizeOutput = false;
 
   void ReleaseChain(vtkWindow* w)
   {
@@ -219,6 +364,7 @@ public:
       op.second->ReleaseGraphicsResources(w);
     }
     this->Operators.clear();
+    this->Interiors.clear();
     this->ChainTime = 0;
   }
 
@@ -228,7 +374,16 @@ public:
     this->Scene.ReleaseAll(w);
     this->Emitter.ReleaseAll(w);
     this->Result.Release(w);
-    this->Quad.reset();
+    for (auto& program : this->Programs)
+    {
+      program.second->ReleaseGraphicsResources(w);
+    }
+    this->Programs.clear();
+    if (this->Query)
+    {
+      glDeleteQueries(1, &this->Query);
+      this->Query = 0;
+    }
     this->Context = nullptr;
   }
 
@@ -261,19 +416,108 @@ public:
     return texture;
   }
 
-  // The bound program (the delegate binds its own between our passes).
-  vtkShaderProgram* Program()
+  const Interior& InteriorOf(const vtkBloomLinearOperator& op)
   {
-    this->Context->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-    return this->Quad->Program;
+    auto found = this->Interiors.find(&op);
+    if (found == this->Interiors.end())
+    {
+      found = this->Interiors.emplace(&op, Interior::Find(op)).first;
+    }
+    return found->second;
+  }
+
+  /// The output samples along one axis: the periodic interior, and the borders by table.
+  std::vector<Segment> Segments(const vtkBloomLinearOperator* op, int size)
+  {
+    if (!op)
+    {
+      return { { 0, size, OP_IDENTITY } };
+    }
+    const Interior& interior = this->InteriorOf(*op);
+    if (interior.End <= interior.Begin)
+    {
+      return { { 0, op->OutputSize, OP_TABLE } };
+    }
+    std::vector<Segment> segments;
+    if (interior.Begin > 0)
+    {
+      segments.push_back({ 0, interior.Begin, OP_TABLE });
+    }
+    segments.push_back({ interior.Begin, interior.End, OP_PERIODIC });
+    if (interior.End < op->OutputSize)
+    {
+      segments.push_back({ interior.End, op->OutputSize, OP_TABLE });
+    }
+    return segments;
+  }
+
+  /// What one pass computes: step(Y X source), see vtkBloomPassFS.glsl.
+  struct PassSpec
+  {
+    vtkTextureObject* Source = nullptr;
+    const int* SourceSize = nullptr;
+    const vtkBloomLinearOperator* X = nullptr; ///< null: identity along x
+    const vtkBloomLinearOperator* Y = nullptr; ///< null: identity along y
+    int Step = STEP_SCALE;
+    double Weight = 1.0;
+    bool Blend = false;       ///< add to the target instead of replacing it
+    bool ReadsSource = false; ///< the chain's source: depth mask and sanitizing apply
+    bool DiscardZero = false; ///< leave zero results unwritten (counted by the query)
+    bool CompositeBloom = true;
+    vtkTextureObject* Addend = nullptr; ///< STEP_ADD
+  };
+
+  /// The program of one variant, made on first use; null (with an error) if it fails.
+  vtkOpenGLQuadHelper* Program(const std::string& variant)
+  {
+    std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Programs[variant];
+    if (!quad)
+    {
+      std::string fs = vtkBloomPassFS;
+      vtkShaderProgram::Substitute(fs, "//BLOOM::Constants", ShaderConstants());
+      vtkShaderProgram::Substitute(fs, "//BLOOM::Variant", variant);
+      quad.reset(new vtkOpenGLQuadHelper(this->Context,
+        vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
+    }
+    else
+    {
+      this->Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
+    }
+    if (!quad->Program || !quad->Program->GetCompiled())
+    {
+      vtkErrorWithObjectMacro(this->Owner, << "Could not build the bloom shader program:\n"
+                                           << variant);
+      return nullptr;
+    }
+    return quad.get();
+  }
+
+  std::string Variant(const PassSpec& spec, int xMode, int yMode)
+  {
+    std::ostringstream os;
+    os << "#define X_MODE " << xMode << "\n#define Y_MODE " << yMode << "\n";
+    if (xMode == OP_PERIODIC)
+    {
+      os << this->InteriorOf(*spec.X).Defines("X");
+    }
+    if (yMode == OP_PERIODIC)
+    {
+      os << this->InteriorOf(*spec.Y).Defines("Y");
+    }
+    os << "#define STEP " << spec.Step << "\n#define THRESHOLD_MODE " << this->Chain.ThresholdMode
+       << "\n#define MASK_BY_DEPTH " << (spec.ReadsSource && this->MaskSource ? 1 : 0)
+       << "\n#define SANITIZE_SOURCE " << (spec.ReadsSource && this->SanitizeSource ? 1 : 0)
+       << "\n#define SANITIZE_OUTPUT " << (this->SanitizeOutput ? 1 : 0)
+       << "\n#define COMPOSITE_BLOOM " << (spec.CompositeBloom ? 1 : 0) << "\n#define DISCARD_ZERO "
+       << (spec.DiscardZero ? 1 : 0) << "\n";
+    return os.str();
   }
 
   /**
-   * One full-screen pass into `target` (or the bound framebuffer when null, at `origin`):
-   * the operator `op` along `axis` (null for a point-wise pass) on `source`, then `step`.
+   * One pass into `target` (or the bound framebuffer when null, at `origin`): one draw per
+   * combination of x and y segments, each with the program of its evaluation modes.
    */
-  void Draw(Target* target, const int origin[2], int width, int height, vtkTextureObject* source,
-    const vtkBloomLinearOperator* op, int axis, int step, double weight, bool blend)
+  void Pass(Target* target, const int origin[2], const PassSpec& spec)
   {
     vtkOpenGLState* state = this->Context->GetState();
     if (target)
@@ -281,27 +525,7 @@ public:
       target->FBO->Bind();
       target->FBO->ActivateDrawBuffer(0);
     }
-    vtkShaderProgram* program = this->Program();
-    source->Activate();
-    program->SetUniformi("source", source->GetTextureUnit());
-    vtkTextureObject* rows = nullptr;
-    if (op)
-    {
-      rows = this->OperatorTexture(*op);
-      rows->Activate();
-      program->SetUniformi("operatorRows", rows->GetTextureUnit());
-      program->SetUniformi("bandWidth", op->Width);
-      program->SetUniformi("axis", axis);
-    }
-    else
-    {
-      program->SetUniformi("axis", AXIS_NONE);
-    }
-    const float outputSize[2] = { static_cast<float>(width), static_cast<float>(height) };
-    program->SetUniform2f("outputSize", outputSize);
-    program->SetUniformi("step", step);
-    program->SetUniformf("weight", static_cast<float>(weight));
-    if (blend)
+    if (spec.Blend)
     {
       state->vtkglEnable(GL_BLEND);
       state->vtkglBlendEquation(GL_FUNC_ADD);
@@ -311,14 +535,130 @@ public:
     {
       state->vtkglDisable(GL_BLEND);
     }
-    state->vtkglViewport(origin[0], origin[1], width, height);
-    this->Quad->Render();
-    if (rows)
+    const std::vector<Segment> xs = this->Segments(spec.X, spec.SourceSize[0]);
+    const std::vector<Segment> ys = this->Segments(spec.Y, spec.SourceSize[1]);
+    vtkTextureObject* textures[] = { spec.Source, spec.X ? this->OperatorTexture(*spec.X) : nullptr,
+      spec.Y ? this->OperatorTexture(*spec.Y) : nullptr, spec.Addend,
+      spec.Step == STEP_COMPOSITE ? this->Scene.Color.Get() : nullptr,
+      spec.ReadsSource && this->MaskSource ? this->Emitter.Depth.Get() : nullptr,
+      spec.ReadsSource && this->MaskSource ? this->Scene.Depth.Get() : nullptr };
+    const char* samplers[] = { "source", "xRows", "yRows", "addend", "scene", "emitterDepth",
+      "sceneDepth" };
+    for (vtkTextureObject* texture : textures)
     {
-      rows->Deactivate();
+      if (texture)
+      {
+        texture->Activate();
+      }
     }
-    source->Deactivate();
+    for (const Segment& sy : ys)
+    {
+      for (const Segment& sx : xs)
+      {
+        vtkOpenGLQuadHelper* quad = this->Program(this->Variant(spec, sx.Mode, sy.Mode));
+        if (!quad)
+        {
+          continue;
+        }
+        vtkShaderProgram* program = quad->Program;
+        auto seti = [program](const char* name, int value)
+        {
+          if (program->IsUniformUsed(name))
+          {
+            program->SetUniformi(name, value);
+          }
+        };
+        auto setf = [program](const char* name, double value)
+        {
+          if (program->IsUniformUsed(name))
+          {
+            program->SetUniformf(name, static_cast<float>(value));
+          }
+        };
+        for (size_t t = 0; t < sizeof(textures) / sizeof(textures[0]); ++t)
+        {
+          if (textures[t])
+          {
+            seti(samplers[t], textures[t]->GetTextureUnit());
+          }
+        }
+        const int offset[2] = { sx.Begin, sy.Begin };
+        const float size[2] = { static_cast<float>(sx.End - sx.Begin),
+          static_cast<float>(sy.End - sy.Begin) };
+        program->SetUniform2i("regionOffset", offset);
+        program->SetUniform2f("regionSize", size);
+        setf("weight", spec.Weight);
+        seti("xWidth", spec.X ? spec.X->Width : 0);
+        seti("yWidth", spec.Y ? spec.Y->Width : 0);
+        if (sx.Mode == OP_PERIODIC)
+        {
+          const Interior& in = this->InteriorOf(*spec.X);
+          const int values[3] = { in.Begin, in.First[0], in.First[1] };
+          program->SetUniform1iv("xInterior", 3, values);
+        }
+        if (sy.Mode == OP_PERIODIC)
+        {
+          const Interior& in = this->InteriorOf(*spec.Y);
+          const int values[3] = { in.Begin, in.First[0], in.First[1] };
+          program->SetUniform1iv("yInterior", 3, values);
+        }
+        this->SetStepUniforms(program, spec.Step);
+        state->vtkglViewport(
+          origin[0] + sx.Begin, origin[1] + sy.Begin, sx.End - sx.Begin, sy.End - sy.Begin);
+        quad->Render();
+      }
+    }
+    for (vtkTextureObject* texture : textures)
+    {
+      if (texture)
+      {
+        texture->Deactivate();
+      }
+    }
     ++this->Passes;
+  }
+
+  void SetStepUniforms(vtkShaderProgram* program, int step)
+  {
+    const vtkBloomChain& c = this->Chain;
+    auto setf = [program](const char* name, double value)
+    {
+      if (program->IsUniformUsed(name))
+      {
+        program->SetUniformf(name, static_cast<float>(value));
+      }
+    };
+    auto set3f = [program](const char* name, const double values[3])
+    {
+      const float v[3] = { static_cast<float>(values[0]), static_cast<float>(values[1]),
+        static_cast<float>(values[2]) };
+      if (program->IsUniformUsed(name))
+      {
+        program->SetUniform3f(name, v);
+      }
+    };
+    if (step == STEP_THRESHOLD || step == STEP_KARIS_TERM)
+    {
+      const double luma[3] = { vtkBloomKernels::LuminanceR, vtkBloomKernels::LuminanceG,
+        vtkBloomKernels::LuminanceB };
+      set3f("lumaWeights", luma);
+    }
+    if (step == STEP_THRESHOLD)
+    {
+      const double clampLum = std::min(c.ClampLuminance, static_cast<double>(VTK_FLOAT_MAX));
+      setf("threshold", c.Threshold);
+      setf("knee", c.Knee);
+      setf("clampLuminance", clampLum);
+      setf("ceiling", clampLum);
+    }
+    if (step == STEP_COMPOSITE)
+    {
+      setf("keep", c.Keep);
+      const double strengthTint[3] = { c.Strength * c.Tint[0], c.Strength * c.Tint[1],
+        c.Strength * c.Tint[2] };
+      set3f("strengthTint", strengthTint);
+      setf("largest", this->Format == GL_RGBA32F ? VTK_FLOAT_MAX : 65504.0);
+    }
   }
 
   void Clear(Target& target)
@@ -331,40 +671,12 @@ public:
     state->vtkglClear(GL_COLOR_BUFFER_BIT);
   }
 
-  // How the first pass reads the chain's source: masked by depth (selective bloom) and with
-  // non-finite samples replaced (SanitizeNonFinite), as vtkImageBloom reads its input.
-  bool MaskSource = false;
-  bool SanitizeSource = false;
-
-  /// Whether the next passes read the chain's source (the scene or the emitters).
-  void ReadingSource(bool source)
-  {
-    vtkShaderProgram* program = this->Program();
-    program->SetUniformi("maskByDepth", source && this->MaskSource ? 1 : 0);
-    program->SetUniformi("sanitizeSource", source && this->SanitizeSource ? 1 : 0);
-  }
-
-  /**
-   * dst = step(term.Y term.X src): the x pass into Temp, then the y pass into dst (blended
-   * additively when `blend`). `source`: src is the chain's source (first pass only).
-   */
-  void Separable(vtkTextureObject* src, int srcHeight, const vtkBloomChain::Term& term, Target& dst,
-    int step, double weight, bool blend, bool source)
-  {
-    const int zero[2] = { 0, 0 };
-    this->ReadingSource(source);
-    this->Draw(&this->Temp, zero, term.X.OutputSize, srcHeight, src, &term.X, AXIS_X, STEP_SCALE,
-      1.0, false);
-    this->ReadingSource(false);
-    this->Draw(&dst, zero, term.X.OutputSize, term.Y.OutputSize, this->Temp.Color, &term.Y, AXIS_Y,
-      step, weight, blend);
-  }
-
   bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h);
   void RenderDelegate(vtkBloomPass* self, const vtkRenderState* s, SceneTarget& target,
     vtkProp** props, int count, bool emitters);
-  void RunChain(vtkTextureObject* emission, bool mask, bool sanitize);
-  void Composite(vtkBloomPass* self, Target* target, const int origin[2], int width, int height);
+  bool RunChain(vtkBloomPass* self, vtkTextureObject* emission, bool mask);
+  void Composite(Target* target, const int origin[2], bool bloom);
+  void Copy(Target* target, const int origin[2], Target& source);
 };
 
 //------------------------------------------------------------------------------
@@ -382,22 +694,6 @@ bool vtkBloomPass::vtkInternals::Prepare(
     this->ReleaseAll(window);
     this->Context = window;
     this->Format = format;
-  }
-  if (!this->Quad)
-  {
-    std::string fs = vtkBloomPassFS;
-    vtkShaderProgram::Substitute(fs, "//BLOOM::Constants", ShaderConstants());
-    this->Quad.reset(new vtkOpenGLQuadHelper(
-      window, vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
-  }
-  else
-  {
-    window->GetShaderCache()->ReadyShaderProgram(this->Quad->Program);
-  }
-  if (!this->Quad->Program || !this->Quad->Program->GetCompiled())
-  {
-    vtkErrorWithObjectMacro(self, << "Could not build the bloom shader program.");
-    return false;
   }
   this->Passes = 0;
   this->Scene.AllocateWithDepth(window, w, h, format);
@@ -437,7 +733,10 @@ bool vtkBloomPass::vtkInternals::Prepare(
     }
     if (n > 0)
     {
-      this->Temp.Allocate(window, w, h, chainFormat);
+      // The x passes run on the levels only (the source fetch and the final resample are
+      // two-dimensional passes), so level 0 is the largest intermediate.
+      this->Temp.Allocate(
+        window, this->Chain.Levels[0].Size[0], this->Chain.Levels[0].Size[1], chainFormat);
       if (this->Chain.AccumulateMode == vtkImageBloom::DIRECT)
       {
         this->Full.Allocate(window, w, h, chainFormat);
@@ -500,177 +799,230 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPass::vtkInternals::RunChain(vtkTextureObject* emission, bool mask, bool sanitize)
+bool vtkBloomPass::vtkInternals::RunChain(vtkBloomPass* self, vtkTextureObject* emission, bool mask)
 {
-  this->MaskSource = mask;
-  this->SanitizeSource = sanitize;
   const vtkBloomChain& c = this->Chain;
+  vtkImageBloom* p = self->Parameters;
+  this->MaskSource = mask;
+  this->SanitizeSource = p->GetSanitizeNonFinite();
+  this->SanitizeOutput = p->GetSanitizeNonFinite();
   const size_t n = c.Levels.size();
   if (n == 0)
   {
-    return;
+    return false;
   }
-  vtkShaderProgram* program = this->Program();
+  if (p->GetSkipDisabledEffects())
+  {
+    // As vtkImageBloom::BloomIsDisabled: Strength 0, a black tint or every level weight 0.
+    bool zeroTerm = true, zeroWeights = true;
+    for (int i = 0; i < 3; ++i)
+    {
+      zeroTerm &= c.Strength * c.Tint[i] == 0.0;
+    }
+    for (const auto& level : c.Levels)
+    {
+      zeroWeights &= level.Weight == 0.0;
+    }
+    if (zeroTerm || zeroWeights)
+    {
+      return false;
+    }
+  }
   const int zero[2] = { 0, 0 };
-  this->ReadingSource(false);
-  program->SetUniformi("thresholdMode", c.ThresholdMode);
-  program->SetUniformf("threshold", static_cast<float>(c.Threshold));
-  program->SetUniformf("knee", static_cast<float>(c.Knee));
-  const double clampLum = std::min(c.ClampLuminance, static_cast<double>(VTK_FLOAT_MAX));
-  program->SetUniformf("clampLuminance", static_cast<float>(clampLum));
-  program->SetUniformf("ceiling", static_cast<float>(clampLum));
-  const float luma[3] = { static_cast<float>(vtkBloomKernels::LuminanceR),
-    static_cast<float>(vtkBloomKernels::LuminanceG),
-    static_cast<float>(vtkBloomKernels::LuminanceB) };
-  program->SetUniform3f("lumaWeights", luma);
 
-  // 1. Bright pass: fetch first (the source operator), threshold second.
-  if (mask)
+  // 1. Bright pass: the source fetch and the threshold in one pass. With SkipEmptyBloom the
+  // zero samples are not written (the level is cleared first) and an occlusion query counts
+  // the others: a reduction over the whole bright pass that costs no extra pass, and whose
+  // readback only waits for this pass.
+  const bool skipEmpty = p->GetSkipEmptyBloom();
+  PassSpec bright;
+  bright.Source = emission;
+  const int full[2] = { c.Width, c.Height };
+  bright.SourceSize = full;
+  bright.X = c.SourceIsIdentity ? nullptr : &c.Source.X;
+  bright.Y = c.SourceIsIdentity ? nullptr : &c.Source.Y;
+  bright.Step = STEP_THRESHOLD;
+  bright.ReadsSource = true;
+  bright.DiscardZero = skipEmpty;
+  if (skipEmpty)
   {
-    this->Emitter.Depth->Activate();
-    this->Scene.Depth->Activate();
-    program->SetUniformi("emitterDepth", this->Emitter.Depth->GetTextureUnit());
-    program->SetUniformi("sceneDepth", this->Scene.Depth->GetTextureUnit());
+    this->Clear(this->Levels[0]);
+    if (!this->Query)
+    {
+      glGenQueries(1, &this->Query);
+    }
+    glBeginQuery(GL_SAMPLES_PASSED, this->Query);
   }
-  if (c.SourceIsIdentity)
+  this->Pass(&this->Levels[0], zero, bright);
+  if (skipEmpty)
   {
-    this->ReadingSource(true);
-    this->Draw(&this->Levels[0], zero, c.Width, c.Height, emission, nullptr, AXIS_NONE,
-      STEP_THRESHOLD, 1.0, false);
-    this->ReadingSource(false);
-  }
-  else
-  {
-    this->Separable(
-      emission, c.Height, c.Source, this->Levels[0], STEP_THRESHOLD, 1.0, false, true);
-  }
-  if (mask)
-  {
-    this->Scene.Depth->Deactivate();
-    this->Emitter.Depth->Deactivate();
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint samples = 0;
+    glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &samples);
+    if (samples == 0)
+    {
+      return false; // nothing is bright: every level, and so the bloom, is zero
+    }
   }
 
-  // 2. The pyramid, each level from the unblurred level above it.
+  // 2. The pyramid, each level from the unblurred level above it; each term is one
+  // two-dimensional pass, added to the previous terms.
   for (size_t i = 1; i < n; ++i)
   {
     const vtkBloomChain::Level& level = c.Levels[i];
     Target& dst = level.Karis ? this->Work[i] : this->Levels[i];
-    const bool single = level.Down.size() == 1 && !level.Karis;
-    if (!single)
+    for (size_t t = 0; t < level.Down.size(); ++t)
     {
-      this->Clear(dst);
-    }
-    for (const auto& term : level.Down)
-    {
-      this->Separable(this->Levels[i - 1].Color, this->Levels[i - 1].Size[1], term, dst,
-        level.Karis ? STEP_KARIS_TERM : STEP_SCALE, term.Weight, !single, false);
+      const vtkBloomChain::Term& term = level.Down[t];
+      PassSpec down;
+      down.Source = this->Levels[i - 1].Color;
+      down.SourceSize = this->Levels[i - 1].Size;
+      down.X = &term.X;
+      down.Y = &term.Y;
+      down.Step = level.Karis ? STEP_KARIS_TERM : STEP_SCALE;
+      down.Weight = term.Weight;
+      down.Blend = t > 0;
+      this->Pass(&dst, zero, down);
     }
     if (level.Karis)
     {
-      this->Draw(&this->Levels[i], zero, level.Size[0], level.Size[1], this->Work[i].Color, nullptr,
-        AXIS_NONE, STEP_KARIS_NORMALIZE, 1.0, false);
+      PassSpec normalize;
+      normalize.Source = this->Work[i].Color;
+      normalize.SourceSize = level.Size;
+      normalize.Step = STEP_KARIS_NORMALIZE;
+      this->Pass(&this->Levels[i], zero, normalize);
     }
   }
 
-  // 3. Blur the levels that contribute.
+  // 3. Blur the levels that contribute: x into Temp, y into Work (CASCADE: the last level
+  // goes straight into its accumulation, scaled by its weight).
+  const size_t last = n - 1;
+  const bool cascade = c.AccumulateMode != vtkImageBloom::DIRECT;
   std::vector<Target*> blurred(n);
+  bool lastAccumulated = false;
   for (size_t i = 0; i < n; ++i)
   {
     const vtkBloomChain::Level& level = c.Levels[i];
     blurred[i] = &this->Levels[i];
-    if (level.Blur)
+    if (!level.Blur)
     {
-      this->Separable(this->Levels[i].Color, level.Size[1], level.BlurPass, this->Work[i],
-        STEP_SCALE, 1.0, false, false);
+      continue;
+    }
+    PassSpec x;
+    x.Source = this->Levels[i].Color;
+    x.SourceSize = level.Size;
+    x.X = &level.BlurPass.X;
+    this->Pass(&this->Temp, zero, x);
+    PassSpec y;
+    y.Source = this->Temp.Color;
+    y.SourceSize = level.Size;
+    y.Y = &level.BlurPass.Y;
+    if (cascade && i == last)
+    {
+      y.Weight = level.Weight;
+      this->Pass(&this->Accum[last], zero, y);
+      lastAccumulated = true;
+    }
+    else
+    {
+      this->Pass(&this->Work[i], zero, y);
       blurred[i] = &this->Work[i];
     }
   }
 
   // 4. Accumulate.
-  if (c.AccumulateMode == vtkImageBloom::DIRECT)
+  if (!cascade)
   {
-    this->Clear(this->Full);
+    bool first = true;
     for (size_t i = 0; i < n; ++i)
     {
       const vtkBloomChain::Level& level = c.Levels[i];
       if (level.Weight != 0.0)
       {
-        this->Separable(blurred[i]->Color, level.Size[1], level.Full, this->Full, STEP_SCALE,
-          level.Weight, true, false);
+        PassSpec up;
+        up.Source = blurred[i]->Color;
+        up.SourceSize = level.Size;
+        up.X = &level.Full.X;
+        up.Y = &level.Full.Y;
+        up.Weight = level.Weight;
+        up.Blend = !first;
+        this->Pass(&this->Full, zero, up);
+        first = false;
       }
     }
-    return;
+    if (first)
+    {
+      this->Clear(this->Full);
+    }
+    return true;
   }
-  const size_t last = n - 1;
-  this->Draw(&this->Accum[last], zero, c.Levels[last].Size[0], c.Levels[last].Size[1],
-    blurred[last]->Color, nullptr, AXIS_NONE, STEP_SCALE, c.Levels[last].Weight, false);
+  if (!lastAccumulated)
+  {
+    PassSpec scale;
+    scale.Source = blurred[last]->Color;
+    scale.SourceSize = c.Levels[last].Size;
+    scale.Weight = c.Levels[last].Weight;
+    this->Pass(&this->Accum[last], zero, scale);
+  }
   for (size_t i = last; i-- > 0;)
   {
     const vtkBloomChain::Level& level = c.Levels[i];
-    const vtkTextureObject* previous = this->Accum[i + 1].Color;
-    const int previousHeight = this->Accum[i + 1].Size[1];
+    PassSpec x;
+    x.Source = this->Accum[i + 1].Color;
+    x.SourceSize = this->Accum[i + 1].Size;
+    x.X = &level.Up.X;
+    this->Pass(&this->Temp, zero, x);
+    PassSpec y;
+    y.Source = this->Temp.Color;
+    const int size[2] = { level.Size[0], this->Accum[i + 1].Size[1] };
+    y.SourceSize = size;
+    y.Y = &level.Up.Y;
     if (level.Weight != 0.0)
     {
-      vtkTextureObject* addend = blurred[i]->Color;
-      addend->Activate();
-      program->SetUniformi("addend", addend->GetTextureUnit());
-      this->Separable(const_cast<vtkTextureObject*>(previous), previousHeight, level.Up,
-        this->Accum[i], STEP_ADD, level.Weight, false, false);
-      addend->Deactivate();
+      y.Step = STEP_ADD;
+      y.Weight = level.Weight;
+      y.Addend = blurred[i]->Color;
     }
-    else
-    {
-      this->Separable(const_cast<vtkTextureObject*>(previous), previousHeight, level.Up,
-        this->Accum[i], STEP_SCALE, 1.0, false, false);
-    }
+    this->Pass(&this->Accum[i], zero, y);
   }
-  if (!c.FinalIsIdentity)
-  {
-    // The x half of the final upsample; its y half runs in the composite.
-    this->Draw(&this->Temp, zero, c.Width, c.Levels[0].Size[1], this->Accum[0].Color, &c.Final.X,
-      AXIS_X, STEP_SCALE, 1.0, false);
-  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPass::vtkInternals::Composite(
-  vtkBloomPass* self, Target* target, const int origin[2], int width, int height)
+void vtkBloomPass::vtkInternals::Composite(Target* target, const int origin[2], bool bloom)
 {
+  // out = keep * scene + Strength * Tint * bloom, the final resample of CASCADE included.
   const vtkBloomChain& c = this->Chain;
-  this->ReadingSource(false);
-  vtkShaderProgram* program = this->Program();
-  program->SetUniformf("keep", static_cast<float>(c.Keep));
-  float strengthTint[3];
-  for (int i = 0; i < 3; ++i)
+  const int full[2] = { c.Width, c.Height };
+  PassSpec composite;
+  composite.Step = STEP_COMPOSITE;
+  composite.Source = this->Scene.Color;
+  composite.SourceSize = full;
+  composite.CompositeBloom = bloom;
+  if (bloom && c.AccumulateMode == vtkImageBloom::DIRECT)
   {
-    strengthTint[i] = c.Levels.empty() ? 0.0f : static_cast<float>(c.Strength * c.Tint[i]);
+    composite.Source = this->Full.Color;
   }
-  program->SetUniform3f("strengthTint", strengthTint);
-  program->SetUniformi("sanitize", self->Parameters->GetSanitizeNonFinite() ? 1 : 0);
-  program->SetUniformf("largest", this->Format == GL_RGBA32F ? VTK_FLOAT_MAX : 65504.0f);
-  this->Scene.Color->Activate();
-  program->SetUniformi("scene", this->Scene.Color->GetTextureUnit());
-  if (c.Levels.empty())
+  else if (bloom)
   {
-    this->Draw(target, origin, width, height, this->Scene.Color, nullptr, AXIS_NONE, STEP_COMPOSITE,
-      1.0, false);
+    composite.Source = this->Accum[0].Color;
+    if (!c.FinalIsIdentity)
+    {
+      composite.SourceSize = this->Accum[0].Size;
+      composite.X = &c.Final.X;
+      composite.Y = &c.Final.Y;
+    }
   }
-  else if (c.AccumulateMode == vtkImageBloom::DIRECT)
-  {
-    this->Draw(target, origin, width, height, this->Full.Color, nullptr, AXIS_NONE, STEP_COMPOSITE,
-      1.0, false);
-  }
-  else if (c.FinalIsIdentity)
-  {
-    this->Draw(target, origin, width, height, this->Accum[0].Color, nullptr, AXIS_NONE,
-      STEP_COMPOSITE, 1.0, false);
-  }
-  else
-  {
-    this->Draw(target, origin, width, height, this->Temp.Color, &c.Final.Y, AXIS_Y, STEP_COMPOSITE,
-      1.0, false);
-  }
-  this->Scene.Color->Deactivate();
+  this->Pass(target, origin, composite);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::vtkInternals::Copy(Target* target, const int origin[2], Target& source)
+{
+  PassSpec copy;
+  copy.Source = source.Color;
+  copy.SourceSize = source.Size;
+  this->Pass(target, origin, copy);
 }
 
 //------------------------------------------------------------------------------
@@ -681,8 +1033,10 @@ vtkBloomPass::vtkBloomPass()
   , EmissionSource(EMISSION_SCENE)
   , CaptureResult(false)
   , NumberOfPasses(0)
+  , LastBloomSkipped(false)
   , Internals(new vtkInternals)
 {
+  this->Internals->Owner = this;
 }
 
 //------------------------------------------------------------------------------
@@ -856,20 +1210,20 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // 2. The chain, then 3. the composite into the framebuffer the pass was called with.
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  in.RunChain(selective ? in.Emitter.Color : in.Scene.Color, selective,
-    this->Parameters->GetSanitizeNonFinite());
+  const bool bloom = in.RunChain(this, selective ? in.Emitter.Color : in.Scene.Color, selective);
+  this->LastBloomSkipped = !bloom;
   const int zero[2] = { 0, 0 };
   const int origin[2] = { x, y };
   if (this->CaptureResult)
   {
-    in.Composite(this, &in.Result, zero, w, h);
+    in.Composite(&in.Result, zero, bloom);
     state->PopFramebufferBindings();
-    in.Draw(nullptr, origin, w, h, in.Result.Color, nullptr, AXIS_NONE, STEP_SCALE, 1.0, false);
+    in.Copy(nullptr, origin, in.Result);
   }
   else
   {
     state->PopFramebufferBindings();
-    in.Composite(this, nullptr, origin, w, h);
+    in.Composite(nullptr, origin, bloom);
   }
   this->NumberOfPasses = in.Passes;
   vtkOpenGLCheckErrorMacro("failed after vtkBloomPass::Render");
@@ -928,9 +1282,10 @@ bool vtkBloomPass::ApplyToImage(
   state->PushFramebufferBindings();
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  in.RunChain(in.Scene.Color, false, this->Parameters->GetSanitizeNonFinite());
+  const bool bloom = in.RunChain(this, in.Scene.Color, false);
+  this->LastBloomSkipped = !bloom;
   const int zero[2] = { 0, 0 };
-  in.Composite(this, &in.Result, zero, w, h);
+  in.Composite(&in.Result, zero, bloom);
   state->PopFramebufferBindings();
   this->NumberOfPasses = in.Passes;
 
@@ -1011,6 +1366,7 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Emitters: " << this->Emitters->GetNumberOfItems() << "\n";
   os << indent << "CaptureResult: " << (this->CaptureResult ? "On" : "Off") << "\n";
   os << indent << "NumberOfPasses: " << this->NumberOfPasses << "\n";
+  os << indent << "LastBloomSkipped: " << (this->LastBloomSkipped ? "On" : "Off") << "\n";
   os << indent << "Parameters:\n";
   this->Parameters->PrintSelf(os, indent.GetNextIndent());
 }

@@ -152,8 +152,20 @@ public:
    */
   bool ApplyToImage(vtkOpenGLRenderWindow* window, vtkImageData* input, vtkImageData* output);
 
-  /// Number of GPU passes the last evaluation ran (0 when the bloom was skipped).
+  /**
+   * Number of GPU passes the last evaluation ran, the composite included (a pass may be drawn
+   * as several rectangles: the operators' interiors and their borders). It is 2 (the bright
+   * pass and the composite) when nothing passed the bright pass.
+   */
   vtkGetMacro(NumberOfPasses, int);
+
+  /**
+   * Whether the last evaluation skipped the bloom chain, as vtkImageBloom::GetLastBloomSkipped:
+   * no level fits the image, the effect is off (SkipDisabledEffects) or nothing passed the
+   * bright pass (SkipEmptyBloom; on the GPU an occlusion query counts the bright pass's
+   * non-zero samples). The output is then keep * scene, bit for bit as the chain would give.
+   */
+  vtkGetMacro(LastBloomSkipped, bool);
 
 protected:
   vtkBloomPass();
@@ -165,6 +177,7 @@ protected:
   int EmissionSource;
   bool CaptureResult;
   int NumberOfPasses;
+  bool LastBloomSkipped;
 
 private:
   vtkBloomPass(const vtkBloomPass&) = delete;

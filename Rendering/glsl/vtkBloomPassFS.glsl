@@ -3,12 +3,29 @@
 /*=========================================================================
   vtkBloomPassFS.glsl: one full-screen pass of vtkBloomPass.
 
-  A pass applies one banded linear operator (vtkBloomLinearOperator, computed on the CPU by the
-  same code as the vtkImageBloom filters) along one axis, then one point-wise step. Row j of
-  `operatorRows` holds the index of the first input sample in texel 0 and the band's weights in
-  texels 1..bandWidth. Every fetch is an exact texelFetch: bilinear interpolation and border
-  clamping are already folded into the weights, so no hardware filtering is involved and odd
-  sizes behave exactly as on the CPU.
+  A pass applies up to two banded linear operators (vtkBloomLinearOperator, computed on the CPU
+  by the same code as the vtkImageBloom filters), one along x and one along y, then one
+  point-wise step:
+
+    sum(p) = sum_ky Wy[p.y][ky] * ( sum_kx Wx[p.x][kx] * source[Fx[p.x] + kx, Fy[p.y] + ky] )
+
+  which is the separable x pass followed by the y pass, summed in the same order. Each axis is
+  evaluated in one of three ways, chosen per program by vtkBloomPass (no run-time branch on a
+  uniform: llvmpipe would execute both sides):
+
+  - OP_IDENTITY: the axis is not resampled (one tap of weight 1);
+  - OP_TABLE: row j of the texture `xRows`/`yRows` holds First[j] in texel 0 and the band's
+    weights in texels 1..width (any operator, any output sample);
+  - OP_PERIODIC: the operator's interior, where First[j + PERIOD] = First[j] + STRIDE and the
+    rows repeat with period PERIOD (1 for a convolution or a 2:1 resample, 2 for a 1:2
+    resample); the weights are compile-time constants taken from the operator's own rows, and
+    First is computed from the interior's first rows (uniforms). The border samples are drawn
+    separately with OP_TABLE.
+
+  Every fetch is an exact texelFetch of the RGBA float source: bilinear interpolation and
+  border clamping are already folded into the weights, so no hardware filtering is involved
+  and odd sizes behave exactly as on the CPU. Zero weights are skipped, so 0 * Inf never makes
+  a NaN.
 =========================================================================*/
 
 //VTK::Output::Dec
@@ -17,56 +34,147 @@ in vec2 texCoord;
 
 //BLOOM::Constants
 
-uniform sampler2D source;       // the operator's input
-uniform sampler2D operatorRows; // First and Weights of the operator, one row per output sample
-uniform int bandWidth;          // vtkBloomLinearOperator::Width
-uniform int axis;               // AXIS_X, AXIS_Y or AXIS_NONE (point-wise pass)
-uniform vec2 outputSize;        // samples of the output, the size of the viewport
-uniform int step;               // the point-wise step after the operator
-uniform float weight;           // SCALE, KARIS_TERM and ADD weight
+//BLOOM::Variant
 
+uniform sampler2D source; // the operators' input
+uniform ivec2 regionOffset; // the first output sample this draw computes
+uniform vec2 regionSize;    // the samples this draw computes, the size of the viewport
+uniform float weight;       // SCALE, KARIS_TERM and ADD weight
+
+#if X_MODE == OP_TABLE
+uniform sampler2D xRows;
+uniform int xWidth;
+#define X_COUNT xWidth
+#elif X_MODE == OP_PERIODIC
+uniform int xInterior[3]; // first interior output sample, First of its first two rows
+const float xWeights[X_PERIOD * X_TAPS] = float[](X_WEIGHTS);
+#define X_COUNT X_TAPS
+#else
+#define X_COUNT 1
+#endif
+
+#if Y_MODE == OP_TABLE
+uniform sampler2D yRows;
+uniform int yWidth;
+#define Y_COUNT yWidth
+#elif Y_MODE == OP_PERIODIC
+uniform int yInterior[3];
+const float yWeights[Y_PERIOD * Y_TAPS] = float[](Y_WEIGHTS);
+#define Y_COUNT Y_TAPS
+#else
+#define Y_COUNT 1
+#endif
+
+#if MASK_BY_DEPTH
 // Selective bloom: source samples count only where the emitter is the visible surface.
-uniform int maskByDepth;
 uniform sampler2D emitterDepth;
 uniform sampler2D sceneDepth;
+#endif
 
+#if STEP == STEP_THRESHOLD
 // Bright pass (vtkImageBloomThreshold::BrightPass).
-uniform int thresholdMode;
 uniform float threshold;
 uniform float knee;
 uniform float clampLuminance;
 uniform float ceiling; // min(clampLuminance, largest float)
+#endif
+#if STEP == STEP_THRESHOLD || STEP == STEP_KARIS_TERM
 uniform vec3 lumaWeights;
+#endif
 
-// ADD and COMPOSITE.
+#if STEP == STEP_ADD
 uniform sampler2D addend;
+#endif
+#if STEP == STEP_COMPOSITE
 uniform sampler2D scene;
 uniform float keep;
 uniform vec3 strengthTint;
-uniform int sanitize;
 uniform float largest; // largest finite value of the output target
+#endif
+
+// First sample and phase of the output sample j along each axis.
+int xFirst;
+int xPhase;
+int yFirst;
+int yPhase;
+
+void setUpX(int j)
+{
+#if X_MODE == OP_TABLE
+  xFirst = int(texelFetch(xRows, ivec2(0, j), 0).r);
+#elif X_MODE == OP_PERIODIC
+  int m = (j - xInterior[0]) / X_PERIOD;
+  xPhase = j - xInterior[0] - m * X_PERIOD;
+  xFirst = (xPhase == 0 ? xInterior[1] : xInterior[2]) + X_STRIDE * m;
+#else
+  xFirst = j;
+#endif
+}
+
+float weightX(int j, int k)
+{
+#if X_MODE == OP_TABLE
+  return texelFetch(xRows, ivec2(k + 1, j), 0).r;
+#elif X_MODE == OP_PERIODIC
+#if X_PERIOD == 1
+  return xWeights[k];
+#else
+  return xPhase == 0 ? xWeights[k] : xWeights[X_TAPS + k];
+#endif
+#else
+  return 1.0;
+#endif
+}
+
+void setUpY(int j)
+{
+#if Y_MODE == OP_TABLE
+  yFirst = int(texelFetch(yRows, ivec2(0, j), 0).r);
+#elif Y_MODE == OP_PERIODIC
+  int m = (j - yInterior[0]) / Y_PERIOD;
+  yPhase = j - yInterior[0] - m * Y_PERIOD;
+  yFirst = (yPhase == 0 ? yInterior[1] : yInterior[2]) + Y_STRIDE * m;
+#else
+  yFirst = j;
+#endif
+}
+
+float weightY(int j, int k)
+{
+#if Y_MODE == OP_TABLE
+  return texelFetch(yRows, ivec2(k + 1, j), 0).r;
+#elif Y_MODE == OP_PERIODIC
+#if Y_PERIOD == 1
+  return yWeights[k];
+#else
+  return yPhase == 0 ? yWeights[k] : yWeights[Y_TAPS + k];
+#endif
+#else
+  return 1.0;
+#endif
+}
 
 // The chain's source as vtkImageBloom reads its input: with SanitizeNonFinite, NaN becomes 0
 // and +-Inf the largest finite float, before any resampling.
-uniform int sanitizeSource;
-
 vec4 fetchSource(ivec2 q)
 {
   vec4 value = texelFetch(source, q, 0);
-  if (sanitizeSource != 0)
+#if SANITIZE_SOURCE
+  for (int i = 0; i < 4; ++i)
   {
-    for (int i = 0; i < 4; ++i)
-    {
-      value[i] = isnan(value[i]) ? 0.0 : clamp(value[i], -FLOAT_MAX, FLOAT_MAX);
-    }
+    value[i] = isnan(value[i]) ? 0.0 : clamp(value[i], -FLOAT_MAX, FLOAT_MAX);
   }
-  if (maskByDepth != 0 && texelFetch(emitterDepth, q, 0).r > texelFetch(sceneDepth, q, 0).r)
+#endif
+#if MASK_BY_DEPTH
+  if (texelFetch(emitterDepth, q, 0).r > texelFetch(sceneDepth, q, 0).r)
   {
     value = vec4(0.0);
   }
+#endif
   return value;
 }
 
+#if STEP == STEP_THRESHOLD
 // vtkBloomBrightPass.h: non-finite colours are mapped in every mode (vtkBloomMapNonFinite),
 // then the threshold (vtkBloomBrightPass).
 vec3 brightPass(vec3 c)
@@ -82,10 +190,9 @@ vec3 brightPass(vec3 c)
       c[i] = c[i] > 0.0 ? ceiling : 0.0;
     }
   }
-  if (thresholdMode == MODE_NONE)
-  {
-    return c;
-  }
+#if THRESHOLD_MODE == MODE_NONE
+  return c;
+#else
   float lum = dot(c, lumaWeights);
   // Firefly guard: scale the colour so that its luminance does not exceed the clamp.
   if (lum > clampLuminance)
@@ -98,30 +205,26 @@ vec3 brightPass(vec3 c)
   }
   float k = threshold * knee;
   float factor = 1.0;
-  if (thresholdMode == MODE_SMOOTHSTEP_KNEE)
-  {
-    // knee 0 is the step lum >= threshold; smoothstep(t, t, x) is undefined.
-    factor = k > 0.0 ? smoothstep(threshold - k, threshold + k, lum)
-                     : (lum >= threshold ? 1.0 : 0.0);
-  }
-  else if (thresholdMode == MODE_QUADRATIC_KNEE)
-  {
-    float brightness = max(c.r, max(c.g, c.b));
-    float q = clamp(brightness - threshold + k, 0.0, 2.0 * k);
-    q = q * q / (4.0 * k + 1e-5);
-    factor = max(q, brightness - threshold) / max(brightness, 1e-5);
-  }
-  else if (thresholdMode == MODE_HARD_LUMINANCE)
-  {
-    factor = lum > threshold ? 1.0 : 0.0;
-  }
-  else if (thresholdMode == MODE_PER_CHANNEL)
-  {
-    return max(c - vec3(threshold), vec3(0.0));
-  }
+#if THRESHOLD_MODE == MODE_SMOOTHSTEP_KNEE
+  // knee 0 is the step lum >= threshold; smoothstep(t, t, x) is undefined.
+  factor =
+    k > 0.0 ? smoothstep(threshold - k, threshold + k, lum) : (lum >= threshold ? 1.0 : 0.0);
+#elif THRESHOLD_MODE == MODE_QUADRATIC_KNEE
+  float brightness = max(c.r, max(c.g, c.b));
+  float q = clamp(brightness - threshold + k, 0.0, 2.0 * k);
+  q = q * q / (4.0 * k + 1e-5);
+  factor = max(q, brightness - threshold) / max(brightness, 1e-5);
+#elif THRESHOLD_MODE == MODE_HARD_LUMINANCE
+  factor = lum > threshold ? 1.0 : 0.0;
+#elif THRESHOLD_MODE == MODE_PER_CHANNEL
+  return max(c - vec3(threshold), vec3(0.0));
+#endif
   return max(c * factor, vec3(0.0));
+#endif
 }
+#endif
 
+#if STEP == STEP_COMPOSITE
 vec4 finite(vec4 v)
 {
   for (int i = 0; i < 4; ++i)
@@ -130,67 +233,72 @@ vec4 finite(vec4 v)
   }
   return v;
 }
+#endif
 
 void main()
 {
-  // The output sample this fragment computes; texCoord spans the viewport.
-  ivec2 p = ivec2(floor(texCoord * outputSize));
+  // The output sample this fragment computes; texCoord spans the draw's region.
+  ivec2 p = regionOffset + ivec2(floor(texCoord * regionSize));
+
+#if STEP != STEP_COMPOSITE || COMPOSITE_BLOOM
+  setUpX(p.x);
+  setUpY(p.y);
   vec4 sum = vec4(0.0);
-  if (axis == AXIS_NONE)
+  for (int ky = 0; ky < Y_COUNT; ++ky)
   {
-    sum = fetchSource(p);
-  }
-  else
-  {
-    int j = axis == AXIS_X ? p.x : p.y;
-    int first = int(texelFetch(operatorRows, ivec2(0, j), 0).r);
-    for (int k = 0; k < bandWidth; ++k)
+    float wy = weightY(p.y, ky);
+    if (wy != 0.0)
     {
-      float w = texelFetch(operatorRows, ivec2(k + 1, j), 0).r;
-      // The band's padding has zero weights; skipping them keeps 0 * Inf from making a NaN.
-      if (w != 0.0)
+      vec4 row = vec4(0.0);
+      for (int kx = 0; kx < X_COUNT; ++kx)
       {
-        ivec2 q = axis == AXIS_X ? ivec2(first + k, p.y) : ivec2(p.x, first + k);
-        sum += w * fetchSource(q);
+        float wx = weightX(p.x, kx);
+        if (wx != 0.0)
+        {
+          row += wx * fetchSource(ivec2(xFirst + kx, yFirst + ky));
+        }
       }
+      sum += wy * row;
     }
   }
+#endif
 
   vec4 result;
-  if (step == STEP_SCALE)
+#if STEP == STEP_SCALE
+  result = weight * sum;
+#elif STEP == STEP_THRESHOLD
+  result = vec4(brightPass(sum.rgb), 0.0);
+#elif STEP == STEP_KARIS_TERM
+  // Karis 2014: weight each term by 1 / (1 + luma); alpha carries the weights' sum.
+  float k = weight / (1.0 + max(dot(sum.rgb, lumaWeights), 0.0));
+  result = vec4(k * sum.rgb, k);
+#elif STEP == STEP_KARIS_NORMALIZE
+  result = vec4(sum.rgb / sum.a, 0.0);
+#elif STEP == STEP_ADD
+  result = sum + weight * texelFetch(addend, p, 0);
+#else // STEP_COMPOSITE
+  vec4 base = texelFetch(scene, p, 0);
+#if SANITIZE_OUTPUT
+  base = finite(base);
+#endif
+#if COMPOSITE_BLOOM
+  result = vec4(keep * base.rgb + strengthTint * sum.rgb, base.a);
+#else
+  // No bloom (nothing passed the bright pass, or the effect is off): keep * in + 0, as
+  // vtkImageBloom composites a skipped bloom.
+  result = vec4(keep * base.rgb + vec3(0.0), base.a);
+#endif
+#if SANITIZE_OUTPUT
+  result = finite(result);
+#endif
+#endif
+
+#if DISCARD_ZERO
+  // The target was cleared to zero; an occlusion query counts the samples that are not.
+  if (all(equal(result, vec4(0.0))))
   {
-    result = weight * sum;
+    discard;
   }
-  else if (step == STEP_THRESHOLD)
-  {
-    result = vec4(brightPass(sum.rgb), 0.0);
-  }
-  else if (step == STEP_KARIS_TERM)
-  {
-    // Karis 2014: weight each term by 1 / (1 + luma); alpha carries the weights' sum.
-    float k = weight / (1.0 + max(dot(sum.rgb, lumaWeights), 0.0));
-    result = vec4(k * sum.rgb, k);
-  }
-  else if (step == STEP_KARIS_NORMALIZE)
-  {
-    result = vec4(sum.rgb / sum.a, 0.0);
-  }
-  else if (step == STEP_ADD)
-  {
-    result = sum + weight * texelFetch(addend, p, 0);
-  }
-  else // STEP_COMPOSITE
-  {
-    vec4 base = texelFetch(scene, p, 0);
-    if (sanitize != 0)
-    {
-      base = finite(base);
-    }
-    result = vec4(keep * base.rgb + strengthTint * sum.rgb, base.a);
-    if (sanitize != 0)
-    {
-      result = finite(result);
-    }
-  }
+#endif
   gl_FragData[0] = result;
 }

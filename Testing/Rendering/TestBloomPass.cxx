@@ -278,7 +278,16 @@ TEST(RenderingBloomPass, ChainsWithToneMapping)
     {
       mean[bloom] += pixels->GetValue(i) / static_cast<double>(n);
     }
-    EXPECT_GT(w.Bloom->GetNumberOfPasses(), 10);
+    if (bloom)
+    {
+      EXPECT_GT(w.Bloom->GetNumberOfPasses(), 10);
+    }
+    else
+    {
+      // Strength 0 switches the effect off: no chain, only the composite (SkipDisabledEffects).
+      EXPECT_TRUE(w.Bloom->GetLastBloomSkipped());
+      EXPECT_EQ(w.Bloom->GetNumberOfPasses(), 1);
+    }
   }
   // Tone mapping compresses highlights, so the glow must still show as added light.
   EXPECT_GT(mean[1], mean[0] + 1.0);
