@@ -3,10 +3,13 @@
 #include "vtkBloomKernels.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"
+#include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <limits>
 #include <vector>
 
@@ -22,55 +25,170 @@ double PixelLuminance(const T* v, int nc)
                  : static_cast<double>(v[0]);
 }
 
-// Neumaier (1974) compensated summation: the running error of each addition is kept and added
-// back at the end, so a row of a million pixels loses no more than a few ulps.
-class CompensatedSum
+// The exact sum of doubles, rounded once to nearest (ties to even): Neal's small
+// superaccumulator (R. M. Neal, "Fast exact summation using small and large superaccumulators",
+// arXiv:1505.05571, 2015). Every finite double is m 2^(p - 1074) with an integer m < 2^53 and
+// 0 <= p < 2046; it is added, with its sign, as three 32-bit pieces into 64-bit chunks that hold
+// the bits of weight 2^(32 k - 1074). A chunk absorbs 2^31 additions before it could overflow,
+// and Normalize() carries every chunk into the next, so nothing is ever rounded: cancellation
+// loses nothing (an image whose values cancel sums to 0, and one changed pixel shows in the sum
+// exactly) and the result does not depend on the order of additions. Non-finite values are
+// summed apart and make the result non-finite.
+class ExactSum
 {
 public:
   void Add(double x)
   {
-    const double t = this->Sum + x;
-    this->Compensation +=
-      std::abs(this->Sum) >= std::abs(x) ? (this->Sum - t) + x : (x - t) + this->Sum;
-    this->Sum = t;
+    std::uint64_t bits;
+    std::memcpy(&bits, &x, sizeof(bits));
+    const int biased = static_cast<int>((bits >> 52) & 0x7FF);
+    if (biased == 0x7FF)
+    {
+      this->Special += x;
+      return;
+    }
+    std::uint64_t m = bits & ((std::uint64_t(1) << 52) - 1);
+    int p = 0; // subnormals and zero: m 2^-1074
+    if (biased != 0)
+    {
+      m |= std::uint64_t(1) << 52;
+      p = biased - 1;
+    }
+    const int k = p >> 5, r = p & 31;
+    // The bits of m 2^r (at most 84): 0-31, 32-63, 64 and above.
+    const std::int64_t low = static_cast<std::int64_t>((m << r) & 0xFFFFFFFFu);
+    const std::int64_t middle = static_cast<std::int64_t>((m >> (32 - r)) & 0xFFFFFFFFu);
+    const std::int64_t high = static_cast<std::int64_t>((m >> 32) >> (32 - r));
+    if (bits >> 63)
+    {
+      this->Chunks[k] -= low;
+      this->Chunks[k + 1] -= middle;
+      this->Chunks[k + 2] -= high;
+    }
+    else
+    {
+      this->Chunks[k] += low;
+      this->Chunks[k + 1] += middle;
+      this->Chunks[k + 2] += high;
+    }
   }
-  double Get() const { return this->Sum + this->Compensation; }
+
+  /// Add another sum; `other` must be normalized (Normalize()).
+  void Add(const ExactSum& other)
+  {
+    for (int i = 0; i < NumberOfChunks; ++i)
+    {
+      this->Chunks[i] += other.Chunks[i];
+    }
+    this->Special += other.Special;
+    this->Normalize();
+  }
+
+  /// Carry every chunk into the next: chunks 0..n-2 in [0, 2^32), the last one signed.
+  void Normalize()
+  {
+    for (int i = 0; i + 1 < NumberOfChunks; ++i)
+    {
+      const std::int64_t low = this->Chunks[i] & 0xFFFFFFFF;
+      this->Chunks[i + 1] += (this->Chunks[i] - low) / 4294967296LL; // exact
+      this->Chunks[i] = low;
+    }
+  }
+
+  double Get() const
+  {
+    if (this->Special != 0.0) // Inf, -Inf or NaN
+    {
+      return this->Special;
+    }
+    ExactSum n = *this;
+    n.Normalize();
+    const bool negative = n.Chunks[NumberOfChunks - 1] < 0;
+    if (negative)
+    {
+      for (std::int64_t& c : n.Chunks)
+      {
+        c = -c;
+      }
+      n.Normalize();
+    }
+    // N = sum of Chunks[i] 2^(32 i), now non-negative with every chunk in [0, 2^32).
+    int t = NumberOfChunks - 1;
+    while (t >= 0 && n.Chunks[t] == 0)
+    {
+      --t;
+    }
+    if (t < 0)
+    {
+      return 0.0;
+    }
+    auto chunk = [&n](int i) { return i >= 0 ? static_cast<std::uint64_t>(n.Chunks[i]) : 0u; };
+    double result;
+    if (t <= 1 && chunk(1) < (std::uint64_t(1) << 21))
+    {
+      // N < 2^53: N 2^-1074 is a double (subnormal or small normal), exactly.
+      result = std::ldexp(static_cast<double>((chunk(1) << 32) | chunk(0)), -1074);
+    }
+    else
+    {
+      // The window of chunks t, t-1, t-2 holds 64 + b bits, b the bit length of chunk t;
+      // keep the top 53, round to nearest even with the bits below and every lower chunk.
+      const std::uint64_t top = (chunk(t) << 32) | chunk(t - 1), bottom = chunk(t - 2);
+      int b = 0;
+      while ((chunk(t) >> b) != 0)
+      {
+        ++b;
+      }
+      bool sticky = false;
+      for (int i = 0; i < t - 2; ++i)
+      {
+        sticky = sticky || n.Chunks[i] != 0;
+      }
+      const int drop = b + 11; // 12..43 bits of the window below the 53 kept
+      std::uint64_t mantissa, rest, half;
+      if (drop >= 32)
+      {
+        mantissa = top >> (drop - 32);
+        rest = ((top & ((std::uint64_t(1) << (drop - 32)) - 1)) << 32) | bottom;
+      }
+      else
+      {
+        mantissa = (top << (32 - drop)) | (bottom >> drop);
+        rest = bottom & ((std::uint64_t(1) << drop) - 1);
+      }
+      half = std::uint64_t(1) << (drop - 1);
+      if (rest > half || (rest == half && (sticky || (mantissa & 1))))
+      {
+        ++mantissa; // 2^53 is still exact in a double
+      }
+      result = std::ldexp(static_cast<double>(mantissa), drop + 32 * (t - 2) - 1074);
+    }
+    return negative ? -result : result;
+  }
 
 private:
-  double Sum = 0.0;
-  double Compensation = 0.0;
+  // Chunk k holds bits of weight 2^(32 k - 1074); the largest double reaches chunk 65, and the
+  // rest is room for carries.
+  static constexpr int NumberOfChunks = 68;
+  std::int64_t Chunks[NumberOfChunks] = {};
+  double Special = 0.0;
 };
 
-// Pairwise sum of v[begin, end): O(log n) rounding growth, and a fixed order of additions.
-double PairwiseSum(const std::vector<double>& v, size_t begin, size_t end)
-{
-  if (end - begin <= 8)
-  {
-    double sum = 0.0;
-    for (size_t i = begin; i < end; ++i)
-    {
-      sum += v[i];
-    }
-    return sum;
-  }
-  const size_t middle = begin + (end - begin) / 2;
-  return PairwiseSum(v, begin, middle) + PairwiseSum(v, middle, end);
-}
-
+// Add a row's luminances to `energy` (normalized after each row, so that a chunk never takes
+// more than one row of additions) and raise `peak` to their maximum.
 template <typename T>
-void MeasureRow(const T* row, int n, int nc, double& energy, double& peak)
+void MeasureRow(const T* row, int n, int nc, ExactSum& energy, double& peak)
 {
-  CompensatedSum sum;
   for (int i = 0; i < n; ++i)
   {
     const double lum = PixelLuminance(row + static_cast<size_t>(i) * nc, nc);
-    sum.Add(lum);
+    energy.Add(lum);
     if (lum > peak) // false for NaN, which is ignored
     {
       peak = lum;
     }
   }
-  energy = sum.Get();
+  energy.Normalize();
 }
 
 template <typename T>
@@ -138,22 +256,32 @@ vtkBloomLuminanceStatistics vtkBloomMeasureLuminance(vtkImageData* image, const 
   const int n = extent[1] - extent[0] + 1;
   const int nc = image->GetNumberOfScalarComponents();
   const bool isFloat = image->GetScalarType() == VTK_FLOAT;
-  std::vector<double> energies(rows);
-  std::vector<double> peaks(rows, -std::numeric_limits<double>::infinity());
+  // One exact sum per thread: exact sums do not depend on how the rows are shared out.
+  vtkSMPThreadLocal<ExactSum> energies;
+  vtkSMPThreadLocal<double> peaks(-std::numeric_limits<double>::infinity());
   ForEachRow(image, extent,
-    [&](vtkIdType r, void* row)
+    [&](vtkIdType, void* row)
     {
       if (isFloat)
       {
-        MeasureRow(static_cast<const float*>(row), n, nc, energies[r], peaks[r]);
+        MeasureRow(static_cast<const float*>(row), n, nc, energies.Local(), peaks.Local());
       }
       else
       {
-        MeasureRow(static_cast<const double*>(row), n, nc, energies[r], peaks[r]);
+        MeasureRow(static_cast<const double*>(row), n, nc, energies.Local(), peaks.Local());
       }
     });
-  result.Energy = PairwiseSum(energies, 0, energies.size());
-  result.Peak = *std::max_element(peaks.begin(), peaks.end());
+  ExactSum total;
+  for (const ExactSum& energy : energies)
+  {
+    total.Add(energy);
+  }
+  result.Energy = total.Get();
+  result.Peak = -std::numeric_limits<double>::infinity();
+  for (double peak : peaks)
+  {
+    result.Peak = std::max(result.Peak, peak);
+  }
   return result;
 }
 

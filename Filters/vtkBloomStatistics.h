@@ -4,9 +4,9 @@
  *
  * Not installed and not part of the public API. L is the Rec. 709 luminance
  * 0.2126 R + 0.7152 G + 0.0722 B for 3-4 components and the value itself for 1-2, evaluated in
- * double on the scalars as stored. Each row of the extent is summed with Neumaier's compensated
- * summation and the row sums are added pairwise in a fixed order, so the results do not depend
- * on the number of threads.
+ * double on the scalars as stored. The energy is the exact sum of these doubles rounded once to
+ * nearest (Neal's small superaccumulator), so it does not depend on the number of threads or
+ * the order of the pixels, and cancellation loses nothing.
  */
 
 #ifndef vtkBloomStatistics_h
@@ -19,7 +19,7 @@ class vtkImageData;
 /// Sum and maximum of L over `extent` (structured indices inside the image's extent).
 struct vtkBloomLuminanceStatistics
 {
-  double Energy = 0.0; ///< sum of L
+  double Energy = 0.0; ///< sum of L, exact then rounded to nearest
   double Peak = 0.0;   ///< max of L, NaN pixels ignored; -inf when every pixel is NaN
 };
 

@@ -96,9 +96,10 @@
  * Rec. 709 luminance 0.2126 R + 0.7152 G + 0.0722 B of pixel p for 3-4 components, or the value
  * itself for 1-2 components, evaluated in double on the scalars as stored (input and output
  * share the input's scalar type):
- * - EnergyIn = sum_{p in E} L(input p) and EnergyOut = sum_{p in E} L(output p). Each row is
- *   summed with Neumaier's compensated summation and the row sums are added pairwise, so the
- *   result does not depend on the number of threads.
+ * - EnergyIn = sum_{p in E} L(input p) and EnergyOut = sum_{p in E} L(output p), the exact sum
+ *   of the L values rounded once to nearest (Neal's superaccumulator): the result does not
+ *   depend on the number of threads, and values that cancel lose nothing (a signed image whose
+ *   values cancel has energy 0 exactly).
  * - NumberOfBrightPixels = the number of full-resolution input pixels p in E whose bright pass
  *   vtkImageBloomThreshold::BrightPass(colour(p)) (ThresholdMode, Threshold, Knee,
  *   ClampLuminance as set here) has at least one colour value > 0. It is taken on the input

@@ -291,6 +291,57 @@ TEST(NumericsHardCases, WideDynamicRange)
   }
 }
 
+// The energy statistics are exact sums rounded once, so cancellation loses nothing.
+// TestImages_WideFloatRange.exr (one channel, so the luminance is the value) is antisymmetric:
+// the value at (i, j) is minus the value at (W-1-i, H-1-j). Its exact sum is 0, and after one
+// pixel changes from v to w it is w - v, which a double subtraction rounds correctly. (Rounded
+// row sums of up to 6e40 added pairwise returned 0 for a change of 1000.)
+TEST(NumericsHardCases, StatisticsSumExactlyThroughCancellation)
+{
+  VTKBLOOM_REQUIRE_DATA(path, vtkBloomHardCases::WideFloatRangeImage());
+  auto input = ReadExr(path);
+  ASSERT_EQ(input->GetNumberOfScalarComponents(), 1);
+  ASSERT_EQ(input->GetScalarType(), VTK_FLOAT);
+  int dims[3];
+  input->GetDimensions(dims);
+  const int w = dims[0], h = dims[1];
+  vtkDataArray* scalars = input->GetPointData()->GetScalars();
+  auto at = [w](int i, int j) { return static_cast<vtkIdType>(j) * w + i; };
+  for (int j = 0; j < h; ++j)
+  {
+    for (int i = 0; i < w; ++i)
+    {
+      ASSERT_EQ(
+        scalars->GetComponent(at(i, j), 0), -scalars->GetComponent(at(w - 1 - i, h - 1 - j), 0))
+        << i << "," << j;
+    }
+  }
+  vtkNew<vtkImageBloom> bloom;
+  bloom->SetPreset("webgpu-market");
+  bloom->SetInputData(input);
+  bloom->Update();
+  EXPECT_EQ(bloom->GetEnergyIn(), 0.0);
+  struct Change
+  {
+    int I, J;
+    float Value;
+  };
+  const Change changes[] = { { w / 2, h / 2, 1000.0f }, { 0, 0, 0.0f }, { 123, 77, 3e30f },
+    { 10, 10, 1.0f }, { w - 1, 3, -2.5e-38f } };
+  for (const Change& c : changes)
+  {
+    auto changed = vtkSmartPointer<vtkImageData>::New();
+    changed->DeepCopy(input);
+    vtkDataArray* values = changed->GetPointData()->GetScalars();
+    const double before = values->GetComponent(at(c.I, c.J), 0);
+    values->SetComponent(at(c.I, c.J), 0, c.Value);
+    bloom->SetInputData(changed);
+    bloom->Update();
+    EXPECT_EQ(bloom->GetEnergyIn(), static_cast<double>(c.Value) - before)
+      << "pixel " << c.I << "," << c.J << " from " << before << " to " << c.Value;
+  }
+}
+
 // Every size 1x1..67x67 at every pyramid depth: a constant stays constant through the whole
 // chain (threshold NONE, 7 levels from full resolution, weights 1/7, LERP with strength 1), for
 // each downsample kernel, upsample kernel and accumulation mode in turn.
