@@ -156,7 +156,7 @@ struct Interior
           }
         }
       }
-      if (hi <= lo)
+      if (hi <= lo || hi - lo > 31) // a bit per tap in Defines()
       {
         continue;
       }
@@ -182,20 +182,22 @@ struct Interior
     return Interior();
   }
 
-  /// The #defines of OP_PERIODIC along `axis` ("X" or "Y").
+  /// The #defines of OP_PERIODIC along `axis` ("X" or "Y"); the weights are uniforms.
   std::string Defines(const char* axis) const
   {
+    // Bit k: tap k is non-zero in some phase (with period 1, zero taps are compiled out).
+    unsigned int nonZero = 0;
+    for (size_t i = 0; i < this->Weights.size(); ++i)
+    {
+      if (this->Weights[i] != 0.0f)
+      {
+        nonZero |= 1u << (i % this->Taps);
+      }
+    }
     std::ostringstream os;
     os << "#define " << axis << "_PERIOD " << this->Period << "\n#define " << axis << "_STRIDE "
        << this->Stride << "\n#define " << axis << "_TAPS " << this->Taps << "\n#define " << axis
-       << "_WEIGHTS ";
-    // Nine significant digits give back the same float.
-    os << std::scientific << std::setprecision(8);
-    for (size_t i = 0; i < this->Weights.size(); ++i)
-    {
-      os << (i ? ", " : "") << this->Weights[i];
-    }
-    os << "\n";
+       << "_NONZERO " << nonZero << "\n";
     return os.str();
   }
 };
@@ -595,12 +597,16 @@ public:
           const Interior& in = this->InteriorOf(*spec.X);
           const int values[3] = { in.Begin, in.First[0], in.First[1] };
           program->SetUniform1iv("xInterior", 3, values);
+          program->SetUniform1fv(
+            "xWeights", static_cast<int>(in.Weights.size()), in.Weights.data());
         }
         if (sy.Mode == OP_PERIODIC)
         {
           const Interior& in = this->InteriorOf(*spec.Y);
           const int values[3] = { in.Begin, in.First[0], in.First[1] };
           program->SetUniform1iv("yInterior", 3, values);
+          program->SetUniform1fv(
+            "yWeights", static_cast<int>(in.Weights.size()), in.Weights.data());
         }
         this->SetStepUniforms(program, spec.Step);
         state->vtkglViewport(

@@ -18,9 +18,10 @@
     weights in texels 1..width (any operator, any output sample);
   - OP_PERIODIC: the operator's interior, where First[j + PERIOD] = First[j] + STRIDE and the
     rows repeat with period PERIOD (1 for a convolution or a 2:1 resample, 2 for a 1:2
-    resample); the weights are compile-time constants taken from the operator's own rows, and
-    First is computed from the interior's first rows (uniforms). The border samples are drawn
-    separately with OP_TABLE.
+    resample); First is computed from the interior's first rows and the weights are the
+    operator's own rows, both uniforms (not constants: the compiler would factor equal
+    constant weights, w a + w b -> w (a + b), which overflows where the CPU chain does not).
+    The border samples are drawn separately with OP_TABLE.
 
   Every fetch is an exact texelFetch of the RGBA float source: bilinear interpolation and
   border clamping are already folded into the weights, so no hardware filtering is involved
@@ -47,7 +48,7 @@ uniform int xWidth;
 #define X_COUNT xWidth
 #elif X_MODE == OP_PERIODIC
 uniform int xInterior[3]; // first interior output sample, First of its first two rows
-const float xWeights[X_PERIOD * X_TAPS] = float[](X_WEIGHTS);
+uniform float xWeights[X_PERIOD * X_TAPS];
 #define X_COUNT X_TAPS
 #else
 #define X_COUNT 1
@@ -59,7 +60,7 @@ uniform int yWidth;
 #define Y_COUNT yWidth
 #elif Y_MODE == OP_PERIODIC
 uniform int yInterior[3];
-const float yWeights[Y_PERIOD * Y_TAPS] = float[](Y_WEIGHTS);
+uniform float yWeights[Y_PERIOD * Y_TAPS];
 #define Y_COUNT Y_TAPS
 #else
 #define Y_COUNT 1
@@ -117,7 +118,8 @@ float weightX(int j, int k)
   return texelFetch(xRows, ivec2(k + 1, j), 0).r;
 #elif X_MODE == OP_PERIODIC
 #if X_PERIOD == 1
-  return xWeights[k];
+  // Taps that are zero in the interior are left out at compile time.
+  return ((X_NONZERO >> k) & 1) != 0 ? xWeights[k] : 0.0;
 #else
   return xPhase == 0 ? xWeights[k] : xWeights[X_TAPS + k];
 #endif
@@ -145,7 +147,8 @@ float weightY(int j, int k)
   return texelFetch(yRows, ivec2(k + 1, j), 0).r;
 #elif Y_MODE == OP_PERIODIC
 #if Y_PERIOD == 1
-  return yWeights[k];
+  // Taps that are zero in the interior are left out at compile time.
+  return ((Y_NONZERO >> k) & 1) != 0 ? yWeights[k] : 0.0;
 #else
   return yPhase == 0 ? yWeights[k] : yWeights[Y_TAPS + k];
 #endif
