@@ -185,22 +185,46 @@ struct Interior
   /// The #defines of OP_PERIODIC along `axis` ("X" or "Y"); the weights are uniforms.
   std::string Defines(const char* axis) const
   {
-    // Bit k: tap k is non-zero in some phase (with period 1, zero taps are compiled out).
-    unsigned int nonZero = 0;
-    for (size_t i = 0; i < this->Weights.size(); ++i)
+    // Bit k of ANY: tap k is non-zero in some phase (else it is compiled out); of ALL: in
+    // every phase (no run-time test of its weight).
+    unsigned int any = 0, all = (1u << this->Taps) - 1;
+    for (int ph = 0; ph < this->Period; ++ph)
     {
-      if (this->Weights[i] != 0.0f)
+      for (int k = 0; k < this->Taps; ++k)
       {
-        nonZero |= 1u << (i % this->Taps);
+        if (this->Weights[ph * this->Taps + k] != 0.0f)
+        {
+          any |= 1u << k;
+        }
+        else
+        {
+          all &= ~(1u << k);
+        }
       }
     }
     std::ostringstream os;
     os << "#define " << axis << "_PERIOD " << this->Period << "\n#define " << axis << "_STRIDE "
        << this->Stride << "\n#define " << axis << "_TAPS " << this->Taps << "\n#define " << axis
-       << "_NONZERO " << nonZero << "\n";
+       << "_ANY " << any << "u\n#define " << axis << "_ALL " << all << "u\n";
     return os.str();
   }
 };
+
+/**
+ * Whether a two-dimensional term costs fewer texel fetches as one pass (Wx Wy per output
+ * sample) than as an x pass over the input rows and a y pass; one pass fewer and no
+ * intermediate target count for a quarter of the separable cost. The 2:1 box (2 x 2 taps) is
+ * one pass, the 2:1 tent (4 x 4) two.
+ */
+bool TwoDimensional(const vtkBloomChain::Term& term)
+{
+  const double outputs = static_cast<double>(term.X.OutputSize) * term.Y.OutputSize;
+  const double single = static_cast<double>(term.X.Width) * term.Y.Width * outputs;
+  const double separable =
+    static_cast<double>(term.X.Width) * term.X.OutputSize * term.Y.InputSize +
+    static_cast<double>(term.Y.Width) * outputs;
+  return single <= 1.25 * separable;
+}
 
 // A range of output samples along one axis and how the pass evaluates it.
 struct Segment
@@ -888,6 +912,19 @@ bool vtkBloomPass::vtkInternals::RunChain(vtkBloomPass* self, vtkTextureObject* 
       down.Step = level.Karis ? STEP_KARIS_TERM : STEP_SCALE;
       down.Weight = term.Weight;
       down.Blend = t > 0;
+      const int rows[2] = { level.Size[0], this->Levels[i - 1].Size[1] };
+      if (!TwoDimensional(term))
+      {
+        // The x half into Temp, then the y half and the step.
+        PassSpec x;
+        x.Source = down.Source;
+        x.SourceSize = down.SourceSize;
+        x.X = &term.X;
+        this->Pass(&this->Temp, zero, x);
+        down.Source = this->Temp.Color;
+        down.SourceSize = rows;
+        down.X = nullptr;
+      }
       this->Pass(&dst, zero, down);
     }
     if (level.Karis)

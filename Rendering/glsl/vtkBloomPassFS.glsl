@@ -46,24 +46,32 @@ uniform float weight;       // SCALE, KARIS_TERM and ADD weight
 uniform sampler2D xRows;
 uniform int xWidth;
 #define X_COUNT xWidth
+#define X_ANY 0xffffffffu
+#define X_ALL 0u
 #elif X_MODE == OP_PERIODIC
 uniform int xInterior[3]; // first interior output sample, First of its first two rows
 uniform float xWeights[X_PERIOD * X_TAPS];
 #define X_COUNT X_TAPS
 #else
 #define X_COUNT 1
+#define X_ANY 1u
+#define X_ALL 1u
 #endif
 
 #if Y_MODE == OP_TABLE
 uniform sampler2D yRows;
 uniform int yWidth;
 #define Y_COUNT yWidth
+#define Y_ANY 0xffffffffu
+#define Y_ALL 0u
 #elif Y_MODE == OP_PERIODIC
 uniform int yInterior[3];
 uniform float yWeights[Y_PERIOD * Y_TAPS];
 #define Y_COUNT Y_TAPS
 #else
 #define Y_COUNT 1
+#define Y_ANY 1u
+#define Y_ALL 1u
 #endif
 
 #if MASK_BY_DEPTH
@@ -118,8 +126,7 @@ float weightX(int j, int k)
   return texelFetch(xRows, ivec2(k + 1, j), 0).r;
 #elif X_MODE == OP_PERIODIC
 #if X_PERIOD == 1
-  // Taps that are zero in the interior are left out at compile time.
-  return ((X_NONZERO >> k) & 1) != 0 ? xWeights[k] : 0.0;
+  return xWeights[k];
 #else
   return xPhase == 0 ? xWeights[k] : xWeights[X_TAPS + k];
 #endif
@@ -147,8 +154,7 @@ float weightY(int j, int k)
   return texelFetch(yRows, ivec2(k + 1, j), 0).r;
 #elif Y_MODE == OP_PERIODIC
 #if Y_PERIOD == 1
-  // Taps that are zero in the interior are left out at compile time.
-  return ((Y_NONZERO >> k) & 1) != 0 ? yWeights[k] : 0.0;
+  return yWeights[k];
 #else
   return yPhase == 0 ? yWeights[k] : yWeights[Y_TAPS + k];
 #endif
@@ -249,14 +255,15 @@ void main()
   vec4 sum = vec4(0.0);
   for (int ky = 0; ky < Y_COUNT; ++ky)
   {
+    // The tap masks are constants except for OP_TABLE: the tests fold at compile time.
     float wy = weightY(p.y, ky);
-    if (wy != 0.0)
+    if (((Y_ANY >> ky) & 1u) != 0u && (((Y_ALL >> ky) & 1u) != 0u || wy != 0.0))
     {
       vec4 row = vec4(0.0);
       for (int kx = 0; kx < X_COUNT; ++kx)
       {
         float wx = weightX(p.x, kx);
-        if (wx != 0.0)
+        if (((X_ANY >> kx) & 1u) != 0u && (((X_ALL >> kx) & 1u) != 0u || wx != 0.0))
         {
           row += wx * fetchSource(ivec2(xFirst + kx, yFirst + ky));
         }
