@@ -480,6 +480,141 @@ void FetchX(const Op& rx, const float* __restrict line, int w0, float* __restric
   }
 }
 
+// True when none of the n values is NaN or +-Inf (an integer reduction that vectorizes).
+inline bool AllFinite(const float* v, size_t n)
+{
+  uint32_t any = 0;
+  for (size_t q = 0; q < n; ++q)
+  {
+    uint32_t u;
+    std::memcpy(&u, v + q, sizeof(u));
+    any |= static_cast<uint32_t>((u & 0x7f800000u) == 0x7f800000u);
+  }
+  return any == 0;
+}
+
+// Bounds on input rows that decide, without fetching, that the bright pass of every sample
+// fetched from them is zero: the largest luminance (C = 3, Rec. 709) or value (C = 1), the
+// largest colour value and magnitude, and whether a colour is NaN or Inf.
+struct RowBounds
+{
+  float Luminance = -FloatMax;
+  float Channel = -FloatMax;
+  float Magnitude = 0.0f;
+  bool NonFinite = false;
+};
+
+template <typename T, int NC, int C>
+void BoundRow(const T* __restrict row, int width, RowBounds& b)
+{
+  // Per component extremes (one vector operation per pixel); the luminance of any pixel is at
+  // most the luminance of the per-channel maxima, since the Rec. 709 weights are positive.
+  // Four pixels at a time into 4 NC running extremes: element-wise, so it vectorizes.
+  constexpr int B = 4 * NC;
+  float hiB[B], loB[B];
+  for (int q = 0; q < B; ++q)
+  {
+    hiB[q] = -FloatMax;
+    loB[q] = FloatMax;
+  }
+  const int blocks = width / 4;
+  for (int x = 0; x < blocks; ++x)
+  {
+    const T* __restrict s = row + static_cast<size_t>(x) * B;
+    for (int q = 0; q < B; ++q)
+    {
+      const float v = static_cast<float>(s[q]);
+      hiB[q] = hiB[q] > v ? hiB[q] : v;
+      loB[q] = loB[q] < v ? loB[q] : v;
+    }
+  }
+  for (int q = blocks * B; q < width * NC; ++q)
+  {
+    const float v = static_cast<float>(row[q]);
+    hiB[q % B] = hiB[q % B] > v ? hiB[q % B] : v;
+    loB[q % B] = loB[q % B] < v ? loB[q % B] : v;
+  }
+  float hi[NC], lo[NC];
+  for (int c = 0; c < NC; ++c)
+  {
+    hi[c] = std::max({ hiB[c], hiB[NC + c], hiB[2 * NC + c], hiB[3 * NC + c] });
+    lo[c] = std::min({ loB[c], loB[NC + c], loB[2 * NC + c], loB[3 * NC + c] });
+  }
+  // NaN and Inf anywhere in the row (alpha included, which only makes the test stricter).
+  b.NonFinite |= !std::is_same<T, float>::value ||
+    !AllFinite(reinterpret_cast<const float*>(row), static_cast<size_t>(width) * NC);
+  const float l = C == 3 ? static_cast<float>(vtkBloomKernels::LuminanceR) * hi[0] +
+      static_cast<float>(vtkBloomKernels::LuminanceG) * hi[1] +
+      static_cast<float>(vtkBloomKernels::LuminanceB) * hi[2]
+                         : hi[0];
+  b.Luminance = std::max(b.Luminance, l);
+  for (int c = 0; c < C; ++c)
+  {
+    b.Channel = std::max(b.Channel, hi[c]);
+    b.Magnitude = std::max(b.Magnitude, std::max(std::abs(hi[c]), std::abs(lo[c])));
+  }
+}
+
+// True when every sample fetched from rows with these bounds passes vtkBloomBrightPassIsZero.
+// A fetched sample is a convex combination of the rows' colours (see DarkRowsDecidable), so its
+// luminance and largest colour are at most the bounds plus the float32 rounding of the fetch,
+// which the margin covers; the comparisons are IsZero's, which are monotone.
+bool RowsAreDark(const RowBounds& b, const vtkBloomFastChainParameters& p)
+{
+  if (b.NonFinite)
+  {
+    return false;
+  }
+  const float margin = 1e-5f * b.Magnitude;
+  const float lum = b.Luminance + margin, channel = b.Channel + margin;
+  const float t0 = static_cast<float>(p.Threshold);
+  const float k = static_cast<float>(p.Threshold * p.Knee);
+  if (!(lum <= static_cast<float>(p.ClampLuminance)))
+  {
+    return false;
+  }
+  switch (p.ThresholdMode)
+  {
+    case vtkImageBloomThreshold::SMOOTHSTEP_KNEE:
+      return k > 0.0f ? lum <= t0 - k : lum < t0;
+    case vtkImageBloomThreshold::HARD_LUMINANCE:
+      return lum <= t0;
+    case vtkImageBloomThreshold::QUADRATIC_KNEE:
+      return k >= 0.0f && channel - t0 + k <= 0.0f && channel - t0 <= 0.0f;
+    case vtkImageBloomThreshold::PER_CHANNEL:
+      return channel <= t0;
+    default:
+      return false;
+  }
+}
+
+// Rows can be decided dark when the fetch is a convex combination: weights >= 0 summing to 1
+// within 1e-6 in every output row of both operators.
+bool DarkRowsDecidable(const Op& rx, const Op& ry)
+{
+  for (const Op* o : { &rx, &ry })
+  {
+    for (int j = 0; j < o->Out; ++j)
+    {
+      double sum = 0.0;
+      for (int t = 0; t < o->Width; ++t)
+      {
+        const float w = o->W[static_cast<size_t>(j) * o->Width + t];
+        if (!(w >= 0.0f))
+        {
+          return false;
+        }
+        sum += w;
+      }
+      if (std::abs(sum - 1.0) > 1e-6)
+      {
+        return false;
+      }
+    }
+  }
+  return true;
+}
+
 // Pass 1: level 0 = threshold(bilinear(input)), one read of the input, fused per level-0 row:
 // the y fetch combines whole input rows (flat), the x fetch gathers C colours into L lanes, and
 // the bright pass runs in float, its full formula only where vtkBloomBrightPassIsZero cannot
@@ -494,6 +629,8 @@ BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int
   std::vector<char> special(h0, 0);
   const double ceiling = std::min(p.ClampLuminance, static_cast<double>(VTK_FLOAT_MAX));
   const size_t inStride = static_cast<size_t>(width) * NC;
+  const bool decidable = DarkRowsDecidable(rx, ry);
+  std::vector<char> dark(h0, 0);
   vtkSMPThreadLocal<std::vector<float>> lines;
   vtkSMPTools::For(0, h0, 4,
     [&](int begin, int end)
@@ -503,6 +640,29 @@ BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int
       float* line = scratch.data();
       for (int j = begin; j < end; ++j)
       {
+        // Input rows [j H / h0, (j + 1) H / h0) belong to this row, so every row is scanned
+        // for -0, NaN and Inf once (for a 2:1 level they are the rows read here, in cache).
+        const int r0 = static_cast<int>(static_cast<long long>(j) * height / h0);
+        const int r1 = static_cast<int>(static_cast<long long>(j + 1) * height / h0);
+        special[j] = AnySpecial(
+          base + static_cast<size_t>(r0) * inStride, static_cast<size_t>(r1 - r0) * inStride);
+        rowLo[j] = w0;
+        rowHi[j] = 0;
+        if (decidable)
+        {
+          // Rows that are certainly dark are not fetched (and zeroed only if needed, below).
+          RowBounds bounds;
+          for (int k = 0; k < ry.Width; ++k)
+          {
+            BoundRow<T, NC, C>(
+              base + static_cast<size_t>(ry.First[j] + k) * inStride, width, bounds);
+          }
+          if (RowsAreDark(bounds, p))
+          {
+            dark[j] = 1;
+            continue;
+          }
+        }
         if (p.SanitizeNonFinite)
         {
           CombineRows<T, true>(ry, j, base, inStride, inStride, line);
@@ -552,12 +712,6 @@ BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int
         }
         rowLo[j] = lo;
         rowHi[j] = hi;
-        // Input rows [j H / h0, (j + 1) H / h0) belong to this row, so every row is scanned
-        // once (for a 2:1 level they are the rows just read, still in cache).
-        const int r0 = static_cast<int>(static_cast<long long>(j) * height / h0);
-        const int r1 = static_cast<int>(static_cast<long long>(j + 1) * height / h0);
-        special[j] = AnySpecial(
-          base + static_cast<size_t>(r0) * inStride, static_cast<size_t>(r1 - r0) * inStride);
       }
     });
   BrightResult result;
@@ -578,7 +732,19 @@ BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int
   if (b.Empty())
   {
     b = Box();
+    return result; // no pyramid will read level 0
   }
+  vtkSMPTools::For(0, h0, 16,
+    [&](int begin, int end)
+    {
+      for (int j = begin; j < end; ++j)
+      {
+        if (dark[j])
+        {
+          std::fill(level.Row(j), level.Row(j) + static_cast<size_t>(w0) * L, 0.0f);
+        }
+      }
+    });
   return result;
 }
 
@@ -650,19 +816,6 @@ void CompositeFlat(const T* __restrict src, const float* __restrict bloom,
     o = Sanitize ? std::min(std::max(o, -m), m) : o;
     dst[q] = colour[q] ? o : v;
   }
-}
-
-// True when none of the n values is NaN or +-Inf (an integer reduction that vectorizes).
-inline bool AllFinite(const float* v, size_t n)
-{
-  uint32_t any = 0;
-  for (size_t q = 0; q < n; ++q)
-  {
-    uint32_t u;
-    std::memcpy(&u, v + q, sizeof(u));
-    any |= static_cast<uint32_t>((u & 0x7f800000u) == 0x7f800000u);
-  }
-  return any == 0;
 }
 
 // CompositeFlat for any keep. With keep = 1, an input without -0, NaN or Inf (`clean`) and a

@@ -128,6 +128,8 @@ vtkImageBloom::vtkImageBloom()
   this->LastLevelsBuilt = 0;
   this->LastWorkspaceBytes = 0;
   this->FastChain = new vtkBloomFastChain;
+  this->Chain = new vtkBloomChain;
+  this->ChainSize[0] = this->ChainSize[1] = -1;
   this->ResetStatistics();
 }
 
@@ -135,6 +137,7 @@ vtkImageBloom::vtkImageBloom()
 vtkImageBloom::~vtkImageBloom()
 {
   delete this->FastChain;
+  delete this->Chain;
 }
 
 //------------------------------------------------------------------------------
@@ -455,9 +458,17 @@ int vtkImageBloom::RequestData(
   this->LastPassedThrough = false;
   this->LastLevelsBuilt = -1;
   const int colours = nc >= 3 ? 3 : 1;
-  // The operators of every step, shared by both paths here and by vtkBloomPass.
-  vtkBloomChain chain;
-  chain.Build(this, width, height);
+  // The operators of every step, shared by both paths here and by vtkBloomPass; built again
+  // only when a parameter (this filter's MTime) or the size changed.
+  if (this->GetMTime() > this->ChainTime || width != this->ChainSize[0] ||
+    height != this->ChainSize[1])
+  {
+    this->Chain->Build(this, width, height);
+    this->ChainTime.Modified();
+    this->ChainSize[0] = width;
+    this->ChainSize[1] = height;
+  }
+  const vtkBloomChain& chain = *this->Chain;
   if (this->ExecutionMode == FAST)
   {
     vtkBloomFastChainParameters p;

@@ -124,11 +124,13 @@
 
 #include "vtkFiltersBloomModule.h" // For export macro
 #include "vtkImageAlgorithm.h"
+#include "vtkTimeStamp.h" // For ChainTime
 
 #include <string> // For preset names
 #include <vector> // For level weights
 
 struct vtkBloomBuffer;
+class vtkBloomChain;
 class vtkBloomFastChain;
 
 class VTKFILTERSBLOOM_EXPORT vtkImageBloom : public vtkImageAlgorithm
@@ -425,6 +427,10 @@ protected:
   int LastLevelsBuilt;
   vtkIdType LastWorkspaceBytes;
   vtkBloomFastChain* FastChain;
+  // The chain's operators, rebuilt only when a parameter or the input size changed.
+  vtkBloomChain* Chain;
+  vtkTimeStamp ChainTime;
+  int ChainSize[2];
 
   double EnergyIn;
   double EnergyOut;

@@ -4,8 +4,11 @@
 
 #include <gtest/gtest.h>
 
+#include "vtkImagePyramidDown.h"
+
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -202,5 +205,47 @@ TEST(PerformanceFastPath, OverflowOfCleanInput)
     }
     EXPECT_GT(overflowed, 0) << "the scene must overflow somewhere";
     EXPECT_TRUE(AlphaCopied(input, fast->GetOutput()));
+  }
+}
+
+// vtkImageBloom keeps its chain's operators between updates: a changed parameter (each kind of
+// setter) or input size must rebuild them, so a re-used filter equals a fresh one bit for bit.
+TEST(PerformanceFastPath, ReusedFilterEqualsAFreshOne)
+{
+  auto small = MakeScene(BLOB, 37, 53, 4);
+  auto large = MakeScene(BLOB, 64, 48, 4);
+  vtkNew<vtkImageBloom> reused;
+  reused->SetPreset("webgpu-market");
+  reused->SetInputData(small);
+  reused->Update();
+  const std::vector<std::function<void(vtkImageBloom*)>> changes = {
+    [](vtkImageBloom* b) { b->SetBlurTapSpacing(1.5); },
+    [](vtkImageBloom* b) { b->SetNumberOfLevels(3); },
+    [](vtkImageBloom* b) { b->SetLevelWeight(1, 0.25); },
+    [](vtkImageBloom* b)
+    {
+      const double half[] = { 0.5, 0.2, 0.05 };
+      b->SetBlurHalfKernel(3, half);
+    },
+    [](vtkImageBloom* b) { b->SetDownsampleKernel(vtkImagePyramidDown::BOX); },
+    [](vtkImageBloom* b) { b->SetPreset("crt-halfres"); },
+  };
+  for (size_t i = 0; i < changes.size(); ++i)
+  {
+    vtkImageData* input = i % 2 ? large : small;
+    changes[i](reused);
+    reused->SetInputData(input);
+    reused->Update();
+    vtkNew<vtkImageBloom> copy; // the same parameters in a filter that never ran
+    copy->SetPreset("webgpu-market");
+    for (size_t k = 0; k <= i; ++k)
+    {
+      changes[k](copy);
+    }
+    copy->SetInputData(input);
+    copy->Update();
+    ASSERT_TRUE(reused->GetLastRunWasFast());
+    EXPECT_TRUE(vtkBloomTest::BitIdentical(reused->GetOutput(), copy->GetOutput()))
+      << "change " << i;
   }
 }
