@@ -6,16 +6,24 @@
  * (same operators, taken from vtkBloomLinearOperator, vtkBloomKernels and
  * vtkBloomDownsampleTerms) in float32 arithmetic, in few passes over the full-resolution data:
  *
- * 1. Bright pass: one read of the input. The bilinear fetch to the start level and the
- *    threshold are fused per output row; the pass also finds the bounding box of the non-zero
- *    bright samples and whether the input holds -0, NaN or Inf (for the pass-through below).
+ * 1. Bright pass: one read of the input. Per level-0 row, the input rows are first bounded
+ *    (per-channel extremes, NaN/Inf): rows whose every fetched sample is certainly below the
+ *    threshold's zero edge are not fetched at all. Otherwise the y fetch combines whole rows
+ *    (flat), the x fetch gathers the colours, and the bright pass (vtkBloomBrightPass in float)
+ *    runs its full formula only where vtkBloomBrightPassIsZero cannot decide. The pass also finds
+ *    the bounding box of the non-zero bright samples and whether the input holds -0, NaN or Inf.
  * 2. Pyramid: each level from the level above, over the region its support can reach.
  * 3. Blur fused with the upsample-accumulate: acc_i = up(acc_{i+1}) + w_i blur(level_i), one
  *    output row at a time (CASCADE); DIRECT blurs each level in place.
  * 4. Composite fused with the last upsample: each output row interpolates its bloom row from
  *    acc_0 (CASCADE) or from every weighted level (DIRECT) and writes
  *    keep * in + (S t bloom + 0). Adding +0 makes every zero bloom term +0, so the result does
- *    not depend on the sign of a zero bloom and the content-aware skips are exact.
+ *    not depend on the sign of a zero bloom and the content-aware skips are exact. For an input
+ *    without -0, NaN and Inf and keep = 1, rows take an exact short form (in + (S t bloom + 0),
+ *    or a copy where there is no bloom).
+ * RGB levels hold four float lanes per sample (the fourth is zero), so per-pixel work is one
+ * 4-wide vector operation; level samples saturate at +-FLT_MAX (a float32 sum that overflows
+ * stays finite instead of turning into Inf and then NaN at a zero band weight).
  * Rows are threaded with vtkSMPTools; every output sample is computed by the same expression
  * whatever the threading and the regions, so the output is deterministic.
  *
