@@ -155,7 +155,7 @@ public:
   /**
    * Number of GPU passes the last evaluation ran, the composite included (a pass may be drawn
    * as several rectangles: the operators' interiors and their borders). It is 2 (the bright
-   * pass and the composite) when nothing passed the bright pass.
+   * pass and the composite; 3 with CaptureResult) when nothing passed the bright pass.
    */
   vtkGetMacro(NumberOfPasses, int);
 

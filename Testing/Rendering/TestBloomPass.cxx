@@ -28,6 +28,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -101,9 +102,10 @@ long ResidentKiB()
 }
 
 // GPU result vs vtkImageBloom on the same float render, for one preset and precision.
-double PresetAgreement(const std::string& preset, int precision, const std::string& scene)
+double PresetAgreement(const std::string& preset, int precision, const std::string& scene,
+  int width = 301, int height = 207)
 {
-  BloomWindow w(301, 207);
+  BloomWindow w(width, height);
   EXPECT_TRUE(vtkBloomBuildExampleScene(scene, w.Renderer, w.Bloom));
   w.Bloom->SetEmissionSourceToScene();
   EXPECT_TRUE(w.Bloom->SetPreset(preset.c_str()));
@@ -150,6 +152,64 @@ TEST(RenderingBloomPass, AgreesWithTheCPUFilterForEveryPresetInFloat16)
     EXPECT_LE(error, 1e-3) << preset;
     std::cout << "[ float16 ] " << preset << " relative L2 " << error << "\n";
   }
+}
+
+//------------------------------------------------------------------------------
+// At even sizes the 2:1 and 1:2 resamples are periodic, so their interiors run from uniform
+// weights and First computed in the shader (odd sizes run them from the operator tables).
+TEST(RenderingBloomPass, AgreesWithTheCPUFilterAtAnEvenSize)
+{
+  for (const auto& preset : vtkImageBloom::GetPresetNames())
+  {
+    const double error = PresetAgreement(preset, vtkBloomPass::FLOAT32, "lit-spheres", 320, 192);
+    EXPECT_LE(error, 1e-3) << preset;
+    std::cout << "[ 320x192 ] " << preset << " relative L2 " << error << "\n";
+  }
+}
+
+//------------------------------------------------------------------------------
+// Nothing above the threshold: the pass skips the chain after the bright pass (an occlusion
+// query counts its non-zero samples) and writes the scene, bit for bit what the whole chain
+// gives with SkipEmptyBloom off, as vtkImageBloom does.
+TEST(RenderingBloomPass, SkipsAnEmptyBloomExactly)
+{
+  vtkNew<vtkImageData> scene, skipped, computed;
+  for (const bool skip : { true, false })
+  {
+    BloomWindow w(160, 96);
+    ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
+    w.Bloom->SetEmissionSourceToScene();
+    w.Bloom->SetFloatPrecisionTo32Bit();
+    w.Bloom->CaptureResultOn();
+    vtkImageBloom* p = w.Bloom->GetParameters();
+    p->SetThreshold(1e30);
+    p->SetSkipEmptyBloom(skip);
+    w.Window->Render();
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    EXPECT_EQ(w.Bloom->GetLastBloomSkipped(), skip);
+    if (skip)
+    {
+      // The bright pass, the composite and the copy of the captured result.
+      EXPECT_EQ(w.Bloom->GetNumberOfPasses(), 3);
+      ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
+      ASSERT_TRUE(w.Bloom->ReadResultImage(skipped));
+      p->SetInputData(scene);
+      p->Update();
+      EXPECT_TRUE(p->GetLastBloomSkipped());
+      EXPECT_EQ(ColourRelativeL2(skipped, p->GetOutput()), 0.0);
+      p->SetInputData(nullptr);
+    }
+    else
+    {
+      EXPECT_GT(w.Bloom->GetNumberOfPasses(), 10);
+      ASSERT_TRUE(w.Bloom->ReadResultImage(computed));
+    }
+  }
+  ASSERT_EQ(skipped->GetNumberOfPoints(), computed->GetNumberOfPoints());
+  EXPECT_EQ(std::memcmp(skipped->GetScalarPointer(), computed->GetScalarPointer(),
+              sizeof(float) * 4 * skipped->GetNumberOfPoints()),
+    0);
+  EXPECT_GT(MaxChannel(scene, 0), 1.0) << "the scene is HDR, only below the threshold";
 }
 
 //------------------------------------------------------------------------------
