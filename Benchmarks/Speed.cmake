@@ -37,5 +37,6 @@ endif ()
 # vtkBloomRegisterGPUBenchmarks() is linked in when it exists.
 if (EXISTS "${CMAKE_CURRENT_LIST_DIR}/Speed/ChainSpeedGPU.cxx" AND TARGET VTKBloom::RenderingBloom)
   target_sources(BloomChainSpeed PRIVATE "${CMAKE_CURRENT_LIST_DIR}/Speed/ChainSpeedGPU.cxx")
-  target_link_libraries(BloomChainSpeed PRIVATE VTKBloom::RenderingBloom)
+  target_link_libraries(BloomChainSpeed PRIVATE VTKBloom::RenderingBloom vtkbloom_scenes
+    VTK::RenderingOpenGL2 VTK::RenderingCore)
 endif ()

@@ -521,6 +521,8 @@ double Ms(const std::string& name)
 //------------------------------------------------------------------------------
 // The lead's GPU row registers itself here when Speed/ChainSpeedGPU.cxx is linked in.
 extern "C" void vtkBloomRegisterGPUBenchmarks() __attribute__((weak));
+// ... and prints its own table (frame times with and without the pass) after ours.
+extern "C" void vtkBloomPrintGPUSummary() __attribute__((weak));
 
 int main(int argc, char** argv)
 {
@@ -587,7 +589,8 @@ int main(int argc, char** argv)
     const double bound = 4.7 * FrameBytes(s) / (bw * 1e9) * 1e3;
     for (const auto& r : Results)
     {
-      if (r.first.find(size) == std::string::npos || r.second.Ms <= 0.0)
+      if (r.first.find(size) == std::string::npos || r.second.Ms <= 0.0 ||
+        r.first.rfind("gpu.", 0) == 0)
       {
         continue;
       }
@@ -613,6 +616,10 @@ int main(int argc, char** argv)
           Ms(name + size) / full);
       }
     }
+  }
+  if (vtkBloomPrintGPUSummary)
+  {
+    vtkBloomPrintGPUSummary();
   }
   benchmark::Shutdown();
   return 0;

@@ -1,0 +1,177 @@
+// The GPU rows of BloomChainSpeed (issue 5): frame time of the example scenes at 1920x1080 with
+// the plain render steps and with vtkBloomPass, interleaved frame by frame in one benchmark so
+// that machine noise hits both alike. Linked into BloomChainSpeed by Benchmarks/Speed.cmake;
+// ChainSpeed.cxx calls vtkBloomRegisterGPUBenchmarks() before running and
+// vtkBloomPrintGPUSummary() after its own table.
+//
+// Each iteration renders one frame without and one with the pass (the camera moves a little
+// every frame, so nothing is cached) and waits for both to finish; the benchmark's time is the
+// frame with bloom, its counters the medians of both and their ratio. The rows are registered
+// when the VTK build renders offscreen without a display (OSMesa) or a display is set.
+#include "vtkBloomExampleScenes.h"
+#include "vtkBloomPass.h"
+
+#include "vtkAutoInit.h"
+#include "vtkCamera.h"
+#include "vtkImageBloom.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <map>
+#include <string>
+#include <vector>
+
+VTK_MODULE_INIT(vtkRenderingOpenGL2);
+
+namespace
+{
+const int Width = 1920;
+const int Height = 1080;
+
+struct GPURow
+{
+  double Plain = 0.0;
+  double Bloom = 0.0;
+  int Passes = 0;
+};
+std::map<std::string, GPURow> GPURows; // by row name
+std::string Backend;
+
+double Median(std::vector<double> v)
+{
+  if (v.empty())
+  {
+    return 0.0;
+  }
+  std::sort(v.begin(), v.end());
+  return v[v.size() / 2];
+}
+
+// `empty`: a threshold nothing reaches, so the pass stops after its bright pass.
+void BM_GPUFrame(
+  benchmark::State& state, const std::string& scene, bool empty, const std::string& row)
+{
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(Width, Height);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkNew<vtkBloomPass> bloom;
+  vtkNew<vtkRenderStepsPass> steps;
+  bloom->SetDelegatePass(steps);
+  if (!vtkBloomBuildExampleScene(scene, renderer, bloom))
+  {
+    state.SkipWithError("unknown scene");
+    return;
+  }
+  if (empty)
+  {
+    bloom->GetParameters()->SetThreshold(1e30);
+  }
+  std::vector<double> times[2];
+  auto frame = [&](int withBloom)
+  {
+    renderer->SetPass(withBloom ? static_cast<vtkRenderPass*>(bloom) : steps);
+    renderer->GetActiveCamera()->Azimuth(0.5);
+    const auto start = std::chrono::steady_clock::now();
+    window->Render();
+    window->WaitForCompletion();
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  };
+  for (int warmUp = 0; warmUp < 2; ++warmUp) // shaders, targets and the chain are made here
+  {
+    frame(0);
+    frame(1);
+  }
+  // The backend: the window class and the OpenGL renderer (llvmpipe for OSMesa).
+  Backend = window->GetClassName();
+  if (auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window))
+  {
+    const std::string caps = gl->ReportCapabilities();
+    const std::string key = "OpenGL renderer string:";
+    const size_t at = caps.find(key);
+    if (at != std::string::npos)
+    {
+      const size_t begin = caps.find_first_not_of(' ', at + key.size());
+      Backend += ", " + caps.substr(begin, caps.find('\n', begin) - begin);
+    }
+  }
+  for (auto _ : state)
+  {
+    times[0].push_back(frame(0));
+    const double withBloom = frame(1);
+    times[1].push_back(withBloom);
+    state.SetIterationTime(withBloom);
+  }
+  GPURow& result = GPURows[row];
+  result.Plain = 1e3 * Median(times[0]);
+  result.Bloom = 1e3 * Median(times[1]);
+  result.Passes = bloom->GetNumberOfPasses();
+  state.counters["without_ms"] = result.Plain;
+  state.counters["with_ms"] = result.Bloom;
+  state.counters["ratio"] = result.Plain > 0.0 ? result.Bloom / result.Plain : 0.0;
+  state.counters["passes"] = result.Passes;
+  window->ReleaseGraphicsResources(window);
+}
+}
+
+//------------------------------------------------------------------------------
+extern "C" void vtkBloomRegisterGPUBenchmarks()
+{
+  vtkNew<vtkRenderWindow> probe;
+  const bool headless = std::strcmp(probe->GetClassName(), "vtkOSOpenGLRenderWindow") == 0 ||
+    std::strcmp(probe->GetClassName(), "vtkEGLRenderWindow") == 0;
+  if (!headless && !std::getenv("DISPLAY"))
+  {
+    std::printf("GPU rows skipped: %s needs a display (build against the OSMesa VTK, or run "
+                "under scripts/with-xvfb.sh)\n",
+      probe->GetClassName());
+    return;
+  }
+  const char* size = "1080p";
+  for (const std::string scene : { "lit-spheres", "field-lines", "scalar-field" })
+  {
+    const std::string row = "gpu." + scene + "/" + size;
+    benchmark::RegisterBenchmark(row.c_str(), BM_GPUFrame, scene, false, row)
+      ->Unit(benchmark::kMillisecond)
+      ->UseManualTime()
+      ->Iterations(12);
+  }
+  const std::string empty = std::string("gpu.lit-spheres.empty/") + size;
+  benchmark::RegisterBenchmark(empty.c_str(), BM_GPUFrame, std::string("lit-spheres"), true, empty)
+    ->Unit(benchmark::kMillisecond)
+    ->UseManualTime()
+    ->Iterations(12);
+}
+
+//------------------------------------------------------------------------------
+extern "C" void vtkBloomPrintGPUSummary()
+{
+  if (GPURows.empty())
+  {
+    return;
+  }
+  std::printf("\nGPU pass (%s), %dx%d, frames with and without vtkBloomPass interleaved; "
+              "medians of 12 frames each\n\n",
+    Backend.c_str(), Width, Height);
+  std::printf("| scene | without bloom (ms) | with bloom (ms) | ratio | passes |\n");
+  std::printf("|---|---|---|---|---|\n");
+  for (const auto& r : GPURows)
+  {
+    const std::string scene = r.first.substr(4, r.first.find('/') - 4);
+    std::printf("| %s | %.1f | %.1f | %.2fx | %d |\n", scene.c_str(), r.second.Plain,
+      r.second.Bloom, r.second.Plain > 0.0 ? r.second.Bloom / r.second.Plain : 0.0,
+      r.second.Passes);
+  }
+}
