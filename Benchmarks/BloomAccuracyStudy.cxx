@@ -7,8 +7,14 @@
 // and the time per megapixel of a 2-D blur of a 1920x1080 float RGBA image; for the bloom
 // pyramid variants (13-tap, box or binomial down; tent or bilinear up; 1..5 levels) it measures
 // the point spread function of down^L up^L against the Gaussian of the same variance, and its
-// time. It writes OUT_DIR/accuracy.md (the Markdown tables) and OUT_DIR/accuracy.csv (for
-// scripts/plot-accuracy.py). --quick uses a 480x270 image and fewer sigmas, for smoke runs.
+// time. Built with rendering (VTKBLOOM_ENABLE_RENDERING), it also runs every vtkImageBloom
+// preset on the same frame through vtkBloomPass::ApplyToImage (the GPU chain) and through the
+// CPU filter's FAST (float32) mode, each against the filter's REFERENCE (double) mode, with the
+// time of all three. It writes OUT_DIR/accuracy.md (the Markdown tables) and
+// OUT_DIR/accuracy.csv (for scripts/plot-accuracy.py). --quick uses a 480x270 image and fewer
+// sigmas, for smoke runs.
+#include <vtkDataArray.h>
+#include <vtkImageBloom.h>
 #include <vtkImageData.h>
 #include <vtkImageGaussianSmooth.h>
 #include <vtkImagePyramidDown.h>
@@ -18,10 +24,20 @@
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
 
+#ifdef VTKBLOOM_ACCURACY_WITH_GPU
+#include <vtkBloomPass.h>
+#include <vtkCallbackCommand.h>
+#include <vtkCommand.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkRenderWindow.h>
+#endif
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iostream>
@@ -33,14 +49,16 @@ namespace
 {
 struct Row
 {
-  std::string Family;  ///< "gaussian" or "chain" (or "gpu", see AddGpuRows)
+  std::string Family;  ///< "gaussian", "chain", or "gpu" and "cpu" (see AddGpuRows)
   std::string Method;  ///< curve name in the plot
   double Sigma = 0.0;  ///< nominal sigma (Gaussians) or effective sigma (chains)
-  double MaxAbs = 0.0; ///< max |h - g| / max g
-  double Rms = 0.0;    ///< RMS of h - g over |x| <= 4 sigma, / max g
+  double MaxAbs = 0.0; ///< max |h - g| / max g; gpu and cpu: max |out - ref| / max ref
+  double Rms = 0.0;    ///< RMS of h - g over |x| <= 4 sigma, / max g; gpu and cpu: relative L2
   double VarianceRatio = 0.0;
   double MillisecondsPerMegapixel = 0.0;
-  std::string Note;
+  std::string Note;         ///< levels (chains) or the preset (gpu and cpu)
+  double AbsoluteMax = 0.0; ///< gpu and cpu: max |out - ref|
+  bool Reference = false;   ///< the double chain itself (its error is 0 by definition)
 };
 
 using Clock = std::chrono::steady_clock;
@@ -318,12 +336,178 @@ void ChainRows(int maxLevels, vtkImageData* frame, std::vector<Row>& rows)
   }
 }
 
-// Hook for the GPU rows (vtkBloomPass against these CPU filters), added by the render-pass
-// work: append rows with Family "gpu", the same error measures (against ContinuousGaussian or
-// the PSF's Gaussian as above) and the GPU time per megapixel on the same 1920x1080 RGBA frame.
-void AddGpuRows(
-  const std::vector<double>& /*sigmas*/, vtkImageData* /*frame*/, std::vector<Row>& /*rows*/)
+// max |a - b| and the relative L2 ||a - b|| / ||b|| over the colour channels of two RGBA
+// images of the same size, and the largest colour value of b.
+struct Difference
 {
+  double MaxAbs = 0.0;
+  double RelativeL2 = 0.0;
+  double Peak = 0.0;
+};
+
+Difference Compare(vtkImageData* a, vtkImageData* b)
+{
+  Difference d;
+  vtkDataArray* x = a->GetPointData()->GetScalars();
+  vtkDataArray* y = b->GetPointData()->GetScalars();
+  long double num = 0.0L, den = 0.0L;
+  for (vtkIdType p = 0; p < b->GetNumberOfPoints(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double u = x->GetComponent(p, c), v = y->GetComponent(p, c);
+      d.MaxAbs = std::max(d.MaxAbs, std::fabs(u - v));
+      d.Peak = std::max(d.Peak, std::fabs(v));
+      num += static_cast<long double>(u - v) * (u - v);
+      den += static_cast<long double>(v) * v;
+    }
+  }
+  d.RelativeL2 = std::sqrt(static_cast<double>(num / den));
+  return d;
+}
+
+Row ChainRow(const char* family, const std::string& method, const std::string& preset,
+  const Difference& d, double millisecondsPerMegapixel)
+{
+  Row row;
+  row.Family = family;
+  row.Method = method;
+  row.Note = preset;
+  row.MaxAbs = d.MaxAbs / d.Peak;
+  row.Rms = d.RelativeL2;
+  row.AbsoluteMax = d.MaxAbs;
+  row.MillisecondsPerMegapixel = millisecondsPerMegapixel;
+  return row;
+}
+
+// The GPU rows: every vtkImageBloom preset on the frame through vtkBloomPass::ApplyToImage
+// (32-bit storage; the pass's chain always runs on 32-bit float targets) and through the CPU
+// filter's FAST mode (its float32 default), both against its REFERENCE mode (the chain in
+// double), and the time of all three, measured as the other rows are. The GPU time is the whole
+// ApplyToImage call: upload, chain and read back. The CPU times are with statistics off (the
+// pass computes none). Without a GPU context (or when built without rendering) a note says so
+// and no row is added. `device` receives the OpenGL renderer and window class.
+void AddGpuRows(vtkImageData* frame, std::vector<Row>& rows, std::string& device)
+{
+#ifndef VTKBLOOM_ACCURACY_WITH_GPU
+  (void)frame;
+  (void)rows;
+  (void)device;
+  std::cerr << "note: built without rendering (VTKBLOOM_ENABLE_RENDERING off): no GPU rows\n";
+#else
+  const double megapixels = static_cast<double>(frame->GetNumberOfPoints()) / 1e6;
+  vtkNew<vtkRenderWindow> window;
+  vtkOpenGLRenderWindow* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!gl)
+  {
+    std::cerr << "note: no OpenGL render window in this VTK: no GPU rows\n";
+    return;
+  }
+  // VTK 9.1's X window aborts the process when it cannot open its display, so look first: set,
+  // and for a local display (":N", ":N.S") its socket present.
+  if (gl->IsA("vtkXOpenGLRenderWindow"))
+  {
+    const char* variable = std::getenv("DISPLAY");
+    const std::string display = variable ? variable : "";
+    bool present = !display.empty();
+    if (present && display[0] == ':')
+    {
+      const std::string number = display.substr(1, display.find('.') - 1);
+      present = std::filesystem::exists("/tmp/.X11-unix/X" + number);
+    }
+    if (!present)
+    {
+      std::cerr << "note: " << gl->GetClassName() << " needs an X display and DISPLAY='" << display
+                << "' names none (run under scripts/with-xvfb.sh): no GPU rows\n";
+      return;
+    }
+  }
+  gl->SetOffScreenRendering(1);
+  gl->SetMultiSamples(0);
+  gl->SetSize(16, 16);
+  if (!gl->SupportsOpenGL())
+  {
+    std::cerr << "note: no usable OpenGL context (" << gl->GetOpenGLSupportMessage()
+              << "): no GPU rows\n";
+    return;
+  }
+  // Any VTK error during the GPU rows (context, shaders, ApplyToImage) is printed and drops
+  // them.
+  bool failed = false;
+  vtkNew<vtkCallbackCommand> onError;
+  onError->SetClientData(&failed);
+  onError->SetCallback(
+    [](vtkObject*, unsigned long, void* flag, void* message)
+    {
+      std::cerr << "error: " << (message ? static_cast<const char*>(message) : "") << "\n";
+      *static_cast<bool*>(flag) = true;
+    });
+  gl->AddObserver(vtkCommand::ErrorEvent, onError);
+  gl->Initialize();
+  std::string renderer = "unknown renderer";
+  std::istringstream capabilities(gl->ReportCapabilities());
+  for (std::string line; std::getline(capabilities, line);)
+  {
+    const std::string key = "OpenGL renderer string:";
+    if (line.compare(0, key.size(), key) == 0)
+    {
+      renderer = line.substr(line.find_first_not_of(' ', key.size()));
+    }
+  }
+  device = renderer + " (" + gl->GetClassName() + ")";
+  std::cerr << "GPU rows on " << device << "\n";
+
+  vtkNew<vtkBloomPass> pass;
+  pass->AddObserver(vtkCommand::ErrorEvent, onError);
+  pass->SetFloatPrecisionTo32Bit();
+  std::vector<Row> added;
+  for (const std::string& preset : vtkImageBloom::GetPresetNames())
+  {
+    pass->SetPreset(preset.c_str());
+    vtkNew<vtkImageBloom> cpu;
+    cpu->AddObserver(vtkCommand::ErrorEvent, onError);
+    cpu->SetPreset(preset.c_str());
+    cpu->SetComputeStatistics(false);
+    cpu->SetExecutionModeToReference();
+    auto reference = vtkSmartPointer<vtkImageData>::New();
+    reference->DeepCopy(Run(cpu, frame));
+    const double referenceTime = 1e3 * TimeIt([&] { Run(cpu, frame); }) / megapixels;
+    cpu->SetExecutionModeToFast();
+    auto fast = vtkSmartPointer<vtkImageData>::New();
+    fast->DeepCopy(Run(cpu, frame));
+    const double fastTime = 1e3 * TimeIt([&] { Run(cpu, frame); }) / megapixels;
+    vtkNew<vtkImageData> gpu;
+    failed = !pass->ApplyToImage(gl, frame, gpu) || failed; // also builds shaders and targets
+    if (failed)
+    {
+      break;
+    }
+    const double gpuTime =
+      1e3 * TimeIt([&] { failed = !pass->ApplyToImage(gl, frame, gpu) || failed; }) / megapixels;
+    if (failed)
+    {
+      break;
+    }
+    const Difference g = Compare(gpu, reference), f = Compare(fast, reference);
+    added.push_back(ChainRow("gpu", "vtkBloomPass (GPU) vs double chain", preset, g, gpuTime));
+    added.push_back(ChainRow("cpu", "vtkImageBloom FAST vs double chain", preset, f, fastTime));
+    Difference none;
+    none.Peak = 1.0;
+    added.push_back(ChainRow("cpu", "vtkImageBloom REFERENCE", preset, none, referenceTime));
+    added.back().Reference = true;
+    std::cerr << "preset " << preset << ": GPU relative L2 " << g.RelativeL2 << ", " << gpuTime
+              << " ms/MP; FAST " << f.RelativeL2 << ", " << fastTime << " ms/MP; REFERENCE "
+              << referenceTime << " ms/MP\n";
+  }
+  pass->ReleaseGraphicsResources(gl);
+  if (failed)
+  {
+    std::cerr << "note: the GPU pass reported an error: no GPU rows\n";
+    device.clear();
+    return;
+  }
+  rows.insert(rows.end(), added.begin(), added.end());
+#endif
 }
 
 std::string Format(double v, const char* format)
@@ -350,7 +534,8 @@ int main(int argc, char* argv[])
   std::vector<Row> rows;
   GaussianRows(sigmas, frame, rows);
   ChainRows(quick ? 2 : 5, frame, rows);
-  AddGpuRows(sigmas, frame, rows);
+  std::string device;
+  AddGpuRows(frame, rows, device);
 
   std::ofstream csv(dir + "/accuracy.csv");
   csv << "family,method,sigma,max_abs,rms,variance_ratio,ms_per_mp,note\n";
@@ -368,7 +553,7 @@ int main(int argc, char* argv[])
         "|\n|---|---:|---:|---:|---:|---:|\n";
   for (const Row& r : rows)
   {
-    if (r.Family == "chain")
+    if (r.Family != "gaussian")
     {
       continue;
     }
@@ -389,6 +574,31 @@ int main(int argc, char* argv[])
     md << "| " << r.Method << " | " << r.Note.substr(0, r.Note.find(' ')) << " | "
        << Format(r.Sigma, "%.2f") << " | " << Format(r.MaxAbs, "%.2e") << " | "
        << Format(r.Rms, "%.2e") << " | " << Format(r.MillisecondsPerMegapixel, "%.1f") << " |\n";
+  }
+  if (!device.empty())
+  {
+    md << "\nThe GPU pass against the CPU filter: every preset of `vtkImageBloom` on the same "
+          "image, through `vtkBloomPass::ApplyToImage` (GPU: "
+       << device
+       << "; the time is the whole call, upload and read-back included) and through the "
+          "filter's float32 FAST mode, against its REFERENCE mode (the chain in double): "
+          "relative L2 and max abs over the colour channels, and max abs over the largest "
+          "colour value of the reference. CPU times with statistics off.\n\n";
+    md << "| preset | implementation | relative L2 | max abs | max abs / peak | ms / MP "
+          "|\n|---|---|---:|---:|---:|---:|\n";
+    for (const Row& r : rows)
+    {
+      if (r.Family != "gpu" && r.Family != "cpu")
+      {
+        continue;
+      }
+      const bool reference = r.Reference;
+      md << "| " << r.Note << " | " << r.Method.substr(0, r.Method.find(" vs ")) << " | "
+         << (reference ? "(reference)" : Format(r.Rms, "%.2e")) << " | "
+         << (reference ? "" : Format(r.AbsoluteMax, "%.2e")) << " | "
+         << (reference ? "" : Format(r.MaxAbs, "%.2e")) << " | "
+         << Format(r.MillisecondsPerMegapixel, "%.1f") << " |\n";
+    }
   }
   return 0;
 }

@@ -4,8 +4,10 @@
     /usr/bin/python3 scripts/plot-accuracy.py accuracy.csv out.png
 
 Error (max abs over the peak) against time per megapixel, log-log, one curve per method (its
-points are the sigmas, or the level counts for the pyramid chains). Needs an X display
-(xvfb-run) with Debian's VTK.
+points are the sigmas, or the level counts for the pyramid chains). The GPU rows (family gpu:
+vtkBloomPass, and family cpu: vtkImageBloom FAST, each against the filter's double chain) are
+markers without lines, one per preset; the double chain itself (error 0) is not drawn. Needs an
+X display (xvfb-run) with Debian's VTK.
 """
 import csv
 import sys
@@ -23,14 +25,19 @@ import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (render window)
 
 COLOURS = [(31, 119, 180), (255, 127, 14), (44, 160, 44), (214, 39, 40), (148, 103, 189),
            (140, 86, 75), (227, 119, 194), (127, 127, 127), (188, 189, 34), (23, 190, 207),
-           (0, 0, 0), (255, 187, 120)]
+           (0, 0, 0), (255, 187, 120), (0, 128, 128), (128, 0, 0)]
 
 
 def main():
     source, target = sys.argv[1], sys.argv[2]
     curves = OrderedDict()
+    points_only = set()
     with open(source, newline="") as f:
         for row in csv.DictReader(f):
+            if row["family"] in ("gpu", "cpu"):
+                if float(row["max_abs"]) == 0.0:
+                    continue  # the reference itself
+                points_only.add(row["method"])
             curves.setdefault(row["method"], []).append(
                 (float(row["ms_per_mp"]), max(float(row["max_abs"]), 1e-12)))
     view = vtkContextView()
@@ -40,7 +47,8 @@ def main():
     chart = vtkChartXY()
     view.GetScene().AddItem(chart)
     chart.SetShowLegend(True)
-    chart.SetTitle("Gaussian methods and bloom pyramids: error against time (1920x1080 RGBA)")
+    chart.SetTitle("Gaussian methods, bloom pyramids and the GPU pass: error against time "
+                   "(1920x1080 RGBA)")
     for axis, title in ((vtkAxis.BOTTOM, "time per megapixel (ms)"),
                         (vtkAxis.LEFT, "max abs error / peak")):
         chart.GetAxis(axis).SetLogScale(True)
@@ -58,9 +66,17 @@ def main():
         for r, (t, e) in enumerate(points):
             table.SetValue(r, 0, t)
             table.SetValue(r, 1, e)
+        colour = COLOURS[index % len(COLOURS)]
+        if name in points_only:
+            # One marker per preset: the presets are not a sequence.
+            line = chart.AddPlot(vtkChart.POINTS)
+            line.SetInputData(table, 0, 1)
+            line.SetColor(colour[0], colour[1], colour[2], 255)
+            line.SetMarkerStyle(5 if "GPU" in name else 3)
+            line.SetMarkerSize(12.0)
+            continue
         line = chart.AddPlot(vtkChart.LINE)
         line.SetInputData(table, 0, 1)
-        colour = COLOURS[index % len(COLOURS)]
         line.SetColor(colour[0], colour[1], colour[2], 255)
         line.SetWidth(2.0)
         if name.startswith("pyramid"):
