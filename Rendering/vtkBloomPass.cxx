@@ -33,6 +33,7 @@
 #include <cmath>
 #include <cstring>
 #include <iomanip>
+#include <limits>
 #include <map>
 #include <sstream>
 #include <vector>
@@ -71,7 +72,7 @@ std::string ShaderConstants()
      << "\n#define MODE_HARD_LUMINANCE " << vtkImageBloomThreshold::HARD_LUMINANCE
      << "\n#define MODE_PER_CHANNEL " << vtkImageBloomThreshold::PER_CHANNEL
      << "\n#define MODE_NONE " << vtkImageBloomThreshold::NONE << "\n#define FLOAT_MAX "
-     << std::scientific << std::setprecision(9) << VTK_FLOAT_MAX << "\n";
+     << std::scientific << std::setprecision(9) << std::numeric_limits<float>::max() << "\n";
   return os.str();
 }
 
@@ -687,7 +688,7 @@ public:
       const double strengthTint[3] = { c.Strength * c.Tint[0], c.Strength * c.Tint[1],
         c.Strength * c.Tint[2] };
       set3f("strengthTint", strengthTint);
-      setf("largest", this->Format == GL_RGBA32F ? VTK_FLOAT_MAX : 65504.0);
+      setf("largest", this->Format == GL_RGBA32F ? std::numeric_limits<float>::max() : 65504.0);
     }
   }
 

@@ -292,7 +292,14 @@ void main()
   base = finite(base);
 #endif
 #if COMPOSITE_BLOOM
-  result = vec4(keep * base.rgb + strengthTint * sum.rgb, base.a);
+  // The bloom is clamped to the float range first (NaN 0), as vtkImageBloom's composite does,
+  // so a zero strength or tint channel adds nothing even where the float32 bloom overflowed.
+  vec3 bloom = sum.rgb;
+  for (int i = 0; i < 3; ++i)
+  {
+    bloom[i] = isnan(bloom[i]) ? 0.0 : clamp(bloom[i], -FLOAT_MAX, FLOAT_MAX);
+  }
+  result = vec4(keep * base.rgb + strengthTint * bloom, base.a);
 #else
   // No bloom (nothing passed the bright pass, or the effect is off): keep * in + 0, as
   // vtkImageBloom composites a skipped bloom.

@@ -596,8 +596,7 @@ TEST(RenderingBloomPassHardCases, WideDynamicRangeKeepsTheEnergy)
         p->SetAccumulateMode(vtkImageBloom::CASCADE);
         p->SetStrength(1.0);
       }
-      // The input is finite; sanitizing would change nothing on the CPU (see
-      // DISABLED_FiniteValuesAboveVtkFloatMaxAreKept for the GPU).
+      // The input is finite; sanitizing would change nothing (FiniteValuesAboveVtkFloatMaxAreKept).
       p->SetSanitizeNonFinite(false);
       auto out = gpu.Apply(input);
       ASSERT_TRUE(out);
@@ -740,13 +739,12 @@ TEST(RenderingBloomPassHardCases, ThresholdEdgeKneeZeroAndNegativeInput)
 }
 
 //------------------------------------------------------------------------------
-// Known defect of the pass, disabled until Rendering/glsl/vtkBloomPassFS.glsl is fixed: with
-// SanitizeNonFinite on, the shader clamps its source and its result to VTK_FLOAT_MAX, which VTK
-// defines as 1e38, not to the largest float (3.4028235e38) that vtkImageBloom uses. So +Inf
-// becomes 1e38 instead of 3.4028235e38, and finite input between 1e38 and 3.4e38 is changed,
-// although sanitizing must leave finite input alone. This is the ~0.7 relative L2 of
-// TestBloomPass NonFiniteInputFollowsTheCPUPolicy. Level weights 0 leave only the composite.
-TEST(RenderingBloomPassHardCases, DISABLED_FiniteValuesAboveVtkFloatMaxAreKept)
+// With SanitizeNonFinite on, the pass clamps its source and its result to the largest float
+// (3.4028235e38), as vtkImageBloom does, not to VTK_FLOAT_MAX (which VTK defines as 1e38): +Inf
+// becomes 3.4028235e38 and finite input between 1e38 and 3.4e38 is left alone. (Clamping to
+// 1e38 was the ~0.7 relative L2 of TestBloomPass NonFiniteInputFollowsTheCPUPolicy.) Level
+// weights 0 leave only the composite.
+TEST(RenderingBloomPassHardCases, FiniteValuesAboveVtkFloatMaxAreKept)
 {
   GpuBloom gpu;
   gpu.Pass->SetPreset("webgpu-market");
@@ -795,11 +793,10 @@ TEST(RenderingBloomPassHardCases, ZeroStrengthIgnoresAnOverflowingBloom)
 }
 
 //------------------------------------------------------------------------------
-// Known defect of the pass, disabled until Rendering/glsl/vtkBloomPassFS.glsl is fixed: the
-// composite multiplies the bloom by Strength x Tint even in a channel where that is 0, so a
-// bloom that overflows float32 gives 0 x Inf = NaN there (sanitize off; 0 with sanitize on)
-// instead of the input, which the CPU filter gives.
-TEST(RenderingBloomPassHardCases, DISABLED_ZeroTintChannelIgnoresAnOverflowingBloom)
+// A bloom that overflows float32 is clamped to the float range before Strength x Tint, as the
+// CPU composite does: a channel whose tint is 0 keeps the input (not 0 x Inf = NaN), with
+// sanitizing on and off.
+TEST(RenderingBloomPassHardCases, ZeroTintChannelIgnoresAnOverflowingBloom)
 {
   GpuBloom gpu;
   gpu.Pass->SetPreset("webgpu-market");
