@@ -120,6 +120,40 @@ inline void vtkBloomBrightPass(
 }
 
 /**
+ * True when vtkBloomBrightPass certainly gives zero for every finite colour whose luminance is at
+ * most `luminance` and whose largest value is at most `brightness` (the comparisons are the
+ * formula's own, evaluated as it evaluates them, and monotone). False when that cannot be
+ * decided: a luminance above the clamp (the firefly guard rescales first), mode NONE, or a
+ * colour the mode keeps.
+ */
+template <typename Real>
+inline bool vtkBloomBrightPassIsZeroBelow(
+  Real luminance, Real brightness, int mode, double threshold, double knee, double clampLuminance)
+{
+  if (!(luminance <= static_cast<Real>(clampLuminance)))
+  {
+    return false;
+  }
+  const Real t0 = static_cast<Real>(threshold);
+  const Real k = static_cast<Real>(threshold * knee);
+  switch (mode)
+  {
+    case vtkImageBloomThreshold::SMOOTHSTEP_KNEE:
+      // smoothstep 0, or the step lum >= T
+      return k > Real(0) ? luminance <= t0 - k : luminance < t0;
+    case vtkImageBloomThreshold::HARD_LUMINANCE:
+      return luminance <= t0;
+    case vtkImageBloomThreshold::QUADRATIC_KNEE:
+      // Both terms of the factor <= 0, evaluated as the formula evaluates them.
+      return k >= Real(0) && brightness - t0 + k <= Real(0) && brightness - t0 <= Real(0);
+    case vtkImageBloomThreshold::PER_CHANNEL:
+      return brightness <= t0;
+    default:
+      return false;
+  }
+}
+
+/**
  * True when vtkBloomBrightPass<N, Real> certainly gives zero for `colour` (it may answer false
  * for some colours that do give zero): every value finite and the measure the mode compares
  * below its zero edge. The fused chain uses it to skip the full formula for dark samples.
@@ -136,31 +170,16 @@ inline bool vtkBloomBrightPassIsZero(
     finite &= colour[c] >= -m && colour[c] <= m;
     brightness = std::max(brightness, colour[c]);
   }
+  // Non-finite colours are mapped first: not decided here.
+  if (!finite)
+  {
+    return false;
+  }
   const Real lum = N == 3 ? static_cast<Real>(vtkBloomKernels::LuminanceR) * colour[0] +
       static_cast<Real>(vtkBloomKernels::LuminanceG) * colour[1] +
       static_cast<Real>(vtkBloomKernels::LuminanceB) * colour[2]
                           : colour[0];
-  // Non-finite colours are mapped and colours above the clamp are scaled first: not decided here.
-  if (!finite || !(lum <= static_cast<Real>(clampLuminance)))
-  {
-    return false;
-  }
-  const Real t0 = static_cast<Real>(threshold);
-  const Real k = static_cast<Real>(threshold * knee);
-  switch (mode)
-  {
-    case vtkImageBloomThreshold::SMOOTHSTEP_KNEE:
-      return k > Real(0) ? lum <= t0 - k : lum < t0; // smoothstep 0, or the step lum >= T
-    case vtkImageBloomThreshold::HARD_LUMINANCE:
-      return lum <= t0;
-    case vtkImageBloomThreshold::QUADRATIC_KNEE:
-      // Both terms of the factor <= 0, evaluated as the formula evaluates them.
-      return k >= Real(0) && brightness - t0 + k <= Real(0) && brightness - t0 <= Real(0);
-    case vtkImageBloomThreshold::PER_CHANNEL:
-      return brightness <= t0;
-    default:
-      return false;
-  }
+  return vtkBloomBrightPassIsZeroBelow(lum, brightness, mode, threshold, knee, clampLuminance);
 }
 
 #endif

@@ -67,28 +67,13 @@ Op MakeOp(const vtkBloomLinearOperator& d)
   o.Width = d.Width;
   o.First = d.First;
   o.W.assign(d.Weights.begin(), d.Weights.end());
-  if (o.Out > 0 && o.Width > 0)
+  // The flat x loop reads input j + ToeShift for output j: a period-1 run of stride 1.
+  const vtkBloomLinearOperator::InvariantRange range = d.FindInvariantRange(1, 1);
+  if (range.Begin < range.End && range.Stride == 1)
   {
-    const int ref = o.Out / 2;
-    const int shift = o.First[ref] - ref;
-    const size_t w = static_cast<size_t>(o.Width);
-    auto same = [&](int j)
-    {
-      return o.First[j] - j == shift &&
-        std::equal(o.W.begin() + j * w, o.W.begin() + (j + 1) * w, o.W.begin() + ref * w);
-    };
-    int lo = ref, hi = ref + 1;
-    while (lo > 0 && same(lo - 1))
-    {
-      --lo;
-    }
-    while (hi < o.Out && same(hi))
-    {
-      ++hi;
-    }
-    o.ToeLo = lo;
-    o.ToeHi = hi;
-    o.ToeShift = shift;
+    o.ToeLo = range.Begin;
+    o.ToeHi = range.End;
+    o.ToeShift = o.First[range.Begin] - range.Begin;
   }
   return o;
 }
@@ -566,26 +551,8 @@ bool RowsAreDark(const RowBounds& b, const vtkBloomFastChainParameters& p)
     return false;
   }
   const float margin = 1e-5f * b.Magnitude;
-  const float lum = b.Luminance + margin, channel = b.Channel + margin;
-  const float t0 = static_cast<float>(p.Threshold);
-  const float k = static_cast<float>(p.Threshold * p.Knee);
-  if (!(lum <= static_cast<float>(p.ClampLuminance)))
-  {
-    return false;
-  }
-  switch (p.ThresholdMode)
-  {
-    case vtkImageBloomThreshold::SMOOTHSTEP_KNEE:
-      return k > 0.0f ? lum <= t0 - k : lum < t0;
-    case vtkImageBloomThreshold::HARD_LUMINANCE:
-      return lum <= t0;
-    case vtkImageBloomThreshold::QUADRATIC_KNEE:
-      return k >= 0.0f && channel - t0 + k <= 0.0f && channel - t0 <= 0.0f;
-    case vtkImageBloomThreshold::PER_CHANNEL:
-      return channel <= t0;
-    default:
-      return false;
-  }
+  return vtkBloomBrightPassIsZeroBelow(b.Luminance + margin, b.Channel + margin, p.ThresholdMode,
+    p.Threshold, p.Knee, p.ClampLuminance);
 }
 
 // Rows can be decided dark when the fetch is a convex combination: weights >= 0 summing to 1

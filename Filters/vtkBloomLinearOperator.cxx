@@ -237,6 +237,60 @@ void vtkBloomLinearOperator::GetInputRange(int outMin, int outMax, int& inMin, i
 }
 
 //------------------------------------------------------------------------------
+vtkBloomLinearOperator::InvariantRange vtkBloomLinearOperator::FindInvariantRange(
+  int period, int minimum) const
+{
+  const int n = this->OutputSize;
+  const int c = n / 2;
+  InvariantRange range;
+  if (period < 1 || n < minimum || c + period >= n)
+  {
+    return range;
+  }
+  // Row b is row a moved by `stride` input samples.
+  auto repeats = [this](int a, int b, int stride)
+  {
+    if (this->First[b] != this->First[a] + stride)
+    {
+      return false;
+    }
+    const size_t w = static_cast<size_t>(this->Width);
+    for (size_t k = 0; k < w; ++k)
+    {
+      if (static_cast<float>(this->Weights[a * w + k]) !=
+        static_cast<float>(this->Weights[b * w + k]))
+      {
+        return false;
+      }
+    }
+    return true;
+  };
+  const int stride = this->First[c + period] - this->First[c];
+  if (stride < 1 || !repeats(c, c + period, stride))
+  {
+    return range;
+  }
+  int begin = c, end = c + period + 1;
+  while (begin > 0 && repeats(begin - 1, begin - 1 + period, stride))
+  {
+    --begin;
+  }
+  while (end < n && repeats(end - period, end, stride))
+  {
+    ++end;
+  }
+  if (end - begin < std::max(minimum, 2 * period))
+  {
+    return range;
+  }
+  range.Begin = begin;
+  range.End = end;
+  range.Period = period;
+  range.Stride = stride;
+  return range;
+}
+
+//------------------------------------------------------------------------------
 bool vtkBloomLinearOperator::IsIdentity() const
 {
   if (this->InputSize != this->OutputSize)

@@ -73,6 +73,23 @@ public:
   /// True when this is the identity (so a pass can be skipped).
   bool IsIdentity() const;
 
+  /**
+   * Where the operator is translation invariant with a period of `period` output rows (1: a
+   * convolution; 2: an exact 2:1 or 1:2 resample): the longest run of rows [Begin, End) around
+   * the middle row in which row j + Period is row j moved by Stride >= 1 input samples, with
+   * the same weights compared in float32 (the precision the fused CPU chain and vtkBloomPass
+   * apply them in). Fast paths run such a run with one set of weights. Empty (Begin == End)
+   * when shorter than max(minimum, 2 * period) rows.
+   */
+  struct InvariantRange
+  {
+    int Begin = 0;
+    int End = 0;
+    int Period = 0;
+    int Stride = 0;
+  };
+  InvariantRange FindInvariantRange(int period, int minimum) const;
+
   int InputSize = 0;
   int OutputSize = 0;
   int Width = 0;

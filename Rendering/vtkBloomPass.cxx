@@ -95,55 +95,21 @@ struct Interior
 
   static Interior Find(const vtkBloomLinearOperator& op)
   {
-    const int n = op.OutputSize;
     const int width = op.Width;
     auto weight = [&op, width](int j, int k)
     { return static_cast<float>(op.Weights[static_cast<size_t>(j) * width + k]); };
-    // Row b is row a moved by `stride` input samples.
-    auto repeats = [&](int a, int b, int stride)
-    {
-      if (op.First[b] != op.First[a] + stride)
-      {
-        return false;
-      }
-      for (int k = 0; k < width; ++k)
-      {
-        if (weight(a, k) != weight(b, k))
-        {
-          return false;
-        }
-      }
-      return true;
-    };
-    // Too short an interior is not worth its own draw.
+    // Too short an interior is not worth its own draw. A stride of 0 (an input of one
+    // sample) would leave the shader independent of the fragment's position, so
+    // FindInvariantRange refuses it and the table evaluates such an operator.
     const int minimum = 8;
     for (int period : { 1, 2 })
     {
-      const int c = n / 2;
-      if (n < minimum || c + period >= n)
+      const vtkBloomLinearOperator::InvariantRange range = op.FindInvariantRange(period, minimum);
+      if (range.Begin == range.End)
       {
         continue;
       }
-      // A stride of 0 (an input of one sample) would leave the shader independent of the
-      // fragment's position; the table evaluates such an operator.
-      const int stride = op.First[c + period] - op.First[c];
-      if (stride < 1 || !repeats(c, c + period, stride))
-      {
-        continue;
-      }
-      int begin = c, end = c + period + 1;
-      while (begin > 0 && repeats(begin - 1, begin - 1 + period, stride))
-      {
-        --begin;
-      }
-      while (end < n && repeats(end - period, end, stride))
-      {
-        ++end;
-      }
-      if (end - begin < std::max(minimum, 2 * period))
-      {
-        continue;
-      }
+      const int begin = range.Begin, end = range.End, stride = range.Stride;
       // Drop the band's zero padding common to every phase.
       int lo = width, hi = 0;
       for (int ph = 0; ph < period; ++ph)

@@ -32,7 +32,8 @@ set(vtkbloom_filters_tests
   TestImagePyramidUp
   TestImageBloomThreshold
   TestBloomStreaming
-  TestBloomErrors)
+  TestBloomErrors
+  TestBloomLinearOperator)
 
 foreach (test IN LISTS vtkbloom_filters_tests)
   set(extra)
