@@ -1,16 +1,8 @@
 // Frame time of an example scene rendered with the plain render steps and with vtkBloomPass,
 // interleaved frame by frame in one run so that machine noise hits both alike.
 //   BloomPassFrameTime [SCENE] [WIDTH HEIGHT] [FRAMES]
-#include "vtkBloomExampleScenes.h"
-#include "vtkBloomPass.h"
-#include "vtkCamera.h"
-#include "vtkNew.h"
-#include "vtkRenderStepsPass.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
+#include "vtkBloomFrameTimer.h"
 
-#include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <string>
@@ -23,16 +15,8 @@ int main(int argc, char* argv[])
   const int height = argc > 3 ? std::atoi(argv[3]) : 1080;
   const int frames = argc > 4 ? std::atoi(argv[4]) : 15;
 
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(width, height);
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  vtkNew<vtkBloomPass> bloom;
-  vtkNew<vtkRenderStepsPass> steps;
-  bloom->SetDelegatePass(steps);
-  if (!vtkBloomBuildExampleScene(scene, renderer, bloom))
+  vtkBloomFrameTimer timer;
+  if (!timer.Setup(scene, width, height))
   {
     std::fprintf(stderr, "unknown scene %s\n", scene.c_str());
     return 1;
@@ -43,26 +27,16 @@ int main(int argc, char* argv[])
   {
     for (int withBloom = 0; withBloom < 2; ++withBloom)
     {
-      renderer->SetPass(withBloom ? static_cast<vtkRenderPass*>(bloom) : steps);
-      renderer->GetActiveCamera()->Azimuth(0.5); // a new frame, not a cached one
-      const auto start = std::chrono::steady_clock::now();
-      window->Render();
-      window->WaitForCompletion();
-      const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+      const double ms = 1e3 * timer.Frame(withBloom != 0);
       if (f >= 0)
       {
         times[withBloom].push_back(ms);
       }
     }
   }
-  for (auto& t : times)
-  {
-    std::sort(t.begin(), t.end());
-  }
-  const double plain = times[0][times[0].size() / 2], bloomed = times[1][times[1].size() / 2];
+  const double plain = vtkBloomFrameTimer::Median(times[0]);
+  const double bloomed = vtkBloomFrameTimer::Median(times[1]);
   std::printf("| %s | %dx%d | %.1f ms | %.1f ms | %.2fx | %d |\n", scene.c_str(), width, height,
-    plain, bloomed, bloomed / plain, bloom->GetNumberOfPasses());
-  window->ReleaseGraphicsResources(window);
+    plain, bloomed, bloomed / plain, timer.Bloom->GetNumberOfPasses());
   return 0;
 }

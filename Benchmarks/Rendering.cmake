@@ -1,4 +1,5 @@
-# Frame time of an example scene with and without vtkBloomPass (scripts/benchmark-pass.sh).
+# Frame time of an example scene with and without vtkBloomPass:
+#   BloomPassFrameTime [SCENE] [WIDTH HEIGHT] [FRAMES]
 if (NOT VTKBLOOM_ENABLE_RENDERING)
   return ()
 endif ()

@@ -37,6 +37,7 @@ endif ()
 # vtkBloomRegisterGPUBenchmarks() is linked in when it exists.
 if (EXISTS "${CMAKE_CURRENT_LIST_DIR}/Speed/ChainSpeedGPU.cxx" AND TARGET VTKBloom::RenderingBloom)
   target_sources(BloomChainSpeed PRIVATE "${CMAKE_CURRENT_LIST_DIR}/Speed/ChainSpeedGPU.cxx")
+  target_include_directories(BloomChainSpeed PRIVATE "${CMAKE_CURRENT_LIST_DIR}")
   target_link_libraries(BloomChainSpeed PRIVATE VTKBloom::RenderingBloom vtkbloom_scenes
     VTK::RenderingOpenGL2 VTK::RenderingCore)
 endif ()

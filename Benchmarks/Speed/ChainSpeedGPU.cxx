@@ -8,22 +8,15 @@
 // every frame, so nothing is cached) and waits for both to finish; the benchmark's time is the
 // frame with bloom, its counters the medians of both and their ratio. The rows are registered
 // when the VTK build renders offscreen without a display (OSMesa) or a display is set.
-#include "vtkBloomExampleScenes.h"
-#include "vtkBloomPass.h"
+#include "vtkBloomFrameTimer.h"
 
 #include "vtkAutoInit.h"
-#include "vtkCamera.h"
 #include "vtkImageBloom.h"
-#include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
-#include "vtkRenderStepsPass.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
 
 #include <benchmark/benchmark.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -47,48 +40,23 @@ struct GPURow
 std::map<std::string, GPURow> GPURows; // by row name
 std::string Backend;
 
-double Median(std::vector<double> v)
-{
-  if (v.empty())
-  {
-    return 0.0;
-  }
-  std::sort(v.begin(), v.end());
-  return v[v.size() / 2];
-}
-
 // `empty`: a threshold nothing reaches, so the pass stops after its bright pass.
 void BM_GPUFrame(
   benchmark::State& state, const std::string& scene, bool empty, const std::string& row)
 {
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(Width, Height);
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  vtkNew<vtkBloomPass> bloom;
-  vtkNew<vtkRenderStepsPass> steps;
-  bloom->SetDelegatePass(steps);
-  if (!vtkBloomBuildExampleScene(scene, renderer, bloom))
+  vtkBloomFrameTimer timer;
+  if (!timer.Setup(scene, Width, Height))
   {
     state.SkipWithError("unknown scene");
     return;
   }
+  vtkRenderWindow* window = timer.Window;
   if (empty)
   {
-    bloom->GetParameters()->SetThreshold(1e30);
+    timer.Bloom->GetParameters()->SetThreshold(1e30);
   }
   std::vector<double> times[2];
-  auto frame = [&](int withBloom)
-  {
-    renderer->SetPass(withBloom ? static_cast<vtkRenderPass*>(bloom) : steps);
-    renderer->GetActiveCamera()->Azimuth(0.5);
-    const auto start = std::chrono::steady_clock::now();
-    window->Render();
-    window->WaitForCompletion();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  };
+  auto frame = [&timer](int withBloom) { return timer.Frame(withBloom != 0); };
   for (int warmUp = 0; warmUp < 2; ++warmUp) // shaders, targets and the chain are made here
   {
     frame(0);
@@ -115,14 +83,13 @@ void BM_GPUFrame(
     state.SetIterationTime(withBloom);
   }
   GPURow& result = GPURows[row];
-  result.Plain = 1e3 * Median(times[0]);
-  result.Bloom = 1e3 * Median(times[1]);
-  result.Passes = bloom->GetNumberOfPasses();
+  result.Plain = 1e3 * vtkBloomFrameTimer::Median(times[0]);
+  result.Bloom = 1e3 * vtkBloomFrameTimer::Median(times[1]);
+  result.Passes = timer.Bloom->GetNumberOfPasses();
   state.counters["without_ms"] = result.Plain;
   state.counters["with_ms"] = result.Bloom;
   state.counters["ratio"] = result.Plain > 0.0 ? result.Bloom / result.Plain : 0.0;
   state.counters["passes"] = result.Passes;
-  window->ReleaseGraphicsResources(window);
 }
 }
 
