@@ -201,6 +201,19 @@ vtkSmartPointer<vtkImageData> Row(const std::vector<double>& values, int scalarT
 }
 
 //------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> Magnitudes(vtkImageData* image)
+{
+  auto copy = vtkSmartPointer<vtkImageData>::New();
+  copy->DeepCopy(image);
+  vtkDataArray* scalars = copy->GetPointData()->GetScalars();
+  for (vtkIdType e = 0; e < scalars->GetNumberOfValues(); ++e)
+  {
+    scalars->SetVariantValue(e, std::fabs(scalars->GetVariantValue(e).ToDouble()));
+  }
+  return copy;
+}
+
+//------------------------------------------------------------------------------
 std::vector<double> Values(vtkImageData* image)
 {
   vtkDataArray* s = image->GetPointData()->GetScalars();

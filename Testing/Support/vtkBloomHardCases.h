@@ -67,6 +67,8 @@ vtkSmartPointer<vtkImageData> WideRange(int w, int h, int scalarType, int compon
 vtkSmartPointer<vtkImageData> Constant(int w, int h, double value, int scalarType, int components);
 /// A one-row image holding `values` (1 component).
 vtkSmartPointer<vtkImageData> Row(const std::vector<double>& values, int scalarType);
+/// A copy of `image` with every value replaced by its magnitude.
+vtkSmartPointer<vtkImageData> Magnitudes(vtkImageData* image);
 ///@}
 
 ///@{
