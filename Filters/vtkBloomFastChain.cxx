@@ -144,6 +144,20 @@ void Needs(const Op& o, int jlo, int jhi, int& lo, int& hi)
   }
 }
 
+// The samples that the outputs reaching from `region` read: what must be defined (zero where
+// nothing was computed) for a separable operator to be applied over its reach.
+Box ReadBox(const Op& ox, const Op& oy, const Box& region)
+{
+  const Box reach = ReachBox(ox, oy, region);
+  Box read;
+  if (!reach.Empty())
+  {
+    Needs(ox, reach.X0, reach.X1, read.X0, read.X1);
+    Needs(oy, reach.Y0, reach.Y1, read.Y0, read.Y1);
+  }
+  return read;
+}
+
 // A level: Width x Height samples of C interleaved colour values.
 struct Plane
 {
@@ -170,13 +184,99 @@ struct Plane
       std::fill(this->Row(y) + b.X0 * this->C, this->Row(y) + b.X1 * this->C, 0.0f);
     }
   }
+  // Zeroes the samples of `outer` outside `inner`.
+  void ZeroAround(const Box& outer, const Box& inner)
+  {
+    for (int y = outer.Y0; y < outer.Y1; ++y)
+    {
+      float* row = this->Row(y);
+      if (inner.Empty() || y < inner.Y0 || y >= inner.Y1)
+      {
+        std::fill(row + outer.X0 * this->C, row + outer.X1 * this->C, 0.0f);
+        continue;
+      }
+      std::fill(row + outer.X0 * this->C, row + std::max(outer.X0, inner.X0) * this->C, 0.0f);
+      std::fill(row + std::min(outer.X1, inner.X1) * this->C, row + outer.X1 * this->C, 0.0f);
+    }
+  }
 };
 
-// out[(j - j0) C + c] = sum_k W[j, k] in[(First[j] + k) C + c] for j in [j0, j1). Every output
-// is the same expression (w0 x0, then += wk xk in order) in both loops, so which loop computes
-// a sample never changes its bits.
+// out[q] = sum_k w[k] src[k][q] for q < n, summed in k order from w[0] src[0][q] (added to
+// out[q] when Accumulate). Blocks of 16 values are summed over all taps in registers and stored
+// once, instead of one pass over out per tap.
+template <bool Accumulate>
+void WeightedSum(const float* w, const float* const* src, int taps, int n, float* __restrict out)
+{
+  constexpr int B = 16;
+  const int k0 = Accumulate ? 0 : 1;
+  int q = 0;
+  for (; q + B <= n; q += B)
+  {
+    float acc[B];
+    if (Accumulate)
+    {
+      for (int e = 0; e < B; ++e)
+      {
+        acc[e] = out[q + e];
+      }
+    }
+    else
+    {
+      const float w0 = w[0];
+      const float* __restrict s = src[0] + q;
+      for (int e = 0; e < B; ++e)
+      {
+        acc[e] = w0 * s[e];
+      }
+    }
+    for (int k = k0; k < taps; ++k)
+    {
+      const float wk = w[k];
+      const float* __restrict s = src[k] + q;
+      for (int e = 0; e < B; ++e)
+      {
+        acc[e] += wk * s[e];
+      }
+    }
+    for (int e = 0; e < B; ++e)
+    {
+      out[q + e] = acc[e];
+    }
+  }
+  for (; q < n; ++q)
+  {
+    float acc = Accumulate ? out[q] : w[0] * src[0][q];
+    for (int k = k0; k < taps; ++k)
+    {
+      acc += w[k] * src[k][q];
+    }
+    out[q] = acc;
+  }
+}
+
+// WeightedSum over any number of taps, `Group` sources at a time.
+template <typename Source>
+void WeightedSumOf(const float* w, Source&& source, int taps, int n, float* out)
+{
+  constexpr int Group = 32;
+  const float* src[Group];
+  for (int k0 = 0; k0 < taps; k0 += Group)
+  {
+    const int count = std::min(Group, taps - k0);
+    for (int k = 0; k < count; ++k)
+    {
+      src[k] = source(k0 + k);
+    }
+    k0 > 0 ? WeightedSum<true>(w + k0, src, count, n, out)
+           : WeightedSum<false>(w + k0, src, count, n, out);
+  }
+}
+
+// out[(j - j0) C + c] = sum_k W[j, k] in[(First[j] + k - c0) C + c] for j in [j0, j1): `in`
+// holds the row from column c0. Every output is the same expression (w0 x0, then += wk xk in
+// order) in both loops, so which loop computes a sample never changes its bits.
 template <int C>
-void RowX(const Op& o, const float* in, float* out, int j0, int j1)
+void RowX(const Op& o, const float* in, int c0, float* out, int j0, int j1)
 {
   const int width = o.Width;
   auto generic = [&](int a, int b)
@@ -184,7 +284,7 @@ void RowX(const Op& o, const float* in, float* out, int j0, int j1)
     for (int j = a; j < b; ++j)
     {
       const float* w = o.W.data() + static_cast<size_t>(j) * width;
-      const float* s = in + static_cast<size_t>(o.First[j]) * C;
+      const float* s = in + static_cast<size_t>(o.First[j] - c0) * C;
       float acc[C];
       for (int c = 0; c < C; ++c)
       {
@@ -210,111 +310,162 @@ void RowX(const Op& o, const float* in, float* out, int j0, int j1)
     return;
   }
   generic(j0, a);
-  const float* w = o.W.data() + static_cast<size_t>(a) * width;
-  float* __restrict dst = out + (a - j0) * C;
-  const float* src = in + static_cast<size_t>(a + o.ToeShift) * C;
-  const int n = (b - a) * C;
-  {
-    const float w0 = w[0];
-    const float* __restrict s = src;
-    for (int q = 0; q < n; ++q)
-    {
-      dst[q] = w0 * s[q];
-    }
-  }
-  for (int k = 1; k < width; ++k)
-  {
-    const float wk = w[k];
-    const float* __restrict s = src + k * C;
-    for (int q = 0; q < n; ++q)
-    {
-      dst[q] += wk * s[q];
-    }
-  }
+  const float* src = in + static_cast<size_t>(a + o.ToeShift - c0) * C;
+  WeightedSumOf(
+    o.W.data() + static_cast<size_t>(a) * width, [&](int k) { return src + k * C; }, width,
+    (b - a) * C, out + (a - j0) * C);
   generic(b, j1);
 }
 
-// out[q] = sum_k W[j, k] rows(First[j] + k)[q], q < n; rows(r) = block + (r - r0) * stride.
-void RowY(
-  const Op& o, int j, const float* block, int r0, size_t stride, int n, float* __restrict out)
+// out[q] = sum_k W[j, k] rows(First[j] + k)[q] for q < n; rows(r) points at row r's values.
+template <typename Rows>
+void RowY(const Op& o, int j, Rows&& rows, int n, float* out)
 {
-  const float* w = o.W.data() + static_cast<size_t>(j) * o.Width;
-  const float* __restrict s = block + static_cast<size_t>(o.First[j] - r0) * stride;
-  const float w0 = w[0];
-  for (int q = 0; q < n; ++q)
+  WeightedSumOf(
+    o.W.data() + static_cast<size_t>(j) * o.Width, [&](int k) { return rows(o.First[j] + k); },
+    o.Width, n, out);
+}
+
+// The rows of a plane after an x operator, over output columns [X0, X1), each computed when
+// first asked for and kept in a ring of slots. A thread that walks output rows upwards asks
+// for a window of source rows that only moves up, so it computes each row once, and the ring
+// (a few rows) stays in cache for the y pass: no whole-level intermediate is written or read.
+template <int C>
+class RowRing
+{
+public:
+  // Without an operator the ring hands out the source's own rows.
+  void Reset(const Plane* src, const Op* ox, int x0, int x1, int slots)
   {
-    out[q] = w0 * s[q];
-  }
-  for (int k = 1; k < o.Width; ++k)
-  {
-    const float wk = w[k];
-    const float* __restrict sk = block + static_cast<size_t>(o.First[j] + k - r0) * stride;
-    for (int q = 0; q < n; ++q)
+    this->Src = src;
+    this->X = ox;
+    this->X0 = x0;
+    this->X1 = x1;
+    this->Stride = static_cast<size_t>(x1 - x0) * C;
+    if (ox)
     {
-      out[q] += wk * sk[q];
+      this->Data.resize(this->Stride * slots);
+      this->Held.assign(slots, -1);
     }
   }
-}
 
-// block rows [r0, r1) = ox applied to src rows, for output columns [x0, x1).
-template <int C>
-void BlockX(
-  const Plane& src, const Op& ox, int r0, int r1, int x0, int x1, std::vector<float>& block)
-{
-  const size_t stride = static_cast<size_t>(x1 - x0) * C;
-  block.resize(static_cast<size_t>(r1 - r0) * stride);
-  vtkSMPTools::For(r0, r1, 8,
-    [&](int begin, int end)
+  const float* Row(int r)
+  {
+    if (!this->X)
     {
-      for (int r = begin; r < end; ++r)
-      {
-        RowX<C>(ox, src.Row(r), block.data() + (r - r0) * stride, x0, x1);
-        Saturate(block.data() + (r - r0) * stride, stride);
-      }
-    });
-}
+      return this->Src->Row(r) + static_cast<size_t>(this->X0) * C;
+    }
+    const size_t slot = static_cast<size_t>(r) % this->Held.size();
+    float* row = this->Data.data() + slot * this->Stride;
+    if (this->Held[slot] != r)
+    {
+      RowX<C>(*this->X, this->Src->Row(r), 0, row, this->X0, this->X1);
+      Saturate(row, this->Stride);
+      this->Held[slot] = r;
+    }
+    return row;
+  }
 
-// dst over `box` = scale * Y X src (or += with `add`).
+  auto Rows()
+  {
+    return [this](int r) { return this->Row(r); };
+  }
+
+private:
+  const Plane* Src = nullptr;
+  const Op* X = nullptr;
+  int X0 = 0, X1 = 0;
+  size_t Stride = 0;
+  std::vector<float> Data;
+  std::vector<int> Held;
+};
+
+// Per-thread rings and a row of y results.
 template <int C>
-void Separable(const Plane& src, const Op& ox, const Op& oy, const Box& box, float scale, bool add,
-  Plane& dst, std::vector<float>& block)
+struct RingScratch
+{
+  std::vector<RowRing<C>> Rings;
+  std::vector<float> Row, Row2;
+};
+
+// Rows per task of the separable passes: large enough that the rows a task computes twice (the
+// y support at its ends) are few, small enough for both threads to share a level.
+const int SeparableGrain = 32;
+
+// One term of a sum of separable operators.
+struct Term
+{
+  Op X, Y;
+  float Weight = 1.0f;
+};
+
+// dst over `box` = sum_t Weight_t Y_t X_t src, term by term in order (saturated after each),
+// in one sweep over the output rows. A term that shrinks rows runs y first (one flat pass over
+// the source rows it reads, then the x operator on one row), so the x operator, the costly
+// per-sample one, runs on the output rows only; other terms run x first through a ring.
+template <int C>
+void Separable(const Plane& src, const std::vector<Term>& terms, const Box& box, Plane& dst)
 {
   if (box.Empty())
   {
     return;
   }
-  int r0, r1;
-  Needs(oy, box.Y0, box.Y1, r0, r1);
-  BlockX<C>(src, ox, r0, r1, box.X0, box.X1, block);
   const size_t stride = static_cast<size_t>(box.X1 - box.X0) * C;
   const int n = static_cast<int>(stride);
-  vtkSMPTools::For(box.Y0, box.Y1, 8,
+  vtkSMPThreadLocal<RingScratch<C>> scratch;
+  vtkSMPTools::For(box.Y0, box.Y1, SeparableGrain,
     [&](int begin, int end)
     {
-      std::vector<float> row(stride);
+      RingScratch<C>& local = scratch.Local();
+      local.Rings.resize(terms.size());
+      local.Row.resize(stride);
+      for (size_t t = 0; t < terms.size(); ++t)
+      {
+        local.Rings[t].Reset(&src, &terms[t].X, box.X0, box.X1, terms[t].Y.Width);
+      }
+      float* __restrict row = local.Row.data();
       for (int j = begin; j < end; ++j)
       {
-        RowY(oy, j, block.data(), r0, stride, n, row.data());
         float* __restrict d = dst.Row(j) + box.X0 * C;
-        if (add)
+        for (size_t t = 0; t < terms.size(); ++t)
         {
-          for (int q = 0; q < n; ++q)
+          const Term& term = terms[t];
+          if (term.Y.Out < term.Y.In)
           {
-            d[q] += scale * row[q];
+            int c0, c1;
+            Needs(term.X, box.X0, box.X1, c0, c1);
+            local.Row2.resize(static_cast<size_t>(c1 - c0) * C);
+            float* line = local.Row2.data();
+            RowY(
+              term.Y, j, [&](int r) { return src.Row(r) + c0 * C; }, (c1 - c0) * C, line);
+            Saturate(line, local.Row2.size());
+            RowX<C>(term.X, line, c0, row, box.X0, box.X1);
           }
-        }
-        else if (scale == 1.0f)
-        {
-          std::copy(row.begin(), row.end(), d);
-        }
-        else
-        {
-          for (int q = 0; q < n; ++q)
+          else
           {
-            d[q] = scale * row[q];
+            RowY(term.Y, j, local.Rings[t].Rows(), n, row);
           }
+          const float scale = term.Weight;
+          if (t > 0)
+          {
+            for (int q = 0; q < n; ++q)
+            {
+              d[q] += scale * row[q];
+            }
+          }
+          else if (scale == 1.0f)
+          {
+            std::copy(row, row + n, d);
+          }
+          else
+          {
+            for (int q = 0; q < n; ++q)
+            {
+              d[q] = scale * row[q];
+            }
+          }
+          Saturate(d, stride);
         }
-        Saturate(d, stride);
       }
     });
 }
@@ -406,33 +557,6 @@ void CombineRows(
   }
 }
 
-// True when any of the n values is -0, NaN or +-Inf.
-template <typename T>
-bool AnySpecial(const T* in, size_t n)
-{
-  bool any = false;
-  for (size_t q = 0; q < n; ++q)
-  {
-    any |= Special(in[q]);
-  }
-  return any;
-}
-
-// The same for float, on the bit patterns with an integer reduction that vectorizes.
-template <>
-bool AnySpecial<float>(const float* in, size_t n)
-{
-  uint32_t any = 0;
-  for (size_t q = 0; q < n; ++q)
-  {
-    uint32_t u;
-    std::memcpy(&u, in + q, sizeof(u));
-    any |= static_cast<uint32_t>((u & 0x7f800000u) == 0x7f800000u) |
-      static_cast<uint32_t>(u == 0x80000000u);
-  }
-  return any != 0;
-}
-
 // out[x] = sum_t W[x, t] line[First[x] + t] for the w0 samples of a level-0 row, L lanes each.
 // When the image's components line up with the lanes (NC == L), every lane is fetched (one
 // vector operation per tap); otherwise the lanes past the C colours are left unset.
@@ -478,66 +602,117 @@ inline bool AllFinite(const float* v, size_t n)
   return any == 0;
 }
 
-// Bounds on input rows that decide, without fetching, that the bright pass of every sample
-// fetched from them is zero: the largest luminance (C = 3, Rec. 709) or value (C = 1), the
-// largest colour value and magnitude, and whether a colour is NaN or Inf.
+// What one read of input rows tells the bright pass: whether a value is -0, NaN or +-Inf (the
+// composite's short form needs none), whether one is NaN or +-Inf, and bounds that decide,
+// without fetching, that the bright pass of every sample fetched from the rows is zero: the
+// largest luminance (C = 3, Rec. 709) or value (C = 1), the largest colour value and the largest
+// colour magnitude.
 struct RowBounds
 {
   float Luminance = -FloatMax;
   float Channel = -FloatMax;
   float Magnitude = 0.0f;
   bool NonFinite = false;
+  bool Special = false;
 };
 
-template <typename T, int NC, int C>
-void BoundRow(const T* __restrict row, int width, RowBounds& b)
+// Per component extremes and flags of NC-component pixels. The float specialization below
+// keeps 4 pixels' worth of running values and updates them element-wise, which vectorizes.
+template <typename T, int NC>
+void ScanRowScalar(
+  const T* __restrict row, int width, float hi[NC], float mag[NC], bool& special, bool& nonFinite)
 {
-  // Per component extremes (one vector operation per pixel); the luminance of any pixel is at
-  // most the luminance of the per-channel maxima, since the Rec. 709 weights are positive.
-  // Four pixels at a time into 4 NC running extremes: element-wise, so it vectorizes.
-  constexpr int B = 4 * NC;
-  float hiB[B], loB[B];
-  for (int q = 0; q < B; ++q)
+  for (int x = 0; x < width; ++x)
   {
-    hiB[q] = -FloatMax;
-    loB[q] = FloatMax;
-  }
-  const int blocks = width / 4;
-  for (int x = 0; x < blocks; ++x)
-  {
-    const T* __restrict s = row + static_cast<size_t>(x) * B;
-    for (int q = 0; q < B; ++q)
+    for (int c = 0; c < NC; ++c)
     {
-      const float v = static_cast<float>(s[q]);
-      hiB[q] = hiB[q] > v ? hiB[q] : v;
-      loB[q] = loB[q] < v ? loB[q] : v;
+      const T v = row[static_cast<size_t>(x) * NC + c];
+      special |= Special(v);
+      nonFinite |= !(v >= -std::numeric_limits<T>::max() && v <= std::numeric_limits<T>::max());
+      hi[c] = std::max(hi[c], static_cast<float>(v));
+      mag[c] = std::max(mag[c], static_cast<float>(std::abs(v)));
     }
   }
-  for (int q = blocks * B; q < width * NC; ++q)
+}
+
+template <typename T, int NC>
+void ScanRow(const T* row, int width, float hi[NC], float mag[NC], bool& special, bool& nonFinite)
+{
+  ScanRowScalar<T, NC>(row, width, hi, mag, special, nonFinite);
+}
+
+template <>
+void ScanRow<float, 4>(
+  const float* __restrict row, int width, float hi[4], float mag[4], bool& special, bool& nonFinite)
+{
+  constexpr int B = 16;
+  float h[B], m[B];
+  uint32_t sp[B], nf[B];
+  for (int q = 0; q < B; ++q)
   {
-    const float v = static_cast<float>(row[q]);
-    hiB[q % B] = hiB[q % B] > v ? hiB[q % B] : v;
-    loB[q % B] = loB[q % B] < v ? loB[q % B] : v;
+    h[q] = hi[q % 4];
+    m[q] = mag[q % 4];
+    sp[q] = nf[q] = 0;
   }
-  float hi[NC], lo[NC];
+  const int n = width * 4, blocks = n / B;
+  for (int k = 0; k < blocks; ++k)
+  {
+    const float* __restrict v = row + static_cast<size_t>(k) * B;
+    for (int q = 0; q < B; ++q)
+    {
+      uint32_t u, a;
+      std::memcpy(&u, v + q, sizeof(u));
+      a = u & 0x7fffffffu;
+      float abs;
+      std::memcpy(&abs, &a, sizeof(abs));
+      h[q] = h[q] > v[q] ? h[q] : v[q];
+      m[q] = m[q] > abs ? m[q] : abs;
+      nf[q] |= static_cast<uint32_t>((u & 0x7f800000u) == 0x7f800000u);
+      sp[q] |= static_cast<uint32_t>(u == 0x80000000u);
+    }
+  }
+  uint32_t anySpecial = 0, anyNonFinite = 0;
+  for (int q = 0; q < B; ++q)
+  {
+    hi[q % 4] = std::max(hi[q % 4], h[q]);
+    mag[q % 4] = std::max(mag[q % 4], m[q]);
+    anySpecial |= sp[q];
+    anyNonFinite |= nf[q];
+  }
+  nonFinite |= anyNonFinite != 0;
+  special |= (anySpecial | anyNonFinite) != 0;
+  ScanRowScalar<float, 4>(
+    row + static_cast<size_t>(blocks) * B, (n - blocks * B) / 4, hi, mag, special, nonFinite);
+}
+
+// The bounds of rows [r0, r1) (NaN and Inf are looked for in every component, alpha included,
+// which only makes the dark decision stricter).
+template <typename T, int NC, int C>
+RowBounds ScanRows(const T* base, size_t stride, int width, int r0, int r1)
+{
+  RowBounds b;
+  float hi[NC], mag[NC];
   for (int c = 0; c < NC; ++c)
   {
-    hi[c] = std::max({ hiB[c], hiB[NC + c], hiB[2 * NC + c], hiB[3 * NC + c] });
-    lo[c] = std::min({ loB[c], loB[NC + c], loB[2 * NC + c], loB[3 * NC + c] });
+    hi[c] = -FloatMax;
+    mag[c] = 0.0f;
   }
-  // NaN and Inf anywhere in the row (alpha included, which only makes the test stricter).
-  b.NonFinite |= !std::is_same<T, float>::value ||
-    !AllFinite(reinterpret_cast<const float*>(row), static_cast<size_t>(width) * NC);
-  const float l = C == 3 ? static_cast<float>(vtkBloomKernels::LuminanceR) * hi[0] +
+  for (int r = r0; r < r1; ++r)
+  {
+    ScanRow<T, NC>(base + static_cast<size_t>(r) * stride, width, hi, mag, b.Special, b.NonFinite);
+  }
+  // The luminance of any pixel is at most the luminance of the per-channel maxima, since the
+  // Rec. 709 weights are positive.
+  b.Luminance = C == 3 ? static_cast<float>(vtkBloomKernels::LuminanceR) * hi[0] +
       static_cast<float>(vtkBloomKernels::LuminanceG) * hi[1] +
       static_cast<float>(vtkBloomKernels::LuminanceB) * hi[2]
-                         : hi[0];
-  b.Luminance = std::max(b.Luminance, l);
+                       : hi[0];
   for (int c = 0; c < C; ++c)
   {
     b.Channel = std::max(b.Channel, hi[c]);
-    b.Magnitude = std::max(b.Magnitude, std::max(std::abs(hi[c]), std::abs(lo[c])));
+    b.Magnitude = std::max(b.Magnitude, mag[c]);
   }
+  return b;
 }
 
 // True when every sample fetched from rows with these bounds passes vtkBloomBrightPassIsZero.
@@ -607,24 +782,27 @@ BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int
       float* line = scratch.data();
       for (int j = begin; j < end; ++j)
       {
-        // Input rows [j H / h0, (j + 1) H / h0) belong to this row, so every row is scanned
-        // for -0, NaN and Inf once (for a 2:1 level they are the rows read here, in cache).
+        // Input rows [j H / h0, (j + 1) H / h0) belong to this row, which reports their -0,
+        // NaN and Inf. For a 2:1 level these are the rows fetched, read once for both answers.
         const int r0 = static_cast<int>(static_cast<long long>(j) * height / h0);
         const int r1 = static_cast<int>(static_cast<long long>(j + 1) * height / h0);
-        special[j] = AnySpecial(
-          base + static_cast<size_t>(r0) * inStride, static_cast<size_t>(r1 - r0) * inStride);
+        const int f0 = ry.First[j], f1 = ry.First[j] + ry.Width;
         rowLo[j] = w0;
         rowHi[j] = 0;
-        if (decidable)
+        if (decidable && f0 == r0 && f1 == r1)
         {
-          // Rows that are certainly dark are not fetched (and zeroed only if needed, below).
-          RowBounds bounds;
-          for (int k = 0; k < ry.Width; ++k)
-          {
-            BoundRow<T, NC, C>(
-              base + static_cast<size_t>(ry.First[j] + k) * inStride, width, bounds);
-          }
+          const RowBounds bounds = ScanRows<T, NC, C>(base, inStride, width, r0, r1);
+          special[j] = bounds.Special;
           if (RowsAreDark(bounds, p))
+          {
+            dark[j] = 1; // not fetched (and zeroed only if needed, below)
+            continue;
+          }
+        }
+        else
+        {
+          special[j] = ScanRows<T, NC, C>(base, inStride, width, r0, r1).Special;
+          if (decidable && RowsAreDark(ScanRows<T, NC, C>(base, inStride, width, f0, f1), p))
           {
             dark[j] = 1;
             continue;
@@ -947,9 +1125,10 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
             continue;
           }
           const int c0 = columns[i].first, c1 = columns[i].second;
-          const size_t stride = static_cast<size_t>(s.Level->W) * L;
           yrow.resize(static_cast<size_t>(c1 - c0) * L);
-          RowY(s.Y, j, s.Level->Row(0) + c0 * L, 0, stride, (c1 - c0) * L, yrow.data());
+          RowY(
+            s.Y, j, [&](int row) { return s.Level->Row(row) + c0 * L; }, (c1 - c0) * L,
+            yrow.data());
           if (s.X.Width == 2)
           {
             InterpolateX<L, 2>(s.X, yrow.data(), c0, r.X0, r.X1, s.Scaled, s.Weight, bloom.data());
@@ -987,16 +1166,18 @@ void WithComponents(int nc, F&& f)
 struct vtkBloomFastChain::Internals
 {
   std::vector<Plane> Levels;
-  std::vector<float> Block;
-  std::vector<float> Block2;
+  std::vector<Plane> Acc; // blurred or accumulated levels
   vtkSmartPointer<vtkDataArray> Recycled;
 
   size_t Bytes() const
   {
-    size_t n = (this->Block.capacity() + this->Block2.capacity()) * sizeof(float);
-    for (const Plane& l : this->Levels)
+    size_t n = 0;
+    for (const auto* planes : { &this->Levels, &this->Acc })
     {
-      n += l.D.capacity() * sizeof(float);
+      for (const Plane& l : *planes)
+      {
+        n += l.D.capacity() * sizeof(float);
+      }
     }
     return n;
   }
@@ -1164,32 +1345,36 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
         levels[i].Resize(outSize[0], outSize[1], L);
         std::fill(levels[i].D.begin(), levels[i].D.end(), 0.0f);
         const auto& terms = chain.Levels[i].Down;
-        std::vector<Op> ox, oy;
+        std::vector<Term> down;
         Box box;
         for (const auto& t : terms)
         {
-          ox.push_back(MakeOp(t.X));
-          oy.push_back(MakeOp(t.Y));
-          box = Union(box, ReachBox(ox.back(), oy.back(), boxes[i - 1]));
+          down.push_back(Term{ MakeOp(t.X), MakeOp(t.Y), static_cast<float>(t.Weight) });
+          box = Union(box, ReachBox(down.back().X, down.back().Y, boxes[i - 1]));
         }
         boxes[i] = p.RestrictToBrightRegion ? box : full(i);
-        for (size_t t = 0; t < terms.size(); ++t)
-        {
-          Separable<L>(levels[i - 1], ox[t], oy[t], boxes[i], static_cast<float>(terms[t].Weight),
-            t > 0, levels[i], ws.Block);
-        }
+        Separable<L>(levels[i - 1], down, boxes[i], levels[i]);
         report.SamplesProcessed += static_cast<long long>(boxes[i].X1 - boxes[i].X0) *
           (boxes[i].Y1 - boxes[i].Y0) * static_cast<long long>(terms.size());
       }
 
       reportProgress(0.4);
 
-      // 3. Blur, fused with the upsample-accumulate (CASCADE) or in place (DIRECT).
+      // 3. Blur, fused with the upsample-accumulate (CASCADE) or alone (DIRECT), into the
+      // accumulation planes (level i's rows are read by their neighbours' outputs, so acc_i
+      // cannot be written over level i). What the next pass reads of an accumulation plane
+      // outside its box is zeroed; the rest of the plane is never read.
       const bool cascade = p.AccumulateMode != AccumulateDirect;
+      const Op finalX =
+        MakeOp(chain.FinalIsIdentity ? vtkBloomLinearOperator::Identity(width) : chain.Final.X);
+      const Op finalY =
+        MakeOp(chain.FinalIsIdentity ? vtkBloomLinearOperator::Identity(height) : chain.Final.Y);
+      ws.Acc.resize(std::max<size_t>(ws.Acc.size(), levelsBuilt));
       std::vector<Box> acc(levelsBuilt);
+      std::vector<const Plane*> accPlane(levelsBuilt, nullptr);
       for (int i = levelsBuilt - 1; i >= 0; --i)
       {
-        Plane& level = levels[i];
+        const Plane& level = levels[i];
         const float w = static_cast<float>(p.LevelWeights[i]);
         const bool blurred = chain.Levels[i].Blur;
         Op bx, by;
@@ -1207,26 +1392,30 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
             blurBox = boxes[i];
           }
         }
+        Plane& plane = ws.Acc[i];
         if (!cascade)
         {
-          // DIRECT: blur level i in place; the composite weighs and sums the levels.
+          // DIRECT: blur level i; the composite weighs and sums the levels.
           if (w == 0.0f)
           {
             continue;
           }
           acc[i] = p.RestrictToBrightRegion ? blurBox : full(i);
+          accPlane[i] = &level;
           if (blurred)
           {
-            Plane blurredLevel;
-            blurredLevel.Resize(level.W, level.H, L);
-            Separable<L>(level, bx, by, acc[i], 1.0f, false, blurredLevel, ws.Block);
-            std::swap(level.D, blurredLevel.D);
+            plane.Resize(level.W, level.H, L);
+            plane.ZeroAround(
+              ReadBox(MakeOp(chain.Levels[i].Full.X), MakeOp(chain.Levels[i].Full.Y), acc[i]),
+              acc[i]);
+            Separable<L>(level, { Term{ bx, by, 1.0f } }, acc[i], plane);
+            accPlane[i] = &plane;
             report.SamplesProcessed +=
               static_cast<long long>(acc[i].X1 - acc[i].X0) * (acc[i].Y1 - acc[i].Y0);
           }
           continue;
         }
-        // CASCADE: acc_i = up(acc_{i+1}) + w_i blur(level_i), stored over level i.
+        // CASCADE: acc_i = up(acc_{i+1}) + w_i blur(level_i).
         const bool up = i + 1 < levelsBuilt;
         Op ux, uy;
         Box upBox;
@@ -1238,87 +1427,75 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
         }
         const Box box = p.RestrictToBrightRegion ? Union(upBox, blurBox) : full(i);
         acc[i] = box;
+        plane.Resize(level.W, level.H, L);
+        accPlane[i] = &plane;
+        plane.ZeroAround(i > 0
+            ? ReadBox(MakeOp(chain.Levels[i - 1].Up.X), MakeOp(chain.Levels[i - 1].Up.Y), box)
+            : ReadBox(finalX, finalY, box),
+          box);
         if (box.Empty())
         {
-          level.Zero(boxes[i]); // acc_i is zero: clear what level i held
           continue;
         }
         const size_t stride = static_cast<size_t>(box.X1 - box.X0) * L;
         const int n = static_cast<int>(stride);
-        int b0 = 0, b1 = 0, u0 = 0, u1 = 0;
-        if (w != 0.0f)
-        {
-          if (blurred)
-          {
-            Needs(by, box.Y0, box.Y1, b0, b1);
-            BlockX<L>(level, bx, b0, b1, box.X0, box.X1, ws.Block);
-          }
-          else
-          {
-            // Unblurred level: its own rows over the box.
-            b0 = box.Y0;
-            b1 = box.Y1;
-            ws.Block.resize(static_cast<size_t>(b1 - b0) * stride);
-            for (int r = b0; r < b1; ++r)
-            {
-              std::copy(level.Row(r) + box.X0 * L, level.Row(r) + box.X1 * L,
-                ws.Block.data() + (r - b0) * stride);
-            }
-          }
-        }
-        if (up)
-        {
-          Needs(uy, box.Y0, box.Y1, u0, u1);
-          BlockX<L>(levels[i + 1], ux, u0, u1, box.X0, box.X1, ws.Block2);
-        }
-        if (p.RestrictToBrightRegion)
-        {
-          // Level i was read into the blocks above; clear its samples outside acc_i's box.
-          level.Zero(boxes[i]);
-        }
-        vtkSMPTools::For(box.Y0, box.Y1, 8,
+        const Plane* below = up ? accPlane[i + 1] : nullptr;
+        vtkSMPThreadLocal<RingScratch<L>> scratch;
+        vtkSMPTools::For(box.Y0, box.Y1, SeparableGrain,
           [&](int begin, int end)
           {
-            std::vector<float> brow(stride), urow(stride);
+            RingScratch<L>& local = scratch.Local();
+            local.Rings.resize(2);
+            local.Row.resize(stride);
+            local.Row2.resize(stride);
+            RowRing<L>& blurRing = local.Rings[0];
+            RowRing<L>& upRing = local.Rings[1];
+            blurRing.Reset(&level, blurred ? &bx : nullptr, box.X0, box.X1, by.Width);
+            if (up)
+            {
+              upRing.Reset(below, &ux, box.X0, box.X1, uy.Width);
+            }
+            float* __restrict brow = local.Row.data();
+            float* __restrict urow = local.Row2.data();
             for (int j = begin; j < end; ++j)
             {
-              float* __restrict d = level.Row(j) + box.X0 * L;
+              float* __restrict d = plane.Row(j) + box.X0 * L;
+              const float* b = brow;
               if (w != 0.0f)
               {
                 if (blurred)
                 {
-                  RowY(by, j, ws.Block.data(), b0, stride, n, brow.data());
+                  RowY(by, j, blurRing.Rows(), n, brow);
                 }
                 else
                 {
-                  std::copy(ws.Block.data() + (j - b0) * stride,
-                    ws.Block.data() + (j - b0 + 1) * stride, brow.data());
+                  b = blurRing.Row(j); // level i's own row
                 }
               }
               if (up)
               {
-                RowY(uy, j, ws.Block2.data(), u0, stride, n, urow.data());
+                RowY(uy, j, upRing.Rows(), n, urow);
                 if (w != 0.0f)
                 {
                   for (int q = 0; q < n; ++q)
                   {
-                    d[q] = urow[q] + w * brow[q];
+                    d[q] = urow[q] + w * b[q];
                   }
                 }
                 else
                 {
-                  std::copy(urow.begin(), urow.end(), d);
+                  std::copy(urow, urow + n, d);
                 }
               }
               else if (w == 1.0f)
               {
-                std::copy(brow.begin(), brow.end(), d);
+                std::copy(b, b + n, d);
               }
               else
               {
                 for (int q = 0; q < n; ++q)
                 {
-                  d[q] = w * brow[q];
+                  d[q] = w * b[q];
                 }
               }
               Saturate(d, stride);
@@ -1333,7 +1510,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
       auto addSource = [&](int i, bool scaled)
       {
         Source s;
-        s.Level = &levels[i];
+        s.Level = accPlane[i];
         s.Weight = static_cast<float>(p.LevelWeights[i]);
         s.Scaled = scaled;
         if (!cascade)
@@ -1343,10 +1520,8 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
         }
         else
         {
-          s.X =
-            MakeOp(chain.FinalIsIdentity ? vtkBloomLinearOperator::Identity(width) : chain.Final.X);
-          s.Y = MakeOp(
-            chain.FinalIsIdentity ? vtkBloomLinearOperator::Identity(height) : chain.Final.Y);
+          s.X = finalX;
+          s.Y = finalY;
         }
         s.Region = acc[i];
         sources.push_back(std::move(s));
