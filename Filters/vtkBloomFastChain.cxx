@@ -57,6 +57,12 @@ struct Op
   int ToeLo = 0; // outputs [ToeLo, ToeHi) read First[j] = j + ToeShift with row ToeLo's weights
   int ToeHi = 0;
   int ToeShift = 0;
+  // Outputs [PerLo, PerHi) repeat with period Period (1 or 2) moving Stride inputs: a resample
+  // whose weights can be held in registers.
+  int PerLo = 0;
+  int PerHi = 0;
+  int Period = 0;
+  int Stride = 0;
 };
 
 Op MakeOp(const vtkBloomLinearOperator& d)
@@ -74,6 +80,19 @@ Op MakeOp(const vtkBloomLinearOperator& d)
     o.ToeLo = range.Begin;
     o.ToeHi = range.End;
     o.ToeShift = o.First[range.Begin] - range.Begin;
+    return o;
+  }
+  for (int period : { 1, 2 })
+  {
+    const vtkBloomLinearOperator::InvariantRange r = d.FindInvariantRange(period, 1);
+    if (r.Begin < r.End)
+    {
+      o.PerLo = r.Begin;
+      o.PerHi = r.End;
+      o.Period = r.Period;
+      o.Stride = r.Stride;
+      break;
+    }
   }
   return o;
 }
@@ -272,6 +291,76 @@ void WeightedSumOf(const float* w, Source&& source, int taps, int n, float* out)
   }
 }
 
+// RowX over a periodic run from output a (on the run's phase): each of the Period rows' weights
+// are held in registers, and output a + m Period + p reads from First[a + p] + m Stride. Every
+// output is summed as the generic loop sums it. Returns how many outputs it wrote (whole
+// periods; the caller finishes the rest).
+template <int C, int P, int Width>
+int PeriodicXOf(const Op& o, const float* in, int c0, float* __restrict out, int a, int b)
+{
+  float w[P][Width];
+  const float* s0[P];
+  for (int p = 0; p < P; ++p)
+  {
+    for (int k = 0; k < Width; ++k)
+    {
+      w[p][k] = o.W[static_cast<size_t>(a + p) * Width + k];
+    }
+    s0[p] = in + static_cast<size_t>(o.First[a + p] - c0) * C;
+  }
+  const int periods = (b - a) / P;
+  const size_t step = static_cast<size_t>(o.Stride) * C;
+  for (int m = 0; m < periods; ++m)
+  {
+    for (int p = 0; p < P; ++p)
+    {
+      const float* s = s0[p] + m * step;
+      float acc[C];
+      for (int c = 0; c < C; ++c)
+      {
+        acc[c] = w[p][0] * s[c];
+      }
+      for (int k = 1; k < Width; ++k)
+      {
+        for (int c = 0; c < C; ++c)
+        {
+          acc[c] += w[p][k] * s[k * C + c];
+        }
+      }
+      for (int c = 0; c < C; ++c)
+      {
+        out[(static_cast<size_t>(m) * P + p) * C + c] = acc[c];
+      }
+    }
+  }
+  return periods * P;
+}
+
+template <int C>
+int PeriodicX(const Op& o, const float* in, int c0, float* out, int a, int b, int period, int width)
+{
+  auto of = [&](auto p)
+  {
+    constexpr int P = decltype(p)::value;
+    switch (width)
+    {
+      case 2:
+        return PeriodicXOf<C, P, 2>(o, in, c0, out, a, b);
+      case 3:
+        return PeriodicXOf<C, P, 3>(o, in, c0, out, a, b);
+      case 4:
+        return PeriodicXOf<C, P, 4>(o, in, c0, out, a, b);
+      case 5:
+        return PeriodicXOf<C, P, 5>(o, in, c0, out, a, b);
+      case 6:
+        return PeriodicXOf<C, P, 6>(o, in, c0, out, a, b);
+      default:
+        return 0;
+    }
+  };
+  return period == 1 ? of(std::integral_constant<int, 1>()) : of(std::integral_constant<int, 2>());
+}
+
 // out[(j - j0) C + c] = sum_k W[j, k] in[(First[j] + k - c0) C + c] for j in [j0, j1): `in`
 // holds the row from column c0. Every output is the same expression (w0 x0, then += wk xk in
 // order) in both loops, so which loop computes a sample never changes its bits.
@@ -306,6 +395,23 @@ void RowX(const Op& o, const float* in, int c0, float* out, int j0, int j1)
   int a = std::max(j0, o.ToeLo), b = std::min(j1, o.ToeHi);
   if (a >= b || b - a < 8)
   {
+    a = std::max(j0, o.PerLo);
+    b = std::min(j1, o.PerHi);
+    if (b - a >= 2 * o.Period && o.Period > 0)
+    {
+      generic(j0, a);
+      // Start on the run's phase so that row a + p has row PerLo + p's weights.
+      const int phase = (a - o.PerLo) % o.Period;
+      if (phase != 0)
+      {
+        generic(a, a + o.Period - phase);
+        a += o.Period - phase;
+      }
+      const int done =
+        PeriodicX<C>(o, in, c0, out + static_cast<size_t>(a - j0) * C, a, b, o.Period, width);
+      generic(a + done, j1);
+      return;
+    }
     generic(j0, j1);
     return;
   }
@@ -1023,36 +1129,6 @@ void CompositeSpans(const T* src, const float* bloom, int b0, int b1, const floa
   CompositeSpan<T, NC, C, Sanitize, false>(src + s1, nullptr, st, keep, n - b1, dst + s1);
 }
 
-// bloom[x] (+)= weight * sum_t W[x, t] v[First[x] + t - c0] for x in [x0, x1), L lanes each.
-template <int L, int Width>
-void InterpolateX(const Op& o, const float* __restrict v, int c0, int x0, int x1, bool scaled,
-  float weight, float* __restrict bloom)
-{
-  const int width = Width > 0 ? Width : o.Width;
-  for (int x = x0; x < x1; ++x)
-  {
-    const float* w = o.W.data() + static_cast<size_t>(x) * width;
-    const float* s = v + static_cast<size_t>(o.First[x] - c0) * L;
-    float a[L];
-    for (int c = 0; c < L; ++c)
-    {
-      a[c] = w[0] * s[c];
-    }
-    for (int t = 1; t < width; ++t)
-    {
-      for (int c = 0; c < L; ++c)
-      {
-        a[c] += w[t] * s[t * L + c];
-      }
-    }
-    float* b = bloom + static_cast<size_t>(x) * L;
-    for (int c = 0; c < L; ++c)
-    {
-      b[c] = scaled ? b[c] + weight * a[c] : a[c];
-    }
-  }
-}
-
 // Pass 4: out = keep * in + (S t bloom + 0) over outExt, the bloom row interpolated per row.
 template <typename T, int NC, int C, bool Sanitize>
 void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inExt[6], bool clean,
@@ -1071,12 +1147,10 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
   // Full-resolution bloom columns and rows each source reaches. Weighted sources (DIRECT)
   // accumulate into a zeroed row; CASCADE's one source is assigned.
   std::vector<Box> reach(sources.size());
-  std::vector<std::pair<int, int>> columns(sources.size()); // level columns each one reads
   bool accumulate = false;
   for (size_t i = 0; i < sources.size(); ++i)
   {
     reach[i] = ReachBox(sources[i].X, sources[i].Y, sources[i].Region);
-    Needs(sources[i].X, reach[i].X0, reach[i].X1, columns[i].first, columns[i].second);
     accumulate |= sources[i].Scaled;
   }
   // S t and "is a colour" for every value of a row, for the flat composite loop.
@@ -1088,17 +1162,26 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
     stFlat[q] = c < C ? st[c] : 0.0f;
     colour[q] = c < C;
   }
+  // Each source's rows are interpolated in x once per task, through a ring, and the y pass
+  // combines them; tasks are long so that few rows are interpolated twice.
   struct Scratch
   {
     std::vector<float> Bloom, YRow;
+    std::vector<RowRing<L>> Rings;
   };
   vtkSMPThreadLocal<Scratch> scratch;
-  vtkSMPTools::For(outExt[2], outExt[3] + 1, 4,
+  vtkSMPTools::For(outExt[2], outExt[3] + 1, SeparableGrain,
     [&](int begin, int end)
     {
-      std::vector<float>& bloom = scratch.Local().Bloom;
-      std::vector<float>& yrow = scratch.Local().YRow;
+      Scratch& local = scratch.Local();
+      std::vector<float>& bloom = local.Bloom;
       bloom.resize(static_cast<size_t>(inW) * L);
+      local.Rings.resize(sources.size());
+      for (size_t i = 0; i < sources.size(); ++i)
+      {
+        local.Rings[i].Reset(
+          sources[i].Level, &sources[i].X, reach[i].X0, reach[i].X1, sources[i].Y.Width);
+      }
       for (int y = begin; y < end; ++y)
       {
         const int j = y - inExt[2];
@@ -1124,18 +1207,20 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
           {
             continue;
           }
-          const int c0 = columns[i].first, c1 = columns[i].second;
-          yrow.resize(static_cast<size_t>(c1 - c0) * L);
-          RowY(
-            s.Y, j, [&](int row) { return s.Level->Row(row) + c0 * L; }, (c1 - c0) * L,
-            yrow.data());
-          if (s.X.Width == 2)
+          const int n = (r.X1 - r.X0) * L;
+          float* b = bloom.data() + static_cast<size_t>(r.X0) * L;
+          if (!s.Scaled)
           {
-            InterpolateX<L, 2>(s.X, yrow.data(), c0, r.X0, r.X1, s.Scaled, s.Weight, bloom.data());
+            RowY(s.Y, j, local.Rings[i].Rows(), n, b);
+            continue;
           }
-          else
+          local.YRow.resize(n);
+          float* __restrict a = local.YRow.data();
+          RowY(s.Y, j, local.Rings[i].Rows(), n, a);
+          const float weight = s.Weight;
+          for (int q = 0; q < n; ++q)
           {
-            InterpolateX<L, 0>(s.X, yrow.data(), c0, r.X0, r.X1, s.Scaled, s.Weight, bloom.data());
+            b[q] = b[q] + weight * a[q];
           }
         }
         const T* src = in + (static_cast<size_t>(j) * inW + x0) * NC;
