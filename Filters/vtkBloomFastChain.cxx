@@ -695,19 +695,6 @@ void FetchX(const Op& rx, const float* __restrict line, int w0, float* __restric
   }
 }
 
-// True when none of the n values is NaN or +-Inf (an integer reduction that vectorizes).
-inline bool AllFinite(const float* v, size_t n)
-{
-  uint32_t any = 0;
-  for (size_t q = 0; q < n; ++q)
-  {
-    uint32_t u;
-    std::memcpy(&u, v + q, sizeof(u));
-    any |= static_cast<uint32_t>((u & 0x7f800000u) == 0x7f800000u);
-  }
-  return any == 0;
-}
-
 // What one read of input rows tells the bright pass: whether a value is -0, NaN or +-Inf (the
 // composite's short form needs none), whether one is NaN or +-Inf, and bounds that decide,
 // without fetching, that the bright pass of every sample fetched from the rows is zero: the
@@ -1089,18 +1076,24 @@ void CompositeFlat(const T* src, const float* bloom, const float* stFlat,
       std::copy(src, src + n, dst);
       return;
     }
-    if (AllFinite(bloom, n))
+    // One pass that also notes whether a bloom value, or (sanitized) a result, is NaN or Inf.
+    const float* __restrict in = reinterpret_cast<const float*>(src);
+    float* __restrict out = reinterpret_cast<float*>(dst);
+    const uint32_t e = 0x7f800000u;
+    uint32_t bad = 0;
+    for (int q = 0; q < n; ++q)
     {
-      const float* __restrict in = reinterpret_cast<const float*>(src);
-      float* __restrict out = reinterpret_cast<float*>(dst);
-      for (int q = 0; q < n; ++q)
-      {
-        out[q] = in[q] + (stFlat[q] * bloom[q] + 0.0f);
-      }
-      if (!Sanitize || AllFinite(out, n))
-      {
-        return;
-      }
+      const float o = in[q] + (stFlat[q] * bloom[q] + 0.0f);
+      out[q] = o;
+      uint32_t ub, uo;
+      std::memcpy(&ub, bloom + q, sizeof(ub));
+      std::memcpy(&uo, &o, sizeof(uo));
+      bad |=
+        static_cast<uint32_t>((ub & e) == e) | static_cast<uint32_t>(Sanitize && (uo & e) == e);
+    }
+    if (bad == 0)
+    {
+      return;
     }
   }
   CompositeFlat<T, Sanitize, HasBloom, true>(src, bloom, stFlat, colour, keep, n, dst);
