@@ -14,7 +14,9 @@
  *    the bounding box of the non-zero bright samples and whether the input holds -0, NaN or Inf.
  * 2. Pyramid: each level from the level above, over the region its support can reach.
  * 3. Blur fused with the upsample-accumulate: acc_i = up(acc_{i+1}) + w_i blur(level_i), one
- *    output row at a time (CASCADE); DIRECT blurs each level in place.
+ *    output row at a time (CASCADE), into a plane of its own; DIRECT blurs each level into its
+ *    own plane. Separable passes stream: each thread keeps the x-passed source rows it needs
+ *    in a ring of a few rows (terms that shrink the image run y first).
  * 4. Composite fused with the last upsample: each output row interpolates its bloom row from
  *    acc_0 (CASCADE) or from every weighted level (DIRECT) and writes
  *    keep * in + (S t bloom + 0). Adding +0 makes every zero bloom term +0, so the result does
