@@ -196,13 +196,6 @@ struct Plane
   {
     return this->D.data() + static_cast<size_t>(y) * this->W * this->C;
   }
-  void Zero(const Box& b)
-  {
-    for (int y = b.Y0; y < b.Y1; ++y)
-    {
-      std::fill(this->Row(y) + b.X0 * this->C, this->Row(y) + b.X1 * this->C, 0.0f);
-    }
-  }
   // Zeroes the samples of `outer` outside `inner`.
   void ZeroAround(const Box& outer, const Box& inner)
   {
