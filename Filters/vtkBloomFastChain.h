@@ -26,6 +26,9 @@
  * RGB levels hold four float lanes per sample (the fourth is zero), so per-pixel work is one
  * 4-wide vector operation; level samples saturate at +-FLT_MAX (a float32 sum that overflows
  * stays finite instead of turning into Inf and then NaN at a zero band weight).
+ * The passes are compiled twice where the compiler allows it: for the baseline instruction set
+ * and for AVX2 (without FMA); Execute runs the AVX2 copy when the CPU has it and UseAVX2 is
+ * set. Both copies compute each sample with the same operations in the same order.
  * Rows are threaded with vtkSMPTools; every output sample is computed by the same expression
  * whatever the threading and the regions, so the output is deterministic.
  *
@@ -80,6 +83,8 @@ struct vtkBloomFastChainParameters
   bool TrimPyramid = true;
   bool RestrictToBrightRegion = true;
   bool SkipDisabled = true;
+  /// Run the passes compiled for AVX2 when the CPU has it (same bits as the baseline build).
+  bool UseAVX2 = true;
 };
 
 /// What the last Execute did (for tests and the benchmark).
@@ -90,6 +95,7 @@ struct vtkBloomFastChainReport
   int LevelsBuilt = 0;            ///< pyramid levels computed
   long long SamplesProcessed = 0; ///< level samples computed (all levels, all steps)
   size_t WorkspaceBytes = 0;      ///< bytes of intermediate buffers held
+  bool UsedAVX2 = false;          ///< the passes compiled for AVX2 ran
 };
 
 class vtkBloomFastChain
@@ -103,6 +109,12 @@ public:
    * precision, so vtkImageBloom runs its reference), Karis average, more than one slice.
    */
   static bool Supports(const vtkBloomFastChainParameters& p, vtkImageData* input);
+
+  /**
+   * True when this build has the passes compiled for AVX2 (GCC on x86) and the CPU and the
+   * operating system support AVX2.
+   */
+  static bool AVX2Available();
 
   /**
    * Run the chain on `input` (float or double, 1-4 components, one slice) and write the output

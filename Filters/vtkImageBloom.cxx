@@ -122,11 +122,13 @@ vtkImageBloom::vtkImageBloom()
   this->SkipDisabledEffects = true;
   this->TrimPyramid = true;
   this->RestrictToBrightRegion = true;
+  this->UseAVX2 = true;
   this->LastRunWasFast = false;
   this->LastBloomSkipped = false;
   this->LastPassedThrough = false;
   this->LastLevelsBuilt = 0;
   this->LastWorkspaceBytes = 0;
+  this->LastRunUsedAVX2 = false;
   this->FastChain = new vtkBloomFastChain;
   this->Chain = new vtkBloomChain;
   this->ChainSize[0] = this->ChainSize[1] = -1;
@@ -138,6 +140,12 @@ vtkImageBloom::~vtkImageBloom()
 {
   delete this->FastChain;
   delete this->Chain;
+}
+
+//------------------------------------------------------------------------------
+bool vtkImageBloom::IsAVX2Available()
+{
+  return vtkBloomFastChain::AVX2Available();
 }
 
 //------------------------------------------------------------------------------
@@ -457,6 +465,7 @@ int vtkImageBloom::RequestData(
   this->LastBloomSkipped = false;
   this->LastPassedThrough = false;
   this->LastLevelsBuilt = -1;
+  this->LastRunUsedAVX2 = false;
   const int colours = nc >= 3 ? 3 : 1;
   // The operators of every step, shared by both paths here and by vtkBloomPass; built again
   // only when a parameter (this filter's MTime) or the size changed.
@@ -494,6 +503,7 @@ int vtkImageBloom::RequestData(
     p.TrimPyramid = this->TrimPyramid;
     p.RestrictToBrightRegion = this->RestrictToBrightRegion;
     p.SkipDisabled = this->SkipDisabledEffects;
+    p.UseAVX2 = this->UseAVX2;
     if (vtkBloomFastChain::Supports(p, input))
     {
       int outExt[6];
@@ -509,6 +519,7 @@ int vtkImageBloom::RequestData(
       this->LastPassedThrough = report.PassedThrough;
       this->LastLevelsBuilt = report.LevelsBuilt;
       this->LastWorkspaceBytes = static_cast<vtkIdType>(report.WorkspaceBytes);
+      this->LastRunUsedAVX2 = report.UsedAVX2;
       this->ComputeOutputStatistics(input, output, static_cast<int>(p.LevelSizes.size()));
       this->UpdateProgress(1.0);
       return 1;
@@ -819,6 +830,7 @@ void vtkImageBloom::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "TrimPyramid: " << (this->TrimPyramid ? "On" : "Off") << "\n";
   os << indent << "RestrictToBrightRegion: " << (this->RestrictToBrightRegion ? "On" : "Off")
      << "\n";
+  os << indent << "UseAVX2: " << (this->UseAVX2 ? "On" : "Off") << "\n";
   os << indent << "EnergyIn: " << this->EnergyIn << "\n";
   os << indent << "EnergyOut: " << this->EnergyOut << "\n";
   os << indent << "NumberOfBrightPixels: " << this->NumberOfBrightPixels << "\n";

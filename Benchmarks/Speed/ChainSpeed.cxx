@@ -245,7 +245,7 @@ double PeakExtraFrames(F&& run, double frame)
 //------------------------------------------------------------------------------
 // vtkImageBloom.
 void BM_Bloom(benchmark::State& state, std::string config, int size, double fraction, bool adaptive,
-  bool statistics, int mode, std::string row)
+  bool statistics, int mode, bool avx2, std::string row)
 {
   vtkImageData* input = Scene(size, fraction);
   auto make = [&]()
@@ -258,6 +258,7 @@ void BM_Bloom(benchmark::State& state, std::string config, int size, double frac
     bloom->SetSkipDisabledEffects(adaptive);
     bloom->SetTrimPyramid(adaptive);
     bloom->SetRestrictToBrightRegion(adaptive);
+    bloom->SetUseAVX2(avx2);
     bloom->SetInputData(input);
     return bloom;
   };
@@ -276,6 +277,7 @@ void BM_Bloom(benchmark::State& state, std::string config, int size, double frac
   state.counters["extra_frames"] = extra;
   state.counters["fast"] = bloom->GetLastRunWasFast();
   state.counters["statistics"] = statistics;
+  state.counters["avx2"] = bloom->GetLastRunUsedAVX2();
   state.counters["workspace_MB"] = bloom->GetLastWorkspaceBytes() / 1048576.0;
   Results[row].ExtraFrames = extra;
 }
@@ -538,11 +540,16 @@ int main(int argc, char** argv)
         ->UseRealTime();
     };
     reg("bloom.webgpu-market", BM_Bloom, std::string("webgpu-market"), s, -1.0, true, false,
-      vtkImageBloom::FAST);
+      vtkImageBloom::FAST, true);
+    if (vtkImageBloom::IsAVX2Available())
+    {
+      reg("bloom.webgpu-market.baseline", BM_Bloom, std::string("webgpu-market"), s, -1.0, true,
+        false, vtkImageBloom::FAST, false);
+    }
     reg("bloom.gaussian", BM_Bloom, std::string("gaussian"), s, -1.0, true, false,
-      vtkImageBloom::FAST);
+      vtkImageBloom::FAST, true);
     reg("bloom.webgpu-market.statistics", BM_Bloom, std::string("webgpu-market"), s, -1.0, true,
-      true, vtkImageBloom::FAST);
+      true, vtkImageBloom::FAST, true);
     reg("stockvtk.gaussian", BM_StockVTK, s);
 #if VTKBLOOM_HAVE_OPENCV
     reg("opencv.gaussian.threads1", BM_OpenCV, s, 1);
@@ -552,9 +559,11 @@ int main(int argc, char** argv)
     {
       char name[64];
       std::snprintf(name, sizeof(name), "bloom.webgpu-market.sparse%g", f * 100.0);
-      reg(name, BM_Bloom, std::string("webgpu-market"), s, f, true, false, vtkImageBloom::FAST);
+      reg(
+        name, BM_Bloom, std::string("webgpu-market"), s, f, true, false, vtkImageBloom::FAST, true);
       std::snprintf(name, sizeof(name), "bloom.webgpu-market.sparse%g.adaptiveoff", f * 100.0);
-      reg(name, BM_Bloom, std::string("webgpu-market"), s, f, false, false, vtkImageBloom::FAST);
+      reg(name, BM_Bloom, std::string("webgpu-market"), s, f, false, false, vtkImageBloom::FAST,
+        true);
     }
   }
   if (vtkBloomRegisterGPUBenchmarks)
