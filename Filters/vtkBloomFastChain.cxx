@@ -279,7 +279,9 @@ namespace
 {
 namespace baseline
 {
+#define VTKBLOOM_VECTOR_BYTES 16
 #include "vtkBloomFastChainPasses.txx"
+#undef VTKBLOOM_VECTOR_BYTES
 }
 }
 
@@ -290,7 +292,9 @@ namespace
 {
 namespace avx2
 {
+#define VTKBLOOM_VECTOR_BYTES 32
 #include "vtkBloomFastChainPasses.txx"
+#undef VTKBLOOM_VECTOR_BYTES
 }
 }
 #pragma GCC pop_options

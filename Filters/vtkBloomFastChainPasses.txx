@@ -1,6 +1,13 @@
 // The passes of the fast chain, included by vtkBloomFastChain.cxx once per instruction set,
 // each time inside a namespace of its own (so this file has no include guard). It uses the
 // helpers that file defines first (Op, Box, Plane, ...) and vtkBloomFastChain::Internals.
+// VTKBLOOM_VECTOR_BYTES, defined by the includer, is the width of the vector registers of the
+// instruction set (16 or 32) for the loops written with GCC vector types.
+
+constexpr int VectorBytes = VTKBLOOM_VECTOR_BYTES;
+constexpr int VectorFloats = VectorBytes / 4;
+typedef float FloatV __attribute__((vector_size(VectorBytes)));
+typedef int32_t IntV __attribute__((vector_size(VectorBytes)));
 
 // out[q] = sum_k w[k] src[k][q] for q < n, summed in k order from w[0] src[0][q] (added to
 // out[q] when Accumulate). Blocks of 16 values are summed over all taps in registers and stored
@@ -520,44 +527,60 @@ template <>
 void ScanRow<float, 4>(
   const float* __restrict row, int width, float hi[4], float mag[4], bool& special, bool& nonFinite)
 {
-  constexpr int B = 16;
-  float h[B], m[B];
-  uint32_t sp[B], nf[B];
-  for (int q = 0; q < B; ++q)
+  // Three running values per lane: the largest value; the largest |v| as an integer (for
+  // non-negative floats the integer order is the float order, and NaN and Inf are the bit
+  // patterns from 0x7f800000 up, so one maximum answers both "how large" and "any NaN or
+  // Inf"); and whether a -0 (bits 0x80000000) occurred. A vector holds whole pixels, so its
+  // lane q is component q % 4.
+  constexpr int NV = 64 / VectorBytes; // vectors per block of 16 values
+  FloatV h[NV];
+  IntV m[NV], sp[NV];
+  for (int v = 0; v < NV; ++v)
   {
-    h[q] = hi[q % 4];
-    m[q] = mag[q % 4];
-    sp[q] = nf[q] = 0;
+    for (int q = 0; q < VectorFloats; ++q)
+    {
+      h[v][q] = hi[q % 4];
+    }
+    m[v] = IntV{};
+    sp[v] = IntV{};
   }
-  const int n = width * 4, blocks = n / B;
+  const IntV absMask = IntV{} + 0x7fffffff;
+  const IntV negativeZero = IntV{} + std::numeric_limits<int32_t>::min();
+  const int n = width * 4, blocks = n / 16;
   for (int k = 0; k < blocks; ++k)
   {
-    const float* __restrict v = row + static_cast<size_t>(k) * B;
-    for (int q = 0; q < B; ++q)
+    for (int v = 0; v < NV; ++v)
     {
-      uint32_t u, a;
-      std::memcpy(&u, v + q, sizeof(u));
-      a = u & 0x7fffffffu;
-      float abs;
-      std::memcpy(&abs, &a, sizeof(abs));
-      h[q] = h[q] > v[q] ? h[q] : v[q];
-      m[q] = m[q] > abs ? m[q] : abs;
-      nf[q] |= static_cast<uint32_t>((u & 0x7f800000u) == 0x7f800000u);
-      sp[q] |= static_cast<uint32_t>(u == 0x80000000u);
+      FloatV x;
+      std::memcpy(&x, row + static_cast<size_t>(k) * 16 + v * VectorFloats, sizeof(x));
+      IntV u;
+      std::memcpy(&u, &x, sizeof(u));
+      const IntV a = u & absMask;
+      h[v] = h[v] > x ? h[v] : x;
+      m[v] = m[v] > a ? m[v] : a;
+      sp[v] |= u == negativeZero;
     }
   }
-  uint32_t anySpecial = 0, anyNonFinite = 0;
-  for (int q = 0; q < B; ++q)
+  for (int v = 0; v < NV; ++v)
   {
-    hi[q % 4] = std::max(hi[q % 4], h[q]);
-    mag[q % 4] = std::max(mag[q % 4], m[q]);
-    anySpecial |= sp[q];
-    anyNonFinite |= nf[q];
+    for (int q = 0; q < VectorFloats; ++q)
+    {
+      hi[q % 4] = std::max(hi[q % 4], h[v][q]);
+      special |= sp[v][q] != 0;
+      if (m[v][q] >= 0x7f800000)
+      {
+        nonFinite = true;
+        special = true;
+        continue;
+      }
+      float magnitude;
+      const int32_t bits = m[v][q];
+      std::memcpy(&magnitude, &bits, sizeof(magnitude));
+      mag[q % 4] = std::max(mag[q % 4], magnitude);
+    }
   }
-  nonFinite |= anyNonFinite != 0;
-  special |= (anySpecial | anyNonFinite) != 0;
   ScanRowScalar<float, 4>(
-    row + static_cast<size_t>(blocks) * B, (n - blocks * B) / 4, hi, mag, special, nonFinite);
+    row + static_cast<size_t>(blocks) * 16, (n - blocks * 16) / 4, hi, mag, special, nonFinite);
 }
 
 // The bounds of rows [r0, r1) (NaN and Inf are looked for in every component, alpha included,
