@@ -415,6 +415,7 @@ struct BrightResult
 {
   Box Region;
   bool AnySpecial = false;
+  std::vector<char> Dark; // level-0 rows left unwritten (their samples are all zero)
 };
 
 // Samples per pixel in the levels: colour images keep RGB in four lanes (the fourth is zero) so
@@ -693,7 +694,7 @@ BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int
           special[j] = bounds.Special;
           if (RowsAreDark(bounds, p))
           {
-            dark[j] = 1; // not fetched (and zeroed only if needed, below)
+            dark[j] = 1; // not fetched (ZeroDarkRows zeroes what a later pass reads)
             continue;
           }
         }
@@ -775,20 +776,21 @@ BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int
   if (b.Empty())
   {
     b = Box();
-    return result; // no pyramid will read level 0
   }
-  vtkSMPTools::For(0, h0, 16,
-    [&](int begin, int end)
-    {
-      for (int j = begin; j < end; ++j)
-      {
-        if (dark[j])
-        {
-          std::fill(level.Row(j), level.Row(j) + static_cast<size_t>(w0) * L, 0.0f);
-        }
-      }
-    });
+  result.Dark = std::move(dark);
   return result;
+}
+
+// Zeroes the dark level-0 rows (BrightPass leaves them unwritten) over the samples of `read`.
+void ZeroDarkRows(const std::vector<char>& dark, const Box& read, Plane& level)
+{
+  for (int y = read.Y0; y < read.Y1; ++y)
+  {
+    if (dark[y])
+    {
+      std::fill(level.Row(y) + read.X0 * level.C, level.Row(y) + read.X1 * level.C, 0.0f);
+    }
+  }
 }
 
 // One bloom source for the composite: a plane, its weight and its bilinear ops to full size.
@@ -962,6 +964,11 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
   }
   // Each source's rows are interpolated in x once per task, through a ring, and the y pass
   // combines them; tasks are long so that few rows are interpolated twice.
+  // Rows of a large float output without bloom whose result is the input (keep 1, no -0, NaN
+  // or Inf) are streamed from it (StreamCopy).
+  const bool stream = std::is_same<T, float>::value &&
+    static_cast<size_t>(outW) * (outExt[3] - outExt[2] + 1) * NC * sizeof(T) >= StreamingBytes;
+  const bool copyIsComposite = keep == T(1) && clean;
   struct Scratch
   {
     std::vector<float> Bloom, YRow;
@@ -1023,9 +1030,16 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
         }
         const T* src = in + (static_cast<size_t>(j) * inW + x0) * NC;
         T* dst = out + static_cast<size_t>(y - outExt[2]) * outW * NC;
+        const size_t n = static_cast<size_t>(outW) * NC;
+        if (stream && copyIsComposite && b0 >= b1)
+        {
+          StreamCopy(reinterpret_cast<float*>(dst), reinterpret_cast<const float*>(src), n);
+          continue;
+        }
         CompositeSpans<T, NC, C, Sanitize>(src, bloom.data() + static_cast<size_t>(x0) * L, b0 - x0,
           b1 - x0, stL, stFlat.data(), colour.data(), keep, clean, outW, dst);
       }
+      StoreFence();
     });
 }
 
@@ -1111,6 +1125,19 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
     reportProgress(0.3);
     std::vector<Box> boxes(levelsBuilt);
     auto full = [&](int i) { return Box{ 0, levels[i].W, 0, levels[i].H }; };
+    // Level i is written over boxes[i] (level 0: over its rows that are not dark); a pass that
+    // reads it zeroes what it reads outside first, instead of every level being cleared.
+    auto defineLevel = [&](int i, const Box& read)
+    {
+      if (i == 0)
+      {
+        ZeroDarkRows(bright.Dark, read, levels[0]);
+      }
+      else
+      {
+        levels[i].ZeroAround(read, boxes[i]);
+      }
+    };
     boxes[0] = p.RestrictToBrightRegion ? bright.Region : full(0);
     if (p.SkipEmpty && bright.Region.Empty())
     {
@@ -1125,7 +1152,6 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
       {
         const int outSize[2] = { p.LevelSizes[i].first, p.LevelSizes[i].second };
         levels[i].Resize(outSize[0], outSize[1], L);
-        std::fill(levels[i].D.begin(), levels[i].D.end(), 0.0f);
         const auto& terms = chain.Levels[i].Down;
         std::vector<Term> down;
         Box box;
@@ -1135,6 +1161,10 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
           box = Union(box, ReachBox(down.back().X, down.back().Y, boxes[i - 1]));
         }
         boxes[i] = p.RestrictToBrightRegion ? box : full(i);
+        for (const Term& t : down)
+        {
+          defineLevel(i - 1, NeedsBox(t.X, t.Y, boxes[i]));
+        }
         Separable<L>(levels[i - 1], down, boxes[i], levels[i]);
         report.SamplesProcessed += static_cast<long long>(boxes[i].X1 - boxes[i].X0) *
           (boxes[i].Y1 - boxes[i].Y0) * static_cast<long long>(terms.size());
@@ -1184,6 +1214,10 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
           }
           acc[i] = p.RestrictToBrightRegion ? blurBox : full(i);
           accPlane[i] = &level;
+          defineLevel(i,
+            blurred
+              ? NeedsBox(bx, by, acc[i])
+              : ReadBox(MakeOp(chain.Levels[i].Full.X), MakeOp(chain.Levels[i].Full.Y), acc[i]));
           if (blurred)
           {
             plane.Resize(level.W, level.H, L);
@@ -1218,6 +1252,10 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
         if (box.Empty())
         {
           continue;
+        }
+        if (w != 0.0f)
+        {
+          defineLevel(i, blurred ? NeedsBox(bx, by, box) : box);
         }
         const size_t stride = static_cast<size_t>(box.X1 - box.X0) * L;
         const int n = static_cast<int>(stride);

@@ -312,3 +312,38 @@ TEST(PerformanceFastPath, AVX2GivesTheBaselineBits)
     }
   }
 }
+
+// The fast chain keeps its levels between updates and zeroes only what a pass reads outside
+// the region it computed. A filter that first ran on a frame bright everywhere (every level
+// full of non-zero samples) must give, on every later frame, the bits of a fresh filter.
+TEST(PerformanceFastPath, ReusedWorkspaceHoldsNoStaleSamples)
+{
+  for (const char* preset : Presets)
+  {
+    for (int mode : { vtkImageBloom::CASCADE, vtkImageBloom::DIRECT })
+    {
+      for (int nc : { 1, 4 })
+      {
+        vtkNew<vtkImageBloom> reused;
+        reused->SetPreset(preset);
+        reused->SetAccumulateMode(mode);
+        reused->ComputeStatisticsOff();
+        for (int scene : { RANDOM, BLOB, SINGLE, EMPTY, SPECIAL, SINGLE })
+        {
+          auto input = MakeScene(scene, 161, 91, nc);
+          reused->SetInputData(input);
+          reused->Update();
+          vtkNew<vtkImageBloom> fresh;
+          fresh->SetPreset(preset);
+          fresh->SetAccumulateMode(mode);
+          fresh->ComputeStatisticsOff();
+          fresh->SetInputData(input);
+          fresh->Update();
+          ASSERT_TRUE(reused->GetLastRunWasFast());
+          EXPECT_TRUE(vtkBloomTest::BitIdentical(reused->GetOutput(), fresh->GetOutput()))
+            << preset << " accumulate " << mode << " nc " << nc << " " << SceneName(scene);
+        }
+      }
+    }
+  }
+}
