@@ -1,5 +1,6 @@
 #include "vtkBloomStatistics.h"
 
+#include "vtkBloomBrightPass.h"
 #include "vtkBloomKernels.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"
@@ -175,44 +176,95 @@ private:
 };
 
 // Add a row's luminances to `energy` (normalized after each row, so that a chunk never takes
-// more than one row of additions) and raise `peak` to their maximum.
+// more than one row of additions) and raise `peak` to their maximum. Even and odd pixels go to
+// two sums, added at the end of the row, so that consecutive additions, which often touch the
+// same chunks, do not wait on each other; the sum is exact either way.
 template <typename T>
 void MeasureRow(const T* row, int n, int nc, ExactSum& energy, double& peak)
 {
-  for (int i = 0; i < n; ++i)
+  ExactSum odd;
+  double peakOdd = peak;
+  int i = 0;
+  for (; i + 1 < n; i += 2)
   {
-    const double lum = PixelLuminance(row + static_cast<size_t>(i) * nc, nc);
-    energy.Add(lum);
-    if (lum > peak) // false for NaN, which is ignored
-    {
-      peak = lum;
-    }
+    const double a = PixelLuminance(row + static_cast<size_t>(i) * nc, nc);
+    const double b = PixelLuminance(row + static_cast<size_t>(i + 1) * nc, nc);
+    energy.Add(a);
+    odd.Add(b);
+    peak = a > peak ? a : peak; // NaN is ignored
+    peakOdd = b > peakOdd ? b : peakOdd;
   }
-  energy.Normalize();
+  if (i < n)
+  {
+    const double a = PixelLuminance(row + static_cast<size_t>(i) * nc, nc);
+    energy.Add(a);
+    peak = a > peak ? a : peak;
+  }
+  peak = peakOdd > peak ? peakOdd : peak;
+  odd.Normalize();
+  energy.Add(odd); // normalizes
 }
 
-template <typename T>
+template <int Colours, int Mode, typename T>
 vtkIdType CountRow(
-  const T* row, int n, int nc, int mode, double threshold, double knee, double clampLuminance)
+  const T* row, int n, int nc, double threshold, double knee, double clampLuminance)
 {
-  const int colours = nc >= 3 ? 3 : 1;
   vtkIdType count = 0;
   for (int i = 0; i < n; ++i)
   {
-    double colour[3];
-    for (int c = 0; c < colours; ++c)
+    double colour[Colours];
+    for (int c = 0; c < Colours; ++c)
     {
       colour[c] = static_cast<double>(row[static_cast<size_t>(i) * nc + c]);
     }
-    vtkImageBloomThreshold::BrightPass(colour, colours, mode, threshold, knee, clampLuminance);
+    // Most pixels of an image are below the threshold's zero edge, which is decided without
+    // the formula (vtkBloomBrightPassIsZero answers true only where the formula gives zero;
+    // with the mode a constant, it is a few comparisons).
+    if (vtkBloomBrightPassIsZero<Colours>(colour, Mode, threshold, knee, clampLuminance))
+    {
+      continue;
+    }
+    vtkBloomBrightPass<Colours>(colour, Mode, threshold, knee, clampLuminance);
     bool bright = false;
-    for (int c = 0; c < colours; ++c)
+    for (int c = 0; c < Colours; ++c)
     {
       bright = bright || colour[c] > 0.0;
     }
     count += bright ? 1 : 0;
   }
   return count;
+}
+
+template <int Colours, typename T>
+vtkIdType CountRow(
+  const T* row, int n, int nc, int mode, double threshold, double knee, double clampLuminance)
+{
+  switch (mode)
+  {
+    case vtkImageBloomThreshold::SMOOTHSTEP_KNEE:
+      return CountRow<Colours, vtkImageBloomThreshold::SMOOTHSTEP_KNEE>(
+        row, n, nc, threshold, knee, clampLuminance);
+    case vtkImageBloomThreshold::HARD_LUMINANCE:
+      return CountRow<Colours, vtkImageBloomThreshold::HARD_LUMINANCE>(
+        row, n, nc, threshold, knee, clampLuminance);
+    case vtkImageBloomThreshold::QUADRATIC_KNEE:
+      return CountRow<Colours, vtkImageBloomThreshold::QUADRATIC_KNEE>(
+        row, n, nc, threshold, knee, clampLuminance);
+    case vtkImageBloomThreshold::PER_CHANNEL:
+      return CountRow<Colours, vtkImageBloomThreshold::PER_CHANNEL>(
+        row, n, nc, threshold, knee, clampLuminance);
+    default:
+      return CountRow<Colours, vtkImageBloomThreshold::NONE>(
+        row, n, nc, threshold, knee, clampLuminance);
+  }
+}
+
+template <typename T>
+vtkIdType CountRow(
+  const T* row, int n, int nc, int mode, double threshold, double knee, double clampLuminance)
+{
+  return nc >= 3 ? CountRow<3>(row, n, nc, mode, threshold, knee, clampLuminance)
+                 : CountRow<1>(row, n, nc, mode, threshold, knee, clampLuminance);
 }
 
 // Call f(row index, pointer to the first pixel of row (j, k)) for every row of the extent, in

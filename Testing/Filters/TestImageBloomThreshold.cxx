@@ -6,6 +6,7 @@
 #include "vtkBloomTestSupport.h"
 
 #include <vtkDataArray.h>
+#include <vtkImageBloom.h>
 #include <vtkImageBloomThreshold.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
@@ -484,4 +485,66 @@ TEST(FiltersThreshold, ZeroTestOfTheFusedChainIsSound)
   // NONE keeps every colour: nothing is ever claimed zero.
   const float dark[3] = { 0.0f, 0.0f, 0.0f };
   EXPECT_FALSE(vtkBloomBrightPassIsZero<3>(dark, vtkImageBloomThreshold::NONE, 1.0, 0.5, 1e4));
+}
+
+// vtkImageBloom's NumberOfBrightPixels (which decides most pixels dark without the formula)
+// counts exactly the pixels this filter keeps: some colour value > 0 after the bright pass.
+// Every mode, knee 0, a luminance clamp, float and double input, negative and non-finite values.
+TEST(FiltersThreshold, BloomCountsThePixelsTheFilterKeeps)
+{
+  std::vector<Pixel> pixels = Sweep();
+  const double inf = std::numeric_limits<double>::infinity();
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const Pixel& p : std::vector<Pixel>{ { nan, 0.1, 0.1, 1 }, { inf, 0.0, 0.0, 1 },
+         { -inf, 2.0, 2.0, 1 }, { 0.2, nan, 5.0, 1 }, { -0.0, -0.0, -0.0, 1 } })
+  {
+    pixels.push_back(p);
+  }
+  int partial = 0;
+  for (int mode = 0; mode <= 4; ++mode)
+  {
+    for (double knee : { 0.0, 0.5 })
+    {
+      for (double clamp : { static_cast<double>(VTK_FLOAT_MAX), 1.5 })
+      {
+        for (int nc : { 1, 3, 4 })
+        {
+          for (int type : { VTK_DOUBLE, VTK_FLOAT })
+          {
+            ThresholdSettings s;
+            s.Mode = mode;
+            s.Knee = knee;
+            s.ClampLuminance = clamp;
+            auto input = Row(pixels, nc, type);
+            // The filter in double on exactly the values of the input.
+            auto kept =
+              Apply(vtkBloomRef::ToImage(vtkBloomRef::FromImage(input), nc, VTK_DOUBLE), s);
+            vtkIdType expected = 0;
+            for (vtkIdType i = 0; i < kept->GetNumberOfPoints(); ++i)
+            {
+              bool bright = false;
+              for (int c = 0; c < (nc == 1 ? 1 : 3); ++c)
+              {
+                bright = bright || vtkBloomTest::Value(kept, static_cast<int>(i), 0, 0, c) > 0.0;
+              }
+              expected += bright ? 1 : 0;
+            }
+            vtkNew<vtkImageBloom> bloom;
+            bloom->SetThresholdMode(mode);
+            bloom->SetThreshold(s.Threshold);
+            bloom->SetKnee(knee);
+            bloom->SetClampLuminance(clamp);
+            bloom->ComputeStatisticsOn();
+            bloom->SetInputData(input);
+            bloom->Update();
+            EXPECT_EQ(bloom->GetNumberOfBrightPixels(), expected)
+              << ModeName(mode) << " knee " << knee << " clamp " << clamp << " nc " << nc
+              << (type == VTK_FLOAT ? " float" : " double");
+            partial += expected > 0 && expected < input->GetNumberOfPoints() ? 1 : 0;
+          }
+        }
+      }
+    }
+  }
+  EXPECT_GT(partial, 0) << "the sweep must keep some pixels and drop others";
 }
