@@ -48,11 +48,27 @@ inline T Finite(T v)
 
 // Level samples saturate at +-FLT_MAX: a float32 sum that overflows stays the largest float
 // instead of becoming Inf (and then NaN where a zero weight of a band meets it).
+inline float Saturated(float v)
+{
+  return v > FloatMax ? FloatMax : (v < -FloatMax ? -FloatMax : v);
+}
+
 inline void Saturate(float* __restrict v, size_t n)
 {
   for (size_t q = 0; q < n; ++q)
   {
-    v[q] = v[q] > FloatMax ? FloatMax : (v[q] < -FloatMax ? -FloatMax : v[q]);
+    v[q] = Saturated(v[q]);
+  }
+}
+
+// d[q] = Saturated(a[q] + s b[q]) (Add) or Saturated(s b[q]) over n values, in one pass; a may
+// be d. With s = 1 the product is b[q] itself, bit for bit.
+template <bool Add>
+inline void SumSaturated(float* d, const float* a, float s, const float* __restrict b, int n)
+{
+  for (int q = 0; q < n; ++q)
+  {
+    d[q] = Saturated(Add ? a[q] + s * b[q] : s * b[q]);
   }
 }
 

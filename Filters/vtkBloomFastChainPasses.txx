@@ -340,26 +340,8 @@ void Separable(const Plane& src, const std::vector<Term>& terms, const Box& box,
           {
             RowY(term.Y, j, local.Rings[t].Rows(), n, row);
           }
-          const float scale = term.Weight;
-          if (t > 0)
-          {
-            for (int q = 0; q < n; ++q)
-            {
-              d[q] += scale * row[q];
-            }
-          }
-          else if (scale == 1.0f)
-          {
-            std::copy(row, row + n, d);
-          }
-          else
-          {
-            for (int q = 0; q < n; ++q)
-            {
-              d[q] = scale * row[q];
-            }
-          }
-          Saturate(d, stride);
+          t > 0 ? SumSaturated<true>(d, d, term.Weight, row, n)
+                : SumSaturated<false>(d, nullptr, term.Weight, row, n);
         }
       }
     });
@@ -1295,30 +1277,15 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
               if (up)
               {
                 RowY(uy, j, upRing.Rows(), n, urow);
-                if (w != 0.0f)
-                {
-                  for (int q = 0; q < n; ++q)
-                  {
-                    d[q] = urow[q] + w * b[q];
-                  }
-                }
-                else
-                {
-                  std::copy(urow, urow + n, d);
-                }
               }
-              else if (w == 1.0f)
+              if (up && w != 0.0f)
               {
-                std::copy(b, b + n, d);
+                SumSaturated<true>(d, urow, w, b, n);
               }
               else
               {
-                for (int q = 0; q < n; ++q)
-                {
-                  d[q] = w * b[q];
-                }
+                SumSaturated<false>(d, nullptr, up ? 1.0f : w, up ? urow : b, n);
               }
-              Saturate(d, stride);
             }
           });
         report.SamplesProcessed += static_cast<long long>(box.X1 - box.X0) * (box.Y1 - box.Y0);
