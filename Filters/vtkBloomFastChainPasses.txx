@@ -8,49 +8,79 @@ constexpr int VectorBytes = VTKBLOOM_VECTOR_BYTES;
 constexpr int VectorFloats = VectorBytes / 4;
 typedef float FloatV __attribute__((vector_size(VectorBytes)));
 typedef int32_t IntV __attribute__((vector_size(VectorBytes)));
+typedef float FloatU __attribute__((vector_size(VectorBytes), aligned(4), may_alias));
 
-// out[q] = sum_k w[k] src[k][q] for q < n, summed in k order from w[0] src[0][q] (added to
-// out[q] when Accumulate). Blocks of 16 values are summed over all taps in registers and stored
-// once, instead of one pass over out per tap.
-template <bool Accumulate>
-void WeightedSum(const float* w, const float* const* src, int taps, int n, float* __restrict out)
+// Unaligned vector loads and stores of floats, and a vector with every lane v (1 v is v bit
+// for bit, -0 and NaN included).
+inline FloatV LoadV(const float* p)
 {
-  constexpr int B = 16;
+  return *reinterpret_cast<const FloatU*>(p);
+}
+
+inline void StoreV(float* p, FloatV v)
+{
+  *reinterpret_cast<FloatU*>(p) = v;
+}
+
+inline FloatV Broadcast(float v)
+{
+  return v * (FloatV{} + 1.0f);
+}
+
+// out[q] = sum_k w[k] src[k][q] from q, by blocks of NV vectors while a whole block fits,
+// summed in k order from w[0] src[0][q] (added to out[q] when Accumulate): each block is summed
+// over all taps in NV independent registers and stored once. Returns where it stopped.
+template <bool Accumulate, int NV>
+int WeightedSumBlocks(
+  const float* w, const float* const* src, int taps, int q, int n, float* __restrict out)
+{
+  constexpr int B = NV * VectorFloats;
   const int k0 = Accumulate ? 0 : 1;
-  int q = 0;
   for (; q + B <= n; q += B)
   {
-    float acc[B];
+    FloatV acc[NV];
     if (Accumulate)
     {
-      for (int e = 0; e < B; ++e)
+      for (int v = 0; v < NV; ++v)
       {
-        acc[e] = out[q + e];
+        acc[v] = LoadV(out + q + v * VectorFloats);
       }
     }
     else
     {
-      const float w0 = w[0];
-      const float* __restrict s = src[0] + q;
-      for (int e = 0; e < B; ++e)
+      const FloatV w0 = Broadcast(w[0]);
+      for (int v = 0; v < NV; ++v)
       {
-        acc[e] = w0 * s[e];
+        acc[v] = w0 * LoadV(src[0] + q + v * VectorFloats);
       }
     }
     for (int k = k0; k < taps; ++k)
     {
-      const float wk = w[k];
-      const float* __restrict s = src[k] + q;
-      for (int e = 0; e < B; ++e)
+      const FloatV wk = Broadcast(w[k]);
+      const float* s = src[k] + q;
+      for (int v = 0; v < NV; ++v)
       {
-        acc[e] += wk * s[e];
+        acc[v] += wk * LoadV(s + v * VectorFloats);
       }
     }
-    for (int e = 0; e < B; ++e)
+    for (int v = 0; v < NV; ++v)
     {
-      out[q + e] = acc[e];
+      StoreV(out + q + v * VectorFloats, acc[v]);
     }
   }
+  return q;
+}
+
+// out[q] = sum_k w[k] src[k][q] for q < n, summed in k order from w[0] src[0][q] (added to
+// out[q] when Accumulate). Blocks of four vectors (independent sums, so that the additions of
+// one tap do not wait on each other), then of one vector, then single values: each value gets
+// the same sum whatever the block.
+template <bool Accumulate>
+void WeightedSum(const float* w, const float* const* src, int taps, int n, float* __restrict out)
+{
+  int q = WeightedSumBlocks<Accumulate, 4>(w, src, taps, 0, n, out);
+  q = WeightedSumBlocks<Accumulate, 1>(w, src, taps, q, n, out);
+  const int k0 = Accumulate ? 0 : 1;
   for (; q < n; ++q)
   {
     float acc = Accumulate ? out[q] : w[0] * src[0][q];
