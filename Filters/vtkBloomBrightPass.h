@@ -17,6 +17,31 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <type_traits>
+
+/**
+ * Calls f(std::integral_constant<int, Mode>()) for a vtkImageBloomThreshold mode (an unknown
+ * mode as NONE), so that a loop templated on the mode runs the formulas below with their
+ * switch folded away.
+ */
+template <typename F>
+inline decltype(auto) vtkBloomWithThresholdMode(int mode, F&& f)
+{
+  using T = vtkImageBloomThreshold;
+  switch (mode)
+  {
+    case T::SMOOTHSTEP_KNEE:
+      return f(std::integral_constant<int, T::SMOOTHSTEP_KNEE>());
+    case T::QUADRATIC_KNEE:
+      return f(std::integral_constant<int, T::QUADRATIC_KNEE>());
+    case T::HARD_LUMINANCE:
+      return f(std::integral_constant<int, T::HARD_LUMINANCE>());
+    case T::PER_CHANNEL:
+      return f(std::integral_constant<int, T::PER_CHANNEL>());
+    default:
+      return f(std::integral_constant<int, T::NONE>());
+  }
+}
 
 /// NaN -> 0, -Inf -> 0, +Inf -> ceiling: what the bloom chain feeds its pyramid in every mode.
 template <int N, typename Real>

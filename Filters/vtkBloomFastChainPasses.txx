@@ -668,6 +668,46 @@ bool DarkRowsDecidable(const Op& rx, const Op& ry)
   return true;
 }
 
+// The bright pass over the w0 samples of a level-0 row, in place (the lane past the colours
+// set to zero), and the columns [lo, hi) of its non-zero samples. The mode is a constant, so
+// the formulas' switch folds away.
+template <int C, int Mode>
+void ThresholdRow(
+  const vtkBloomFastChainParameters& p, double ceiling, float* row, int w0, int& lo, int& hi)
+{
+  constexpr int L = Lanes<C>();
+  lo = w0;
+  hi = 0;
+  for (int x = 0; x < w0; ++x)
+  {
+    float* a = row + static_cast<size_t>(x) * L;
+    for (int c = C; c < L; ++c)
+    {
+      a[c] = 0.0f; // the lane past the colours (alpha when NC == 4) stays zero
+    }
+    if (vtkBloomBrightPassIsZero<C>(a, Mode, p.Threshold, p.Knee, p.ClampLuminance))
+    {
+      for (int c = 0; c < C; ++c)
+      {
+        a[c] = 0.0f;
+      }
+      continue;
+    }
+    vtkBloomMapNonFinite<C>(a, ceiling);
+    vtkBloomBrightPass<C>(a, Mode, p.Threshold, p.Knee, p.ClampLuminance);
+    bool nonzero = false;
+    for (int c = 0; c < C; ++c)
+    {
+      nonzero |= a[c] != 0.0f;
+    }
+    if (nonzero)
+    {
+      lo = std::min(lo, x);
+      hi = x + 1;
+    }
+  }
+}
+
 // Pass 1: level 0 = threshold(bilinear(input)), one read of the input, fused per level-0 row:
 // the y fetch combines whole input rows (flat), the x fetch gathers C colours into L lanes, and
 // the bright pass runs in float, its full formula only where vtkBloomBrightPassIsZero cannot
@@ -676,7 +716,6 @@ template <typename T, int NC, int C>
 BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int width, int height,
   const Op& rx, const Op& ry, Plane& level)
 {
-  constexpr int L = Lanes<C>();
   const int w0 = level.W, h0 = level.H;
   std::vector<int> rowLo(h0), rowHi(h0);
   std::vector<char> special(h0, 0);
@@ -736,38 +775,9 @@ BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int
         {
           FetchX<NC, C, 0>(rx, line, w0, out);
         }
-        int lo = w0, hi = 0;
-        for (int x = 0; x < w0; ++x)
-        {
-          float* a = out + static_cast<size_t>(x) * L;
-          for (int c = C; c < L; ++c)
-          {
-            a[c] = 0.0f; // the lane past the colours (alpha when NC == 4) stays zero
-          }
-          if (vtkBloomBrightPassIsZero<C>(
-                a, p.ThresholdMode, p.Threshold, p.Knee, p.ClampLuminance))
-          {
-            for (int c = 0; c < C; ++c)
-            {
-              a[c] = 0.0f;
-            }
-            continue;
-          }
-          vtkBloomMapNonFinite<C>(a, ceiling);
-          vtkBloomBrightPass<C>(a, p.ThresholdMode, p.Threshold, p.Knee, p.ClampLuminance);
-          bool nonzero = false;
-          for (int c = 0; c < C; ++c)
-          {
-            nonzero |= a[c] != 0.0f;
-          }
-          if (nonzero)
-          {
-            lo = std::min(lo, x);
-            hi = x + 1;
-          }
-        }
-        rowLo[j] = lo;
-        rowHi[j] = hi;
+        vtkBloomWithThresholdMode(p.ThresholdMode,
+          [&](auto mode)
+          { ThresholdRow<C, decltype(mode)::value>(p, ceiling, out, w0, rowLo[j], rowHi[j]); });
       }
     });
   BrightResult result;

@@ -239,24 +239,9 @@ template <int Colours, typename T>
 vtkIdType CountRow(
   const T* row, int n, int nc, int mode, double threshold, double knee, double clampLuminance)
 {
-  switch (mode)
-  {
-    case vtkImageBloomThreshold::SMOOTHSTEP_KNEE:
-      return CountRow<Colours, vtkImageBloomThreshold::SMOOTHSTEP_KNEE>(
-        row, n, nc, threshold, knee, clampLuminance);
-    case vtkImageBloomThreshold::HARD_LUMINANCE:
-      return CountRow<Colours, vtkImageBloomThreshold::HARD_LUMINANCE>(
-        row, n, nc, threshold, knee, clampLuminance);
-    case vtkImageBloomThreshold::QUADRATIC_KNEE:
-      return CountRow<Colours, vtkImageBloomThreshold::QUADRATIC_KNEE>(
-        row, n, nc, threshold, knee, clampLuminance);
-    case vtkImageBloomThreshold::PER_CHANNEL:
-      return CountRow<Colours, vtkImageBloomThreshold::PER_CHANNEL>(
-        row, n, nc, threshold, knee, clampLuminance);
-    default:
-      return CountRow<Colours, vtkImageBloomThreshold::NONE>(
-        row, n, nc, threshold, knee, clampLuminance);
-  }
+  return vtkBloomWithThresholdMode(mode,
+    [&](auto m)
+    { return CountRow<Colours, decltype(m)::value>(row, n, nc, threshold, knee, clampLuminance); });
 }
 
 template <typename T>
