@@ -313,9 +313,14 @@ struct RingScratch
   std::vector<float> Row, Row2;
 };
 
-// Rows per task of the separable passes: large enough that the rows a task computes twice (the
-// y support at its ends) are few, small enough for both threads to share a level.
-const int SeparableGrain = 32;
+// Rows per task of the streaming passes over `rows` output rows: large, because a task first
+// computes the x-passed rows its first output row needs (the y support, 12 for a 13-tap blur)
+// again; about two tasks per thread, so that the threads still share a level; at least 32.
+int RowGrain(int rows)
+{
+  const int tasks = 2 * std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  return std::min(std::max(rows / tasks, 32), 128);
+}
 
 // One term of a sum of separable operators.
 struct Term
@@ -338,7 +343,7 @@ void Separable(const Plane& src, const std::vector<Term>& terms, const Box& box,
   const size_t stride = static_cast<size_t>(box.X1 - box.X0) * C;
   const int n = static_cast<int>(stride);
   vtkSMPThreadLocal<RingScratch<C>> scratch;
-  vtkSMPTools::For(box.Y0, box.Y1, SeparableGrain,
+  vtkSMPTools::For(box.Y0, box.Y1, RowGrain(box.Y1 - box.Y0),
     [&](int begin, int end)
     {
       RingScratch<C>& local = scratch.Local();
@@ -997,7 +1002,7 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
     std::vector<RowRing<L>> Rings;
   };
   vtkSMPThreadLocal<Scratch> scratch;
-  vtkSMPTools::For(outExt[2], outExt[3] + 1, SeparableGrain,
+  vtkSMPTools::For(outExt[2], outExt[3] + 1, RowGrain(outExt[3] - outExt[2] + 1),
     [&](int begin, int end)
     {
       Scratch& local = scratch.Local();
@@ -1283,7 +1288,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
         const int n = static_cast<int>(stride);
         const Plane* below = up ? accPlane[i + 1] : nullptr;
         vtkSMPThreadLocal<RingScratch<L>> scratch;
-        vtkSMPTools::For(box.Y0, box.Y1, SeparableGrain,
+        vtkSMPTools::For(box.Y0, box.Y1, RowGrain(box.Y1 - box.Y0),
           [&](int begin, int end)
           {
             RingScratch<L>& local = scratch.Local();
