@@ -744,6 +744,7 @@ BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int
         const int f0 = ry.First[j], f1 = ry.First[j] + ry.Width;
         rowLo[j] = w0;
         rowHi[j] = 0;
+        bool finite = false; // the fetched rows are known to hold no NaN or Inf
         if (decidable && f0 == r0 && f1 == r1)
         {
           const RowBounds bounds = ScanRows<T, NC, C>(base, inStride, width, r0, r1);
@@ -753,17 +754,24 @@ BrightResult BrightPass(const vtkBloomFastChainParameters& p, const T* base, int
             dark[j] = 1; // not fetched (ZeroDarkRows zeroes what a later pass reads)
             continue;
           }
+          finite = !bounds.NonFinite;
         }
         else
         {
           special[j] = ScanRows<T, NC, C>(base, inStride, width, r0, r1).Special;
-          if (decidable && RowsAreDark(ScanRows<T, NC, C>(base, inStride, width, f0, f1), p))
+          if (decidable)
           {
-            dark[j] = 1;
-            continue;
+            const RowBounds fetched = ScanRows<T, NC, C>(base, inStride, width, f0, f1);
+            if (RowsAreDark(fetched, p))
+            {
+              dark[j] = 1;
+              continue;
+            }
+            finite = !fetched.NonFinite;
           }
         }
-        if (p.SanitizeNonFinite)
+        // Sanitizing leaves finite samples as they are: rows without NaN or Inf skip it.
+        if (p.SanitizeNonFinite && !finite)
         {
           CombineRows<T, true>(ry, j, base, inStride, inStride, line);
         }
