@@ -200,15 +200,22 @@ void Reach(const Op& o, int lo, int hi, int& jlo, int& jhi)
   }
 }
 
-Box ReachBox(const Op& ox, const Op& oy, const Box& in)
+// An interval map (Reach or Needs) applied to each axis of a box; an empty box stays empty.
+template <typename Map>
+Box PerAxis(Map map, const Op& ox, const Op& oy, const Box& box)
 {
   Box out;
-  if (!in.Empty())
+  if (!box.Empty())
   {
-    Reach(ox, in.X0, in.X1, out.X0, out.X1);
-    Reach(oy, in.Y0, in.Y1, out.Y0, out.Y1);
+    map(ox, box.X0, box.X1, out.X0, out.X1);
+    map(oy, box.Y0, box.Y1, out.Y0, out.Y1);
   }
   return out;
+}
+
+Box ReachBox(const Op& ox, const Op& oy, const Box& in)
+{
+  return PerAxis(Reach, ox, oy, in);
 }
 
 // Inputs read by outputs [jlo, jhi).
@@ -230,13 +237,7 @@ void Needs(const Op& o, int jlo, int jhi, int& lo, int& hi)
 // The samples that the outputs in `box` read.
 Box NeedsBox(const Op& ox, const Op& oy, const Box& box)
 {
-  Box read;
-  if (!box.Empty())
-  {
-    Needs(ox, box.X0, box.X1, read.X0, read.X1);
-    Needs(oy, box.Y0, box.Y1, read.Y0, read.Y1);
-  }
-  return read;
+  return PerAxis(Needs, ox, oy, box);
 }
 
 // The samples that the outputs reaching from `region` read: what must be defined (zero where

@@ -15,8 +15,9 @@
  * 2. Pyramid: each level from the level above, over the region its support can reach.
  * 3. Blur fused with the upsample-accumulate: acc_i = up(acc_{i+1}) + w_i blur(level_i), one
  *    output row at a time (CASCADE), into a plane of its own; DIRECT blurs each level into its
- *    own plane. Separable passes stream: each thread keeps the x-passed source rows it needs
- *    in a ring of a few rows (terms that shrink the image run y first).
+ *    own plane. Separable passes stream: blurs and downsamples run y first (the y operator
+ *    combines source rows into one line, the x operator runs on it); upsamples keep the
+ *    x-passed source rows they need in a ring of a few rows.
  * 4. Composite fused with the last upsample: each output row interpolates its bloom row from
  *    acc_0 (CASCADE) or from every weighted level (DIRECT) and writes
  *    keep * in + (S t bloom + 0). Adding +0 makes every zero bloom term +0, so the result does

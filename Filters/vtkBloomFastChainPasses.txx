@@ -310,8 +310,26 @@ template <int C>
 struct RingScratch
 {
   std::vector<RowRing<C>> Rings;
-  std::vector<float> Row, Row2;
+  std::vector<float> Row, Row2, Line;
 };
+
+// Output row j of (oy ox) src over columns [x0, x1), y first: oy combines the source rows over
+// the columns ox reads (one flat pass), and ox runs on that one line. For an operator that keeps
+// or shrinks the size this is no more work than x first, and it needs no ring, so a task does
+// not recompute the rows its first output row needs (oy's support, which a wide blur makes
+// long).
+template <int C>
+void YThenX(const Op& ox, const Op& oy, const Plane& src, int j, int x0, int x1,
+  std::vector<float>& line, float* out)
+{
+  int c0, c1;
+  Needs(ox, x0, x1, c0, c1);
+  line.resize(static_cast<size_t>(c1 - c0) * C);
+  RowY(
+    oy, j, [&](int r) { return src.Row(r) + c0 * C; }, (c1 - c0) * C, line.data());
+  Saturate(line.data(), line.size());
+  RowX<C>(ox, line.data(), c0, out, x0, x1);
+}
 
 // Rows per task of the streaming passes over `rows` output rows: large, because a task first
 // computes the x-passed rows its first output row needs (the y support, 12 for a 13-tap blur)
@@ -330,9 +348,9 @@ struct Term
 };
 
 // dst over `box` = sum_t Weight_t Y_t X_t src, term by term in order (saturated after each),
-// in one sweep over the output rows. A term that shrinks rows runs y first (one flat pass over
-// the source rows it reads, then the x operator on one row), so the x operator, the costly
-// per-sample one, runs on the output rows only; other terms run x first through a ring.
+// in one sweep over the output rows. A term that keeps or shrinks the number of rows runs y
+// first (YThenX), so the x operator, the costly per-sample one, runs on the output rows only;
+// a term that enlarges it (an upsample) runs x first through a ring, on the fewer source rows.
 template <int C>
 void Separable(const Plane& src, const std::vector<Term>& terms, const Box& box, Plane& dst)
 {
@@ -360,16 +378,9 @@ void Separable(const Plane& src, const std::vector<Term>& terms, const Box& box,
         for (size_t t = 0; t < terms.size(); ++t)
         {
           const Term& term = terms[t];
-          if (term.Y.Out < term.Y.In)
+          if (term.Y.Out <= term.Y.In)
           {
-            int c0, c1;
-            Needs(term.X, box.X0, box.X1, c0, c1);
-            local.Row2.resize(static_cast<size_t>(c1 - c0) * C);
-            float* line = local.Row2.data();
-            RowY(
-              term.Y, j, [&](int r) { return src.Row(r) + c0 * C; }, (c1 - c0) * C, line);
-            Saturate(line, local.Row2.size());
-            RowX<C>(term.X, line, c0, row, box.X0, box.X1);
+            YThenX<C>(term.X, term.Y, src, j, box.X0, box.X1, local.Line, row);
           }
           else
           {
@@ -1305,7 +1316,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
             local.Row2.resize(stride);
             RowRing<L>& blurRing = local.Rings[0];
             RowRing<L>& upRing = local.Rings[1];
-            blurRing.Reset(&level, blurred ? &bx : nullptr, box.X0, box.X1, by.Width);
+            blurRing.Reset(&level, nullptr, box.X0, box.X1, 1); // level i's own rows
             if (up)
             {
               upRing.Reset(below, &ux, box.X0, box.X1, uy.Width);
@@ -1320,7 +1331,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
               {
                 if (blurred)
                 {
-                  RowY(by, j, blurRing.Rows(), n, brow);
+                  YThenX<L>(bx, by, level, j, box.X0, box.X1, local.Line, brow);
                 }
                 else
                 {
