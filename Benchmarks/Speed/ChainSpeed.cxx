@@ -548,6 +548,9 @@ int main(int argc, char** argv)
     }
     reg("bloom.gaussian", BM_Bloom, std::string("gaussian"), s, -1.0, true, false,
       vtkImageBloom::FAST, true);
+    // Wide blurs at full resolution: the preset that found the ring's recomputed support rows.
+    reg("bloom.ping-pong", BM_Bloom, std::string("ping-pong"), s, -1.0, true, false,
+      vtkImageBloom::FAST, true);
     reg("bloom.webgpu-market.statistics", BM_Bloom, std::string("webgpu-market"), s, -1.0, true,
       true, vtkImageBloom::FAST, true);
     reg("stockvtk.gaussian", BM_StockVTK, s);
