@@ -259,7 +259,6 @@ template <int C>
 class RowRing
 {
 public:
-  // Without an operator the ring hands out the source's own rows.
   void Reset(const Plane* src, const Op* ox, int x0, int x1, int slots)
   {
     this->Src = src;
@@ -267,19 +266,12 @@ public:
     this->X0 = x0;
     this->X1 = x1;
     this->Stride = static_cast<size_t>(x1 - x0) * C;
-    if (ox)
-    {
-      this->Data.resize(this->Stride * slots);
-      this->Held.assign(slots, -1);
-    }
+    this->Data.resize(this->Stride * slots);
+    this->Held.assign(slots, -1);
   }
 
   const float* Row(int r)
   {
-    if (!this->X)
-    {
-      return this->Src->Row(r) + static_cast<size_t>(this->X0) * C;
-    }
     const size_t slot = static_cast<size_t>(r) % this->Held.size();
     float* row = this->Data.data() + slot * this->Stride;
     if (this->Held[slot] != r)
@@ -369,7 +361,10 @@ void Separable(const Plane& src, const std::vector<Term>& terms, const Box& box,
       local.Row.resize(stride);
       for (size_t t = 0; t < terms.size(); ++t)
       {
-        local.Rings[t].Reset(&src, &terms[t].X, box.X0, box.X1, terms[t].Y.Width);
+        if (terms[t].Y.Out > terms[t].Y.In) // the terms that run x first (see below)
+        {
+          local.Rings[t].Reset(&src, &terms[t].X, box.X0, box.X1, terms[t].Y.Width);
+        }
       }
       float* __restrict row = local.Row.data();
       for (int j = begin; j < end; ++j)
@@ -1311,12 +1306,10 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
           [&](int begin, int end)
           {
             RingScratch<L>& local = scratch.Local();
-            local.Rings.resize(2);
+            local.Rings.resize(1);
             local.Row.resize(stride);
             local.Row2.resize(stride);
-            RowRing<L>& blurRing = local.Rings[0];
-            RowRing<L>& upRing = local.Rings[1];
-            blurRing.Reset(&level, nullptr, box.X0, box.X1, 1); // level i's own rows
+            RowRing<L>& upRing = local.Rings[0];
             if (up)
             {
               upRing.Reset(below, &ux, box.X0, box.X1, uy.Width);
@@ -1335,7 +1328,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
                 }
                 else
                 {
-                  b = blurRing.Row(j); // level i's own row
+                  b = level.Row(j) + box.X0 * L; // level i's own row
                 }
               }
               if (up)
