@@ -323,9 +323,10 @@ void YThenX(const Op& ox, const Op& oy, const Plane& src, int j, int x0, int x1,
   RowX<C>(ox, line.data(), c0, out, x0, x1);
 }
 
-// Rows per task of the streaming passes over `rows` output rows: large, because a task first
-// computes the x-passed rows its first output row needs (the y support, 12 for a 13-tap blur)
-// again; about two tasks per thread, so that the threads still share a level; at least 32.
+// Rows per task of the streaming passes over `rows` output rows: about two tasks per thread,
+// so that the threads share a level, between 32 and 128 rows. Long tasks matter where a pass
+// runs x first through a ring (upsamples, the composite): each task first computes again the
+// source rows its first output row needs.
 int RowGrain(int rows)
 {
   const int tasks = 2 * std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
@@ -575,8 +576,7 @@ void ScanRow<float, 4>(
   {
     for (int v = 0; v < NV; ++v)
     {
-      FloatV x;
-      std::memcpy(&x, row + static_cast<size_t>(k) * 16 + v * VectorFloats, sizeof(x));
+      const FloatV x = LoadV(row + static_cast<size_t>(k) * 16 + v * VectorFloats);
       IntV u;
       std::memcpy(&u, &x, sizeof(u));
       const IntV a = u & absMask;
@@ -1003,13 +1003,13 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
     stFlat[q] = c < C ? st[c] : 0.0f;
     colour[q] = c < C;
   }
-  // Each source's rows are interpolated in x once per task, through a ring, and the y pass
-  // combines them; tasks are long so that few rows are interpolated twice.
   // Rows of a large float output without bloom whose result is the input (keep 1, no -0, NaN
   // or Inf) are streamed from it (StreamCopy).
   const bool stream = std::is_same<T, float>::value &&
     static_cast<size_t>(outW) * (outExt[3] - outExt[2] + 1) * NC * sizeof(T) >= StreamingBytes;
   const bool copyIsComposite = keep == T(1) && clean;
+  // Each source's rows are interpolated in x once per task, through a ring, and the y pass
+  // combines them.
   struct Scratch
   {
     std::vector<float> Bloom, YRow;
