@@ -1,16 +1,20 @@
-// Frame time of an example scene with the plain render steps or with vtkBloomPass, for the
-// benchmark executables (BloomPassFrameTime and the GPU rows of BloomChainSpeed). Frames with
-// and without bloom are meant to be interleaved by the caller, so machine noise hits both alike.
+// Frame time of an example scene with the plain render steps, with vtkBloomPass, or with the
+// least any HDR post-process does (the scene into a float target, then one full-screen copy to
+// the window: VTK's own vtkFramebufferPass, at the precision of the bloom pass's scene target),
+// for the benchmark executables (BloomPassFrameTime and the GPU rows of BloomChainSpeed). The
+// caller interleaves the kinds of frame, so machine noise hits them alike.
 #ifndef vtkBloomFrameTimer_h
 #define vtkBloomFrameTimer_h
 
 #include "vtkBloomExampleScenes.h"
 #include "vtkBloomPass.h"
 #include "vtkCamera.h"
+#include "vtkFramebufferPass.h"
 #include "vtkNew.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkTextureObject.h"
 
 #include <algorithm>
 #include <chrono>
@@ -20,6 +24,13 @@
 class vtkBloomFrameTimer
 {
 public:
+  enum Kind
+  {
+    PLAIN,      ///< the render steps into the window
+    FLOAT_COPY, ///< the render steps into a float target, copied to the window
+    BLOOM       ///< vtkBloomPass around the render steps
+  };
+
   /// An offscreen window of width x height showing `scene`; false for an unknown scene.
   bool Setup(const std::string& scene, int width, int height)
   {
@@ -28,15 +39,23 @@ public:
     this->Window->SetSize(width, height);
     this->Window->AddRenderer(this->Renderer);
     this->Bloom->SetDelegatePass(this->Steps);
-    return vtkBloomBuildExampleScene(scene, this->Renderer, this->Bloom);
+    this->FloatCopy->SetDelegatePass(this->Steps);
+    if (!vtkBloomBuildExampleScene(scene, this->Renderer, this->Bloom))
+    {
+      return false;
+    }
+    this->FloatCopy->SetColorFormat(this->Bloom->GetFloatPrecision() == vtkBloomPass::FLOAT32
+        ? vtkTextureObject::Float32
+        : vtkTextureObject::Float16);
+    return true;
   }
 
   /// Render one new frame (the camera moves a little, so nothing is cached) and wait for it;
   /// seconds.
-  double Frame(bool withBloom)
+  double Frame(Kind kind)
   {
-    this->Renderer->SetPass(
-      withBloom ? static_cast<vtkRenderPass*>(this->Bloom) : this->Steps.Get());
+    vtkRenderPass* passes[] = { this->Steps, this->FloatCopy, this->Bloom };
+    this->Renderer->SetPass(passes[kind]);
     this->Renderer->GetActiveCamera()->Azimuth(0.5);
     const auto start = std::chrono::steady_clock::now();
     this->Window->Render();
@@ -54,12 +73,19 @@ public:
     return v[v.size() / 2];
   }
 
-  ~vtkBloomFrameTimer() { this->Window->ReleaseGraphicsResources(this->Window); }
+  ~vtkBloomFrameTimer()
+  {
+    // The passes not set on the renderer last are not reached through the window.
+    this->FloatCopy->ReleaseGraphicsResources(this->Window);
+    this->Bloom->ReleaseGraphicsResources(this->Window);
+    this->Window->ReleaseGraphicsResources(this->Window);
+  }
 
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkBloomPass> Bloom;
   vtkNew<vtkRenderStepsPass> Steps;
+  vtkNew<vtkFramebufferPass> FloatCopy;
 };
 
 #endif
