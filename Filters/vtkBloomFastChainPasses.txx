@@ -305,17 +305,25 @@ struct RingScratch
   std::vector<float> Row, Row2, Line;
 };
 
+// The source columns [C0, C1) that outputs [x0, x1) of an x operator read: the same for every
+// row of a pass, so a pass finds them once (Needs walks the operator's rows).
+struct Columns
+{
+  int C0 = 0, C1 = 0;
+  Columns() = default;
+  Columns(const Op& ox, int x0, int x1) { Needs(ox, x0, x1, this->C0, this->C1); }
+};
+
 // Output row j of (oy ox) src over columns [x0, x1), y first: oy combines the source rows over
-// the columns ox reads (one flat pass), and ox runs on that one line. For an operator that keeps
-// or shrinks the size this is no more work than x first, and it needs no ring, so a task does
-// not recompute the rows its first output row needs (oy's support, which a wide blur makes
-// long).
+// the columns ox reads (`read`, the Columns of [x0, x1)) in one flat pass, and ox runs on that
+// one line. For an operator that keeps or shrinks the size this is no more work than x first,
+// and it needs no ring, so a task does not recompute the rows its first output row needs (oy's
+// support, which a wide blur makes long).
 template <int C>
 void YThenX(const Op& ox, const Op& oy, const Plane& src, int j, int x0, int x1,
-  std::vector<float>& line, float* out)
+  const Columns& read, std::vector<float>& line, float* out)
 {
-  int c0, c1;
-  Needs(ox, x0, x1, c0, c1);
+  const int c0 = read.C0, c1 = read.C1;
   line.resize(static_cast<size_t>(c1 - c0) * C);
   RowY(
     oy, j, [&](int r) { return src.Row(r) + c0 * C; }, (c1 - c0) * C, line.data());
@@ -353,6 +361,11 @@ void Separable(const Plane& src, const std::vector<Term>& terms, const Box& box,
   }
   const size_t stride = static_cast<size_t>(box.X1 - box.X0) * C;
   const int n = static_cast<int>(stride);
+  std::vector<Columns> read;
+  for (const Term& term : terms)
+  {
+    read.emplace_back(term.X, box.X0, box.X1);
+  }
   vtkSMPThreadLocal<RingScratch<C>> scratch;
   vtkSMPTools::For(box.Y0, box.Y1, RowGrain(box.Y1 - box.Y0),
     [&](int begin, int end)
@@ -376,7 +389,7 @@ void Separable(const Plane& src, const std::vector<Term>& terms, const Box& box,
           const Term& term = terms[t];
           if (term.Y.Out <= term.Y.In)
           {
-            YThenX<C>(term.X, term.Y, src, j, box.X0, box.X1, local.Line, row);
+            YThenX<C>(term.X, term.Y, src, j, box.X0, box.X1, read[t], local.Line, row);
           }
           else
           {
@@ -1301,6 +1314,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
         const size_t stride = static_cast<size_t>(box.X1 - box.X0) * L;
         const int n = static_cast<int>(stride);
         const Plane* below = up ? accPlane[i + 1] : nullptr;
+        const Columns read = blurred && w != 0.0f ? Columns(bx, box.X0, box.X1) : Columns();
         vtkSMPThreadLocal<RingScratch<L>> scratch;
         vtkSMPTools::For(box.Y0, box.Y1, RowGrain(box.Y1 - box.Y0),
           [&](int begin, int end)
@@ -1324,7 +1338,7 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
               {
                 if (blurred)
                 {
-                  YThenX<L>(bx, by, level, j, box.X0, box.X1, local.Line, brow);
+                  YThenX<L>(bx, by, level, j, box.X0, box.X1, read, local.Line, brow);
                 }
                 else
                 {
