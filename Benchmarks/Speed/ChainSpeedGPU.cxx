@@ -35,10 +35,11 @@ const int Height = 1080;
 
 struct GPURow
 {
-  double Plain = 0.0;
-  double FloatCopy = 0.0;
-  double Bloom = 0.0;
+  std::vector<double> Times[3]; ///< seconds per frame of each vtkBloomFrameTimer::Kind
   int Passes = 0;
+
+  /// Median frame time of a kind over every repetition of the row, in ms.
+  double Ms(int kind) const { return 1e3 * vtkBloomFrameTimer::Median(this->Times[kind]); }
 };
 std::map<std::string, GPURow> GPURows; // by row name
 std::string Backend;
@@ -58,7 +59,7 @@ void BM_GPUFrame(
   {
     timer.Bloom->GetParameters()->SetThreshold(1e30);
   }
-  std::vector<double> times[3];
+  GPURow& result = GPURows[row];
   const vtkBloomFrameTimer::Kind kinds[] = { vtkBloomFrameTimer::PLAIN,
     vtkBloomFrameTimer::FLOAT_COPY, vtkBloomFrameTimer::BLOOM };
   for (int warmUp = 0; warmUp < 2; ++warmUp) // shaders, targets and the chain are made here
@@ -85,19 +86,16 @@ void BM_GPUFrame(
   {
     for (int k = 0; k < 3; ++k)
     {
-      times[k].push_back(timer.Frame(kinds[k]));
+      result.Times[k].push_back(timer.Frame(kinds[k]));
     }
-    state.SetIterationTime(times[2].back());
+    state.SetIterationTime(result.Times[2].back());
   }
-  GPURow& result = GPURows[row];
-  result.Plain = 1e3 * vtkBloomFrameTimer::Median(times[0]);
-  result.FloatCopy = 1e3 * vtkBloomFrameTimer::Median(times[1]);
-  result.Bloom = 1e3 * vtkBloomFrameTimer::Median(times[2]);
   result.Passes = timer.Bloom->GetNumberOfPasses();
-  state.counters["without_ms"] = result.Plain;
-  state.counters["float_copy_ms"] = result.FloatCopy;
-  state.counters["with_ms"] = result.Bloom;
-  state.counters["ratio"] = result.Plain > 0.0 ? result.Bloom / result.Plain : 0.0;
+  const double plain = result.Ms(0);
+  state.counters["without_ms"] = plain;
+  state.counters["float_copy_ms"] = result.Ms(1);
+  state.counters["with_ms"] = result.Ms(2);
+  state.counters["ratio"] = plain > 0.0 ? result.Ms(2) / plain : 0.0;
   state.counters["passes"] = result.Passes;
 }
 }
@@ -139,8 +137,8 @@ extern "C" void vtkBloomPrintGPUSummary()
     return;
   }
   std::printf("\nGPU pass (%s), %dx%d, frames without bloom, into a float target copied to "
-              "the window (vtkFramebufferPass) and with vtkBloomPass interleaved; medians of 12 "
-              "frames each\n\n",
+              "the window (vtkFramebufferPass) and with vtkBloomPass interleaved; medians over 12 "
+              "frames of each kind per repetition, all repetitions\n\n",
     Backend.c_str(), Width, Height);
   std::printf("| scene | without bloom (ms) | float target + copy (ms) | with bloom (ms) | float "
               "target + copy / without | with / without | passes |\n");
@@ -148,9 +146,9 @@ extern "C" void vtkBloomPrintGPUSummary()
   for (const auto& r : GPURows)
   {
     const std::string scene = r.first.substr(4, r.first.find('/') - 4);
-    const double plain = r.second.Plain > 0.0 ? r.second.Plain : 1.0;
-    std::printf("| %s | %.1f | %.1f | %.1f | %.2fx | %.2fx | %d |\n", scene.c_str(), r.second.Plain,
-      r.second.FloatCopy, r.second.Bloom, r.second.FloatCopy / plain, r.second.Bloom / plain,
+    const double plain = r.second.Ms(0) > 0.0 ? r.second.Ms(0) : 1.0;
+    std::printf("| %s | %.1f | %.1f | %.1f | %.2fx | %.2fx | %d |\n", scene.c_str(), r.second.Ms(0),
+      r.second.Ms(1), r.second.Ms(2), r.second.Ms(1) / plain, r.second.Ms(2) / plain,
       r.second.Passes);
   }
 }
