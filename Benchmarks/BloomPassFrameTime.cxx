@@ -37,9 +37,9 @@ int main(int argc, char* argv[])
       }
     }
   }
-  const double plain = vtkBloomFrameTimer::Median(times[0]);
-  const double floatCopy = vtkBloomFrameTimer::Median(times[1]);
-  const double bloomed = vtkBloomFrameTimer::Median(times[2]);
+  const double plain = vtkBloomMedian(times[0]);
+  const double floatCopy = vtkBloomMedian(times[1]);
+  const double bloomed = vtkBloomMedian(times[2]);
   std::printf("| scene | size | without bloom | float target + copy | with bloom | float target "
               "+ copy / without | with / without | passes |\n|---|---|---|---|---|---|---|---|\n");
   std::printf("| %s | %dx%d | %.1f ms | %.1f ms | %.1f ms | %.2fx | %.2fx | %d |\n", scene.c_str(),

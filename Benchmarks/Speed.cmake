@@ -25,6 +25,7 @@ add_executable(BloomChainSpeed "${CMAKE_CURRENT_LIST_DIR}/Speed/ChainSpeed.cxx")
 target_link_libraries(BloomChainSpeed PRIVATE benchmark::benchmark VTKBloom::FiltersBloom
   VTK::ImagingMath VTK::ImagingGeneral VTK::ImagingCore VTK::CommonExecutionModel
   VTK::CommonDataModel VTK::CommonCore vtkbloom_build_flags)
+target_include_directories(BloomChainSpeed PRIVATE "${CMAKE_CURRENT_LIST_DIR}")
 if (OpenCV_FOUND)
   target_compile_definitions(BloomChainSpeed PRIVATE VTKBLOOM_HAVE_OPENCV=1)
   target_include_directories(BloomChainSpeed SYSTEM PRIVATE ${OpenCV_INCLUDE_DIRS})
@@ -37,7 +38,6 @@ endif ()
 # vtkBloomRegisterGPUBenchmarks() is linked in when it exists.
 if (EXISTS "${CMAKE_CURRENT_LIST_DIR}/Speed/ChainSpeedGPU.cxx" AND TARGET VTKBloom::RenderingBloom)
   target_sources(BloomChainSpeed PRIVATE "${CMAKE_CURRENT_LIST_DIR}/Speed/ChainSpeedGPU.cxx")
-  target_include_directories(BloomChainSpeed PRIVATE "${CMAKE_CURRENT_LIST_DIR}")
   target_link_libraries(BloomChainSpeed PRIVATE VTKBloom::RenderingBloom vtkbloom_scenes
     VTK::RenderingOpenGL2 VTK::RenderingCore)
 endif ()

@@ -7,6 +7,7 @@
 #define vtkBloomFrameTimer_h
 
 #include "vtkBloomExampleScenes.h"
+#include "vtkBloomMedian.h"
 #include "vtkBloomPass.h"
 #include "vtkCamera.h"
 #include "vtkFramebufferPass.h"
@@ -16,7 +17,6 @@
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
 
-#include <algorithm>
 #include <chrono>
 #include <string>
 #include <vector>
@@ -61,16 +61,6 @@ public:
     this->Window->Render();
     this->Window->WaitForCompletion();
     return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  }
-
-  static double Median(std::vector<double> v)
-  {
-    if (v.empty())
-    {
-      return 0.0;
-    }
-    std::sort(v.begin(), v.end());
-    return v[v.size() / 2];
   }
 
   ~vtkBloomFrameTimer()

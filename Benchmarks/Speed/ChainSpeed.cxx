@@ -7,6 +7,7 @@
 // executable: the peak of live heap bytes during a first, cold run of the chain minus the bytes
 // live before it, minus the one output frame. It counts every buffer the chain allocates,
 // VTK arrays and OpenCV matrices included.
+#include "vtkBloomMedian.h"
 #include "vtkImageBloom.h"
 
 #include "vtkImageData.h"
@@ -233,17 +234,7 @@ struct Row
   /// The median over the repetitions (0 when the row did not run): with repetitions
   /// interleaved across rows, a burst of load on a shared machine moves one sample of a row,
   /// not the row.
-  double Median() const
-  {
-    if (this->Ms.empty())
-    {
-      return 0.0;
-    }
-    std::vector<double> sorted = this->Ms;
-    std::sort(sorted.begin(), sorted.end());
-    const size_t n = sorted.size();
-    return n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-  }
+  double Median() const { return vtkBloomMedian(this->Ms); }
 };
 std::map<std::string, Row> Results;
 

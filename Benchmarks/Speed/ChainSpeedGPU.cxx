@@ -39,7 +39,7 @@ struct GPURow
   int Passes = 0;
 
   /// Median frame time of a kind over every repetition of the row, in ms.
-  double Ms(int kind) const { return 1e3 * vtkBloomFrameTimer::Median(this->Times[kind]); }
+  double Ms(int kind) const { return 1e3 * vtkBloomMedian(this->Times[kind]); }
 };
 std::map<std::string, GPURow> GPURows; // by row name
 std::string Backend;
