@@ -36,15 +36,19 @@
  * data is validated, so an intact part of a multi-part file whose other parts are damaged or
  * truncated can still be read; the headers of all parts must be valid.
  *
- * Robustness. Damaged files must fail cleanly. The header of every part is parsed first with
- * the OpenEXR core C library in strict mode (it was hardened by fuzzing), and the chunk table
- * of the selected part is validated (every chunk where the data window puts it, inside the
- * file) before any pixel memory is allocated. The core library then reads and decompresses
- * each chunk, and the reader unpacks it itself after checking that its size matches the
- * channel layout. Luminance/chroma files go through the same validation and decompression
- * before Imf::RgbaInputFile reads them. Images whose decoded size exceeds MaximumImageBytes
- * are refused, as are chunks whose decompressed size does; only regular files are opened.
- * Channels other than luminance/chroma must not be subsampled.
+ * Robustness. Damaged and hostile files must fail cleanly, in time and memory bounded by what
+ * the file can actually hold. The header of every part is parsed first with the OpenEXR core C
+ * library in strict mode (it was hardened by fuzzing). Images above MaximumImagePixels or
+ * MaximumImageBytes are refused. Then the chunk table of the selected part is validated before
+ * any pixel memory is allocated: every chunk must lie where the data window puts it and inside
+ * the file, and its compressed bytes must be able to decode to the size the header claims (no
+ * OpenEXR compression expands a byte into more than a known bound, 1032 for deflate), so a
+ * few-hundred-byte file that claims gigabytes is refused at once. The core library then reads
+ * and decompresses the chunks on several threads (vtkSMPTools), and the reader unpacks each
+ * into the output after checking that its size matches the channel layout; the output is the
+ * only full-size buffer. Luminance/chroma files go through the same validation and
+ * decompression before Imf::RgbaInputFile reads them. Only regular files are opened. Channels
+ * other than luminance/chroma must not be subsampled.
  * Every failure is reported with vtkErrorMacro (so an ErrorEvent observer sees it), sets the
  * error code (GetErrorCode(): vtkErrorCode::FileNotFoundError, FileFormatError, ...) and
  * leaves the output empty: no point data and an empty extent.
@@ -124,6 +128,17 @@ public:
   vtkGetMacro(MaximumImageBytes, vtkTypeUInt64);
   ///@}
 
+  ///@{
+  /**
+   * Largest image, in pixels of the data window, that the reader agrees to read. Larger
+   * images are refused, before anything is allocated, with an error that names this limit;
+   * raise it explicitly for giant legitimate files. Default 2^28 (268,435,456 pixels: 16384 x
+   * 16384).
+   */
+  vtkSetMacro(MaximumImagePixels, vtkTypeUInt64);
+  vtkGetMacro(MaximumImagePixels, vtkTypeUInt64);
+  ///@}
+
   /**
    * Number of parts in the file, 0 if it could not be read. Valid after UpdateInformation().
    */
@@ -177,6 +192,7 @@ protected:
   char* PartName;
   char* Layer;
   vtkTypeUInt64 MaximumImageBytes;
+  vtkTypeUInt64 MaximumImagePixels;
 
   int SelectedPartIndex;
   int DataWindow[4];
