@@ -5,9 +5,15 @@
 #include "vtkSMPThreadLocal.h"
 #include "vtkSMPTools.h"
 
+#include <ImfFrameBuffer.h>
+#include <ImfHeader.h>
+#include <ImfInputPart.h>
+#include <ImfMultiPartInputFile.h>
 #include <ImfRgba.h>
 #include <ImfRgbaFile.h>
+#include <ImfThreading.h>
 
+#include <algorithm>
 #include <atomic>
 #include <cstdint>
 #include <cstring>
@@ -406,4 +412,64 @@ bool vtkOpenEXRConvertLuminanceChroma(const std::string& fileName, const vtkOpen
   {
     return failure.Set(vtkErrorCode::UnknownError, "unknown exception from OpenEXR");
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenEXRDecodeWithImf(const std::string& fileName, const vtkOpenEXRHeader& header,
+  void* output, bool unsignedOutput, vtkOpenEXRFailure& failure)
+{
+  try
+  {
+    Imf::MultiPartInputFile file(fileName.c_str(), vtkOpenEXREnsureThreadPool());
+    Imf::InputPart part(file, header.Part);
+    const Imath::Box2i window = part.header().dataWindow();
+    if (window.min.x != header.DataWindow[0] || window.max.x != header.DataWindow[1] ||
+      window.min.y != header.DataWindow[2] || window.max.y != header.DataWindow[3])
+    {
+      return failure.Set(vtkErrorCode::FileFormatError, "inconsistent data window");
+    }
+    const size_t components = static_cast<size_t>(header.NumberOfComponents);
+    const size_t xStride = 4 * components;
+    const size_t yStride = xStride * static_cast<size_t>(header.Width);
+    const Imf::PixelType type = unsignedOutput ? Imf::UINT : Imf::FLOAT;
+    Imf::FrameBuffer frameBuffer;
+    for (size_t k = 0; k < components; ++k)
+    {
+      // Slice::Make maps absolute pixel coordinates onto the output without forming an
+      // out-of-range pointer ourselves.
+      frameBuffer.insert(header.Channels[header.Decoded[k]].Name,
+        Imf::Slice::Make(type, static_cast<char*>(output) + 4 * k, window, xStride, yStride));
+    }
+    part.setFrameBuffer(frameBuffer);
+    part.readPixels(window.min.y, window.max.y);
+    return true;
+  }
+  catch (const std::bad_alloc&)
+  {
+    return failure.Set(vtkErrorCode::UnknownError, "out of memory");
+  }
+  catch (const std::exception& e)
+  {
+    return failure.Set(vtkErrorCode::FileFormatError, e.what());
+  }
+  catch (...)
+  {
+    return failure.Set(vtkErrorCode::UnknownError, "unknown exception from OpenEXR");
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkOpenEXREnsureThreadPool()
+{
+  // OpenEXR's C++ library runs its per-file tasks on one global pool, which has no threads
+  // unless an application asks for them. Raise it to the number of threads VTK would use (it
+  // is never lowered, so an application's own larger setting stands).
+  const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  static std::mutex lock;
+  std::lock_guard<std::mutex> guard(lock);
+  if (threads > 1 && Imf::globalThreadCount() < threads)
+  {
+    Imf::setGlobalThreadCount(threads);
+  }
+  return threads > 1 ? threads : 0;
 }

@@ -33,5 +33,19 @@ bool vtkOpenEXRDecodeChunks(vtkOpenEXRCoreFile& file, const vtkOpenEXRHeader& he
 bool vtkOpenEXRConvertLuminanceChroma(const std::string& fileName, const vtkOpenEXRHeader& header,
   float* output, vtkOpenEXRFailure& failure);
 
+/**
+ * DWAA and DWAB: OpenEXR 3.1's core library does not implement their decompression, so parts
+ * compressed with them are read by the C++ library (Imf::InputPart, on OpenEXR's thread pool),
+ * after vtkOpenEXRReadChunkTable() has validated the chunk table and the expansion bound.
+ */
+bool vtkOpenEXRDecodeWithImf(const std::string& fileName, const vtkOpenEXRHeader& header,
+  void* output, bool unsignedOutput, vtkOpenEXRFailure& failure);
+
+/**
+ * Make OpenEXR's global thread pool (C++ library) at least as large as the number of threads
+ * vtkSMPTools would use, and return the thread count to pass to its file classes (0: none).
+ */
+int vtkOpenEXREnsureThreadPool();
+
 #endif
 // VTK-HeaderTest-Exclude: vtkOpenEXRDecode.h

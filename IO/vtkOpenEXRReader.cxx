@@ -256,13 +256,23 @@ int vtkOpenEXRReader::RequestData(
   {
     if (header.LuminanceChroma)
     {
-      // Validate every chunk with the hardened decoder before the C++ library reads them.
-      if (vtkOpenEXRDecodeChunks(file, header, chunks, nullptr, false, this, failure))
+      // Validate every chunk with the hardened decoder before the C++ library reads them
+      // (DWA chunks only by the chunk table: the core library cannot decompress them).
+      const bool dwa =
+        header.Compression == EXR_COMPRESSION_DWAA || header.Compression == EXR_COMPRESSION_DWAB;
+      if (dwa || vtkOpenEXRDecodeChunks(file, header, chunks, nullptr, false, this, failure))
       {
         file.Close();
         vtkOpenEXRConvertLuminanceChroma(
           this->FileName, header, static_cast<float*>(scalars->GetVoidPointer(0)), failure);
       }
+    }
+    else if (header.Compression == EXR_COMPRESSION_DWAA ||
+      header.Compression == EXR_COMPRESSION_DWAB)
+    {
+      file.Close();
+      vtkOpenEXRDecodeWithImf(this->FileName, header, scalars->GetVoidPointer(0),
+        header.ScalarType == VTK_UNSIGNED_INT, failure);
     }
     else
     {

@@ -23,3 +23,9 @@ vtkbloom_add_gtest(TestOpenEXRDamaged
 foreach (test IN ITEMS TestOpenEXRReader TestOpenEXRWriter TestOpenEXRDamaged)
   target_include_directories(${test} PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/IO")
 endforeach ()
+
+# Hostile headers generated in the suite (Support/vtkBloomHostileEXR.cxx).
+vtkbloom_add_gtest(TestOpenEXRHostile
+  SOURCES IO/TestOpenEXRHostile.cxx
+  LIBRARIES ${vtkbloom_io_test_libraries})
+target_include_directories(TestOpenEXRHostile PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/IO")
