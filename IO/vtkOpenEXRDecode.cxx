@@ -1,4 +1,5 @@
 #include "vtkOpenEXRDecode.h"
+#include "vtkOpenEXRThreadPool.h"
 
 #include "vtkAlgorithm.h"
 #include "vtkErrorCode.h"
@@ -11,7 +12,6 @@
 #include <ImfMultiPartInputFile.h>
 #include <ImfRgba.h>
 #include <ImfRgbaFile.h>
-#include <ImfThreading.h>
 
 #include <algorithm>
 #include <atomic>
@@ -420,7 +420,7 @@ bool vtkOpenEXRDecodeWithImf(const std::string& fileName, const vtkOpenEXRHeader
 {
   try
   {
-    Imf::MultiPartInputFile file(fileName.c_str(), vtkOpenEXREnsureThreadPool());
+    Imf::MultiPartInputFile file(fileName.c_str(), vtkOpenEXRUseThreadPool(0));
     Imf::InputPart part(file, header.Part);
     const Imath::Box2i window = part.header().dataWindow();
     if (window.min.x != header.DataWindow[0] || window.max.x != header.DataWindow[1] ||
@@ -456,20 +456,4 @@ bool vtkOpenEXRDecodeWithImf(const std::string& fileName, const vtkOpenEXRHeader
   {
     return failure.Set(vtkErrorCode::UnknownError, "unknown exception from OpenEXR");
   }
-}
-
-//------------------------------------------------------------------------------
-int vtkOpenEXREnsureThreadPool()
-{
-  // OpenEXR's C++ library runs its per-file tasks on one global pool, which has no threads
-  // unless an application asks for them. Raise it to the number of threads VTK would use (it
-  // is never lowered, so an application's own larger setting stands).
-  const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
-  static std::mutex lock;
-  std::lock_guard<std::mutex> guard(lock);
-  if (threads > 1 && Imf::globalThreadCount() < threads)
-  {
-    Imf::setGlobalThreadCount(threads);
-  }
-  return threads > 1 ? threads : 0;
 }

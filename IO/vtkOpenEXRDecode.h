@@ -41,11 +41,5 @@ bool vtkOpenEXRConvertLuminanceChroma(const std::string& fileName, const vtkOpen
 bool vtkOpenEXRDecodeWithImf(const std::string& fileName, const vtkOpenEXRHeader& header,
   void* output, bool unsignedOutput, vtkOpenEXRFailure& failure);
 
-/**
- * Make OpenEXR's global thread pool (C++ library) at least as large as the number of threads
- * vtkSMPTools would use, and return the thread count to pass to its file classes (0: none).
- */
-int vtkOpenEXREnsureThreadPool();
-
 #endif
 // VTK-HeaderTest-Exclude: vtkOpenEXRDecode.h

@@ -4,10 +4,13 @@
 #include "vtkDataArray.h"
 #include "vtkDataArrayRange.h"
 #include "vtkErrorCode.h"
+#include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenEXRThreadPool.h"
 #include "vtkPointData.h"
+#include "vtkUnsignedIntArray.h"
 
 #include <Imath/half.h>
 #include <ImfChannelList.h>
@@ -182,6 +185,7 @@ vtkOpenEXRWriter::vtkOpenEXRWriter()
   , DisplayWindow{ 0, -1, 0, -1 }
   , Tiled(0)
   , TileSize{ 64, 64 }
+  , NumberOfThreads(0)
 {
 }
 
@@ -334,7 +338,12 @@ void vtkOpenEXRWriter::WriteData()
     std::vector<Imath::half> halves;
     std::vector<uint32_t> uints;
     const char* base = nullptr;
-    if (pixelType == Imf::UINT)
+    if (pixelType == Imf::UINT && vtkUnsignedIntArray::FastDownCast(scalars))
+    {
+      base = reinterpret_cast<const char*>(
+        vtkUnsignedIntArray::FastDownCast(scalars)->GetPointer(0));
+    }
+    else if (pixelType == Imf::UINT)
     {
       ConvertScalars(scalars, uints);
       base = reinterpret_cast<const char*>(uints.data());
@@ -343,6 +352,11 @@ void vtkOpenEXRWriter::WriteData()
     {
       ConvertScalars(scalars, halves);
       base = reinterpret_cast<const char*>(halves.data());
+    }
+    else if (vtkFloatArray* direct = vtkFloatArray::FastDownCast(scalars))
+    {
+      // Float to FLOAT is a copy of the bits: OpenEXR reads the array itself.
+      base = reinterpret_cast<const char*>(direct->GetPointer(0));
     }
     else
     {
@@ -387,15 +401,16 @@ void vtkOpenEXRWriter::WriteData()
     }
     {
       Imf::StdOFStream exrStream(stream, temporary.string().c_str());
+      const int threads = vtkOpenEXRUseThreadPool(this->NumberOfThreads);
       if (this->Tiled)
       {
-        Imf::TiledOutputFile out(exrStream, header);
+        Imf::TiledOutputFile out(exrStream, header, threads);
         out.setFrameBuffer(frameBuffer);
         out.writeTiles(0, out.numXTiles() - 1, 0, out.numYTiles() - 1);
       }
       else
       {
-        Imf::OutputFile out(exrStream, header);
+        Imf::OutputFile out(exrStream, header, threads);
         out.setFrameBuffer(frameBuffer);
         out.writePixels(static_cast<int>(height));
       }
@@ -459,4 +474,5 @@ void vtkOpenEXRWriter::PrintSelf(ostream& os, vtkIndent indent)
      << " " << this->DisplayWindow[2] << " " << this->DisplayWindow[3] << "\n";
   os << indent << "Tiled: " << (this->Tiled ? "On" : "Off") << "\n";
   os << indent << "TileSize: " << this->TileSize[0] << " " << this->TileSize[1] << "\n";
+  os << indent << "NumberOfThreads: " << this->NumberOfThreads << "\n";
 }

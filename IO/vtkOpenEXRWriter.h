@@ -24,6 +24,9 @@
  * truncated. Spacing and origin are not stored. The display window equals the data window
  * unless SetDisplayWindow() was given a non-empty window.
  *
+ * Speed. Float input written as FLOAT and unsigned int input are handed to OpenEXR without a
+ * copy, and chunks are compressed on several threads (NumberOfThreads).
+ *
  * Safety. The file is written to a new temporary file in the target's directory and renamed
  * over the target only once it is complete, so a failed write never leaves a truncated file
  * and never damages an existing one. Every failure is reported with vtkErrorMacro, sets the
@@ -139,6 +142,16 @@ public:
   vtkGetVector2Macro(TileSize, int);
   ///@}
 
+  ///@{
+  /**
+   * Threads that compress the file's chunks, through OpenEXR's global thread pool (which is
+   * raised to this size when smaller, never lowered). 0 (default): as many as vtkSMPTools
+   * uses; 1: compress on the calling thread. The file's bytes do not depend on it.
+   */
+  vtkSetClampMacro(NumberOfThreads, int, 0, VTK_INT_MAX);
+  vtkGetMacro(NumberOfThreads, int);
+  ///@}
+
   /**
    * Write the file. Returns 1 on success and 0 on failure (see GetErrorCode()).
    */
@@ -162,6 +175,7 @@ protected:
   int DisplayWindow[4];
   vtkTypeBool Tiled;
   int TileSize[2];
+  int NumberOfThreads;
 
 private:
   vtkOpenEXRWriter(const vtkOpenEXRWriter&) = delete;

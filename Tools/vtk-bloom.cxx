@@ -1,46 +1,42 @@
 // vtk-bloom: HDR bloom and Gaussian blur of OpenEXR images from the command line.
 //
 //   vtk-bloom image [--preset NAME] [options] IN.exr OUT.exr|OUT.png
+//   vtk-bloom image [options] IN.exr... -o OUTDIR     (batch: one output per input)
 //   vtk-bloom blur --radius R [--sigma S] [--border clamp|reflect|zero] IN.exr OUT.exr|OUT.png
+//   vtk-bloom render [options] SCENE OUT.exr|OUT.png
 //
 // .exr output is float32 RGBA, linear, with no tone mapping. .png output is tone-mapped
 // (exposure, ACES filmic fit, sRGB encoding) to opaque 8-bit RGB. Exit status: 0 on success, 1 when
-// reading, processing or writing fails, 2 for a usage error. An input is never overwritten.
+// reading, processing or writing fails (in batch mode: when any file failed), 2 for a usage
+// error. An input is never overwritten, and a batch never overwrites any existing file.
+//
+// The pieces: vtkBloomToolSupport (errors, arguments, progress), vtkBloomToolImageIO (read and
+// write), vtkBloomToolBatch (planning a batch, per-file reports, --stats JSON), and this file (the
+// commands).
 
 #include "vtkBloomKernels.h"
+#include "vtkBloomToolBatch.h"
+#include "vtkBloomToolImageIO.h"
+#include "vtkBloomToolSupport.h"
 #include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImagePyramidDown.h"
 #include "vtkImagePyramidUp.h"
 #include "vtkImageSeparableGaussian.h"
-#include "vtkOpenEXRReader.h"
-#include "vtkOpenEXRWriter.h"
 
 #include <vtkAlgorithm.h>
-#include <vtkCallbackCommand.h>
-#include <vtkCommand.h>
 #include <vtkImageAlgorithm.h>
 #include <vtkImageData.h>
 #include <vtkNew.h>
-#include <vtkPNGWriter.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
-#include <vtkUnsignedCharArray.h>
 
 #include <algorithm>
-#include <cerrno>
-#include <cmath>
-#include <cstdio>
-#include <cstdlib>
+#include <chrono>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <functional>
 #include <iostream>
-#include <map>
-#include <sstream>
 #include <string>
-#include <system_error>
 #include <unistd.h>
 #include <vector>
 
@@ -53,18 +49,23 @@
 #endif
 
 namespace fs = std::filesystem;
+using namespace vtkBloomTool;
 
 namespace
 {
 const char* const Usage = R"(usage:
   vtk-bloom image [--preset NAME] [options] IN.exr OUT.exr|OUT.png
+  vtk-bloom image [options] IN.exr... -o OUTDIR
   vtk-bloom blur --radius R [--sigma S] [--border clamp|reflect|zero] IN.exr OUT.exr|OUT.png
+  vtk-bloom blur --radius R [options] IN.exr... -o OUTDIR
   vtk-bloom render [--size WxH] [--precision 16|32] [--no-bloom] [options] SCENE OUT.exr|OUT.png
   vtk-bloom render --list
   vtk-bloom --help
 
 image: HDR bloom (vtkImageBloom). A preset is applied first; options then override it.
   --preset NAME          webgpu-market | mip-atlas | ping-pong | crt-halfres
+  --exact                the double-precision REFERENCE chain, bit for bit PRESETS.md's
+                         (default: the fused float32 FAST chain, within 1e-5 relative L2 of it)
   --threshold T          bright-pass threshold
   --knee K               soft knee relative to the threshold, 0..1
   --mode M               smoothstep | quadratic | hard | per-channel | none
@@ -83,12 +84,21 @@ image: HDR bloom (vtkImageBloom). A preset is applied first; options then overri
   --blur-spacing D       distance between blur taps, in level pixels
   --blur-iterations N    repeat the per-level blur N times
   --level-weights W,...  per-level weights, first level first
+  A frame with nothing above the threshold is written unchanged, without bloom work.
 
 blur: separable Gaussian (vtkImageSeparableGaussian), seed 004 semantics.
   --radius R             integer taps each side, 0..32 (0 is an exact copy)
   --sigma S              standard deviation in pixels (default R/2; 0 is an exact copy)
   --border B             clamp (default) | reflect | zero
   --kernel K             sampled (default) | integrated | discrete
+
+batch (image and blur): many inputs, one output directory.
+  -o OUTDIR              write OUTDIR/NAME.exr (or .png) for each input IN/NAME.exr; OUTDIR is
+                         created when missing. An output that exists is never overwritten: that
+                         file fails and the others go on. Exit status 1 when any file failed.
+  --format F             exr (default) | png: the outputs' format in batch mode
+  --stats FILE.json      write each file's outcome and bloom statistics (energy in and out,
+                         bright pixels, peak luminance, levels, whether the bloom was skipped)
 
 render: render an example emissive scene headless with the GPU pass (vtkBloomPass).
   --list                 print the scene names, one per line
@@ -100,6 +110,8 @@ render: render an example emissive scene headless with the GPU pass (vtkBloomPas
 common:
   --exposure E           exposure multiplier for .png output (default 1)
                          (.png is opaque RGB: premultiplied colour shown over black)
+  --max-pixels N         refuse inputs larger than N pixels (default 268435456, 16384 x 16384;
+                         suffixes K, M, G), before anything is allocated
   --quiet                no progress display
   --help                 this text
 
@@ -107,237 +119,15 @@ common:
 Exit status: 0 success, 1 failure, 2 usage error. An input file is never overwritten.
 )";
 
-// A usage error: message printed with the usage hint, exit status 2.
-struct UsageError
-{
-  std::string Message;
-};
-
-// A processing error: message printed, exit status 1.
-struct RunError
-{
-  std::string Message;
-};
-
-std::string Lower(std::string s)
-{
-  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return std::tolower(c); });
-  return s;
-}
-
-std::string Extension(const std::string& path)
-{
-  return Lower(fs::path(path).extension().string());
-}
-
-double ParseDouble(const std::string& option, const std::string& text)
-{
-  char* end = nullptr;
-  errno = 0;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || *end != '\0' || errno == ERANGE || !std::isfinite(value))
-  {
-    throw UsageError{ option + " expects a finite number, got '" + text + "'" };
-  }
-  return value;
-}
-
-int ParseInt(const std::string& option, const std::string& text, int lo, int hi)
-{
-  char* end = nullptr;
-  errno = 0;
-  const long value = std::strtol(text.c_str(), &end, 10);
-  if (text.empty() || *end != '\0' || errno == ERANGE || value < lo || value > hi)
-  {
-    throw UsageError{ option + " expects an integer in [" + std::to_string(lo) + ", " +
-      std::to_string(hi) + "], got '" + text + "'" };
-  }
-  return static_cast<int>(value);
-}
-
-std::vector<double> ParseList(const std::string& option, const std::string& text)
-{
-  std::vector<double> values;
-  std::stringstream stream(text);
-  std::string item;
-  while (std::getline(stream, item, ','))
-  {
-    values.push_back(ParseDouble(option, item));
-  }
-  if (values.empty())
-  {
-    throw UsageError{ option + " expects a comma-separated list of numbers" };
-  }
-  return values;
-}
-
-int ParseChoice(
-  const std::string& option, const std::string& text, const std::map<std::string, int>& choices)
-{
-  const auto it = choices.find(Lower(text));
-  if (it == choices.end())
-  {
-    std::string valid;
-    for (const auto& choice : choices)
-    {
-      valid += (valid.empty() ? "" : " | ") + choice.first;
-    }
-    throw UsageError{ option + " expects one of " + valid + ", got '" + text + "'" };
-  }
-  return it->second;
-}
-
-// Command-line arguments: options with values, flags, and positional arguments.
-class Arguments
-{
-public:
-  Arguments(int argc, char* argv[], int first, const std::vector<std::string>& flags)
-  {
-    for (int i = first; i < argc; ++i)
-    {
-      const std::string arg = argv[i];
-      if (arg.size() > 2 && arg.compare(0, 2, "--") == 0)
-      {
-        if (std::find(flags.begin(), flags.end(), arg) != flags.end())
-        {
-          this->Options[arg] = "";
-          continue;
-        }
-        if (i + 1 >= argc)
-        {
-          throw UsageError{ arg + " needs a value" };
-        }
-        this->Options[arg] = argv[++i];
-      }
-      else
-      {
-        this->Positional.push_back(arg);
-      }
-    }
-  }
-
-  // Visit a known option; everything not visited is reported as unknown.
-  bool Take(const std::string& name, std::string& value)
-  {
-    const auto it = this->Options.find(name);
-    if (it == this->Options.end())
-    {
-      return false;
-    }
-    value = it->second;
-    this->Options.erase(it);
-    return true;
-  }
-
-  void CheckAllTaken() const
-  {
-    if (!this->Options.empty())
-    {
-      throw UsageError{ "unknown option " + this->Options.begin()->first };
-    }
-  }
-
-  std::map<std::string, std::string> Options;
-  std::vector<std::string> Positional;
-};
-
-// Errors from VTK objects are collected here instead of going to the output window.
-struct ErrorCollector
-{
-  std::vector<std::string> Messages;
-
-  static void OnError(vtkObject*, unsigned long, void* clientData, void* callData)
-  {
-    auto* self = static_cast<ErrorCollector*>(clientData);
-    std::string text = callData ? static_cast<const char*>(callData) : "unknown error";
-    // Keep the message and drop VTK's "ERROR: In file, line N / Class (0x...): " prefix.
-    const auto pos = text.find("): ");
-    if (pos != std::string::npos)
-    {
-      text = text.substr(pos + 3);
-    }
-    while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
-    {
-      text.pop_back();
-    }
-    self->Messages.push_back(text);
-  }
-
-  void Watch(vtkObject* object)
-  {
-    vtkNew<vtkCallbackCommand> command;
-    command->SetCallback(&ErrorCollector::OnError);
-    command->SetClientData(this);
-    object->AddObserver(vtkCommand::ErrorEvent, command);
-  }
-
-  void ThrowIfAny(const std::string& context)
-  {
-    if (!this->Messages.empty())
-    {
-      std::string all = context;
-      for (const auto& m : this->Messages)
-      {
-        all += "\n  " + m;
-      }
-      this->Messages.clear();
-      throw RunError{ all };
-    }
-  }
-};
-
-// A progress bar on stderr, shown only when stderr is a terminal.
-struct ProgressBar
-{
-  bool Enabled = false;
-  std::string Label;
-  int LastPercent = -1;
-
-  static void OnProgress(vtkObject*, unsigned long, void* clientData, void* callData)
-  {
-    auto* self = static_cast<ProgressBar*>(clientData);
-    const double fraction = callData ? *static_cast<double*>(callData) : 0.0;
-    self->Show(fraction);
-  }
-
-  void Watch(vtkAlgorithm* algorithm, const std::string& label)
-  {
-    if (!this->Enabled)
-    {
-      return;
-    }
-    vtkNew<vtkCallbackCommand> command;
-    command->SetCallback(&ProgressBar::OnProgress);
-    command->SetClientData(this);
-    algorithm->AddObserver(vtkCommand::ProgressEvent, command);
-    this->Label = label;
-    this->LastPercent = -1;
-  }
-
-  void Show(double fraction)
-  {
-    const int percent =
-      static_cast<int>(std::round(100.0 * std::min(std::max(fraction, 0.0), 1.0)));
-    if (percent == this->LastPercent)
-    {
-      return;
-    }
-    this->LastPercent = percent;
-    const int filled = percent * 30 / 100;
-    std::fprintf(stderr, "\r%-8s [%s%s] %3d%%", this->Label.c_str(),
-      std::string(filled, '#').c_str(), std::string(30 - filled, ' ').c_str(), percent);
-    if (percent == 100)
-    {
-      std::fprintf(stderr, "\n");
-    }
-    std::fflush(stderr);
-  }
-};
-
 struct CommonOptions
 {
   double Exposure = 1.0;
   bool Quiet = false;
+  vtkTypeUInt64 MaximumPixels = DefaultMaximumPixels;
+  std::string OutputDirectory; // batch mode when not empty
+  std::string Format = ".exr";
+  bool FormatGiven = false;
+  std::string StatisticsFile;
 };
 
 void TakeCommon(Arguments& args, CommonOptions& common)
@@ -352,176 +142,32 @@ void TakeCommon(Arguments& args, CommonOptions& common)
     }
   }
   common.Quiet = args.Take("--quiet", value);
-}
-
-// Refuse anything that would overwrite the input or write a format we do not know.
-void CheckPaths(const std::string& in, const std::string& out)
-{
-  const std::string ext = Extension(out);
-  if (ext != ".exr" && ext != ".png")
+  if (args.Take("--max-pixels", value))
   {
-    throw UsageError{ "output must end in .exr or .png: " + out };
+    common.MaximumPixels = ParseCount("--max-pixels", value);
   }
-  std::error_code ec;
-  if (!fs::exists(in, ec))
+  if (args.Take("-o", value))
   {
-    throw RunError{ "cannot read " + in + ": no such file" };
-  }
-  if (fs::exists(out, ec) && fs::equivalent(in, out, ec))
-  {
-    throw UsageError{ "refusing to overwrite the input " + in + " with the output" };
-  }
-  if (fs::is_directory(out, ec))
-  {
-    throw RunError{ "output " + out + " is a directory" };
-  }
-}
-
-// The image and the display window it came with, which the EXR output keeps.
-struct InputImage
-{
-  vtkSmartPointer<vtkImageData> Image;
-  int DisplayWindow[4] = { 0, -1, 0, -1 };
-};
-
-InputImage ReadInput(const std::string& path, ErrorCollector& errors, ProgressBar& progress)
-{
-  vtkNew<vtkOpenEXRReader> reader;
-  errors.Watch(reader);
-  progress.Watch(reader, "read");
-  reader->SetFileName(path.c_str());
-  reader->Update();
-  errors.ThrowIfAny("cannot read " + path + ":");
-  vtkImageData* image = reader->GetOutput();
-  if (!image || image->GetNumberOfPoints() == 0 || !image->GetPointData()->GetScalars())
-  {
-    throw RunError{ "cannot read " + path + ": no image data" };
-  }
-  InputImage result;
-  result.Image = vtkSmartPointer<vtkImageData>::New();
-  result.Image->ShallowCopy(image);
-  reader->GetDisplayWindow(result.DisplayWindow);
-  return result;
-}
-
-// Float RGBA copy of an image with 1-4 components (alpha 1 when absent).
-vtkSmartPointer<vtkImageData> ToFloatRGBA(vtkImageData* image)
-{
-  const int nc = image->GetNumberOfScalarComponents();
-  auto rgba = vtkSmartPointer<vtkImageData>::New();
-  rgba->CopyStructure(image);
-  rgba->AllocateScalars(VTK_FLOAT, 4);
-  vtkDataArray* in = image->GetPointData()->GetScalars();
-  float* out = static_cast<float*>(rgba->GetScalarPointer());
-  const vtkIdType n = image->GetNumberOfPoints();
-  for (vtkIdType p = 0; p < n; ++p, out += 4)
-  {
-    const double v0 = in->GetComponent(p, 0);
-    out[0] = static_cast<float>(v0);
-    out[1] = static_cast<float>(nc >= 3 ? in->GetComponent(p, 1) : v0);
-    out[2] = static_cast<float>(nc >= 3 ? in->GetComponent(p, 2) : v0);
-    out[3] = nc == 4 ? static_cast<float>(in->GetComponent(p, 3))
-                     : (nc == 2 ? static_cast<float>(in->GetComponent(p, 1)) : 1.0f);
-  }
-  return rgba;
-}
-
-// Display encoding for PNG: exposure, the ACES filmic fit of Narkowicz (2015), sRGB OETF.
-unsigned char ToneMap(double linear, double exposure)
-{
-  double x = std::isnan(linear) ? 0.0 : std::max(linear * exposure, 0.0);
-  x = std::min(x, 1e6);
-  double y = (x * (2.51 * x + 0.03)) / (x * (2.43 * x + 0.59) + 0.14);
-  y = std::min(std::max(y, 0.0), 1.0);
-  const double s = y <= 0.0031308 ? 12.92 * y : 1.055 * std::pow(y, 1.0 / 2.4) - 0.055;
-  return static_cast<unsigned char>(std::lround(255.0 * std::min(std::max(s, 0.0), 1.0)));
-}
-
-// Write bytes to a temporary file beside `path`, then rename it over `path`, so a failure
-// never leaves a partial file and never clobbers an existing one.
-void WriteFileAtomically(const std::string& path, const unsigned char* data, size_t size)
-{
-  const std::string temporary = path + ".tmp-" + std::to_string(::getpid());
-  std::error_code ec;
-  {
-    std::ofstream file(temporary, std::ios::binary | std::ios::trunc);
-    if (file)
+    if (value.empty())
     {
-      file.write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
-      file.close();
+      throw UsageError{ "-o expects an output directory" };
     }
-    if (!file)
+    common.OutputDirectory = value;
+  }
+  if (args.Take("--format", value))
+  {
+    common.Format = "." +
+      std::string(ParseChoice("--format", value, { { "exr", 0 }, { "png", 1 } }) ? "png" : "exr");
+    common.FormatGiven = true;
+  }
+  if (args.Take("--stats", value))
+  {
+    if (Extension(value) != ".json")
     {
-      fs::remove(temporary, ec);
-      throw RunError{ "cannot write " + path + ": " + std::strerror(errno) };
+      throw UsageError{ "--stats expects a file name ending in .json, got '" + value + "'" };
     }
+    common.StatisticsFile = value;
   }
-  fs::rename(temporary, path, ec);
-  if (ec)
-  {
-    fs::remove(temporary, ec);
-    throw RunError{ "cannot write " + path + ": " + ec.message() };
-  }
-}
-
-// Tone-map to 8-bit and write through WriteFileAtomically. The PNG is opaque RGB: OpenEXR
-// colour is premultiplied by alpha, so showing it as is composites it over black, which keeps
-// the glow that bloom spreads into transparent pixels.
-void WritePNG(vtkImageData* rgba, const std::string& path, double exposure, ErrorCollector& errors)
-{
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  int ext[6];
-  rgba->GetExtent(ext);
-  const int w = ext[1] - ext[0] + 1, h = ext[3] - ext[2] + 1;
-  image->SetDimensions(w, h, 1);
-  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
-  const float* in = static_cast<const float*>(rgba->GetScalarPointer());
-  unsigned char* out = static_cast<unsigned char*>(image->GetScalarPointer());
-  for (int j = 0; j < h; ++j)
-  {
-    // Row 0 is the top of the picture; VTK's PNG writer puts the last row on top.
-    const float* src = in + static_cast<size_t>(j) * w * 4;
-    unsigned char* dst = out + static_cast<size_t>(h - 1 - j) * w * 3;
-    for (int i = 0; i < w; ++i)
-    {
-      for (int c = 0; c < 3; ++c)
-      {
-        dst[3 * i + c] = ToneMap(src[4 * i + c], exposure);
-      }
-    }
-  }
-  // Encode in memory: VTK 9.1's vtkPNGWriter leaks libpng state when it cannot open its file.
-  vtkNew<vtkPNGWriter> writer;
-  errors.Watch(writer);
-  writer->WriteToMemoryOn();
-  writer->SetInputData(image);
-  writer->Write();
-  vtkUnsignedCharArray* bytes = writer->GetResult();
-  if (!errors.Messages.empty() || !bytes || bytes->GetNumberOfValues() == 0)
-  {
-    errors.Messages.push_back("PNG encoding failed");
-    errors.ThrowIfAny("cannot write " + path + ":");
-  }
-  WriteFileAtomically(path, bytes->GetPointer(0), static_cast<size_t>(bytes->GetNumberOfValues()));
-}
-
-void WriteOutput(vtkImageData* image, const int displayWindow[4], const std::string& path,
-  const CommonOptions& common, ErrorCollector& errors)
-{
-  auto rgba = ToFloatRGBA(image);
-  if (Extension(path) == ".png")
-  {
-    WritePNG(rgba, path, common.Exposure, errors);
-    return;
-  }
-  vtkNew<vtkOpenEXRWriter> writer;
-  errors.Watch(writer);
-  writer->SetFileName(path.c_str());
-  writer->SetInputData(rgba);
-  writer->SetPixelTypeToFloat();
-  writer->SetDisplayWindow(const_cast<int*>(displayWindow));
-  writer->Write();
-  errors.ThrowIfAny("cannot write " + path + ":");
 }
 
 void ApplyImageOptions(Arguments& args, vtkImageBloom* bloom)
@@ -644,44 +290,165 @@ void ApplyImageOptions(Arguments& args, vtkImageBloom* bloom)
   }
 }
 
-// The rest of every command: IN and OUT from the positional arguments, read, filter, write.
-// With `rgba` the filter sees the image as float RGBA (alpha 1 when absent).
-int RunFilter(const Arguments& args, const CommonOptions& common, vtkImageAlgorithm* filter,
-  const std::string& command, bool rgba)
+// One file: read, filter, write, and the report. Throws RunError.
+FileReport ProcessFile(const FileJob& job, const CommonOptions& common, vtkImageAlgorithm* filter,
+  vtkImageBloom* bloom, bool rgba, ErrorCollector& errors, ProgressBar& progress, double start,
+  double end)
+{
+  FileReport report;
+  report.Input = job.Input;
+  report.Output = job.Output;
+  const auto begin = std::chrono::steady_clock::now();
+  auto at = [start, end](double f) { return start + (end - start) * f; };
+
+  progress.Begin("read", at(0.0), at(0.4));
+  const InputImage input = ReadInput(job.Input, common.MaximumPixels, errors, progress);
+  int dimensions[3];
+  input.Image->GetDimensions(dimensions);
+
+  progress.Begin(bloom ? "bloom" : "blur", at(0.4), at(0.6));
+  // The filter reads the input in place when it is already what it needs (no copy).
+  filter->SetInputData(rgba ? AsFloatRGBA(input.Image) : input.Image);
+  filter->Update();
+  errors.ThrowIfAny(
+    (bloom ? std::string("bloom") : std::string("blur")) + " of " + job.Input + " failed:");
+  vtkImageData* output = vtkImageData::SafeDownCast(filter->GetOutputDataObject(0));
+
+  progress.Begin("write", at(0.6), at(1.0));
+  WriteOutput(output, input.DisplayWindow, job.Output, common.Exposure, errors, progress);
+
+  report.Succeeded = true;
+  report.Width = dimensions[0];
+  report.Height = dimensions[1];
+  if (bloom)
+  {
+    report.Exact = bloom->GetExecutionMode() == vtkImageBloom::REFERENCE;
+    report.BloomSkipped = bloom->GetLastBloomSkipped();
+    report.HasBloomStatistics = bloom->GetComputeStatistics();
+    report.EnergyIn = bloom->GetEnergyIn();
+    report.EnergyOut = bloom->GetEnergyOut();
+    report.NumberOfBrightPixels = bloom->GetNumberOfBrightPixels();
+    report.PeakLuminanceIn = bloom->GetPeakLuminanceIn();
+    report.PeakLuminanceOut = bloom->GetPeakLuminanceOut();
+    report.NumberOfLevelsUsed = bloom->GetNumberOfLevelsUsed();
+  }
+  // Let go of this file's images before the next one is read.
+  filter->SetInputData(nullptr);
+  report.Seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - begin).count();
+  return report;
+}
+
+// The rest of every image command: the files from the positional arguments (IN OUT, or
+// IN... -o OUTDIR), each read, filtered and written, and the --stats report.
+int RunFiles(const Arguments& args, const CommonOptions& common, vtkImageAlgorithm* filter,
+  vtkImageBloom* bloom, const std::string& command, bool rgba)
 {
   args.CheckAllTaken();
-  if (args.Positional.size() != 2)
+  const bool batch = !common.OutputDirectory.empty();
+  std::vector<FileJob> jobs;
+  if (!batch)
   {
-    throw UsageError{ command + " needs exactly two files, IN and OUT" };
+    if (common.FormatGiven)
+    {
+      throw UsageError{ "--format applies to batch mode (-o OUTDIR); the output's extension "
+                        "chooses the format otherwise" };
+    }
+    if (args.Positional.size() != 2)
+    {
+      throw UsageError{ command + " needs exactly two files, IN and OUT (or IN... -o OUTDIR)" };
+    }
+    jobs.push_back(PlanSingle(args.Positional[0], args.Positional[1]));
   }
-  const std::string in = args.Positional[0], out = args.Positional[1];
-  CheckPaths(in, out);
+  else
+  {
+    if (args.Positional.empty())
+    {
+      throw UsageError{ command + " -o OUTDIR needs at least one input file" };
+    }
+    jobs = PlanBatch(args.Positional, common.OutputDirectory, common.Format);
+  }
+  if (!common.StatisticsFile.empty())
+  {
+    std::error_code ec;
+    for (const FileJob& job : jobs)
+    {
+      if (fs::equivalent(job.Input, common.StatisticsFile, ec))
+      {
+        throw UsageError{ "refusing to overwrite the input " + job.Input + " with --stats" };
+      }
+    }
+  }
 
-  ErrorCollector errors;
   ProgressBar progress;
   progress.Enabled = !common.Quiet && ::isatty(STDERR_FILENO);
-  const InputImage input = ReadInput(in, errors, progress);
+  ErrorCollector errors;
   errors.Watch(filter);
-  progress.Watch(filter, command);
-  filter->SetInputData(rgba ? ToFloatRGBA(input.Image) : input.Image);
-  filter->Update();
-  errors.ThrowIfAny(command + " failed:");
-  WriteOutput(vtkImageData::SafeDownCast(filter->GetOutputDataObject(0)), input.DisplayWindow, out,
-    common, errors);
-  return 0;
+  progress.Watch(filter);
+  std::vector<FileReport> reports;
+  size_t failed = 0;
+  const double count = static_cast<double>(jobs.size());
+  for (size_t i = 0; i < jobs.size(); ++i)
+  {
+    const FileJob& job = jobs[i];
+    try
+    {
+      if (!job.Problem.empty())
+      {
+        throw RunError{ job.Problem };
+      }
+      reports.push_back(ProcessFile(
+        job, common, filter, bloom, rgba, errors, progress, i / count, (i + 1) / count));
+    }
+    catch (const RunError& e)
+    {
+      errors.Messages.clear();
+      if (!batch && common.StatisticsFile.empty())
+      {
+        throw;
+      }
+      ++failed;
+      FileReport report;
+      report.Input = job.Input;
+      report.Output = job.Output;
+      report.Error = e.Message;
+      reports.push_back(report);
+      progress.Break();
+      std::cerr << "vtk-bloom: error: " << e.Message << "\n";
+    }
+  }
+  progress.Finish();
+  if (!common.StatisticsFile.empty())
+  {
+    WriteStatistics(common.StatisticsFile, command, reports);
+  }
+  if (batch && !common.Quiet)
+  {
+    std::cerr << "vtk-bloom: " << command << ": " << (jobs.size() - failed) << " of " << jobs.size()
+              << " file(s) written to " << common.OutputDirectory;
+    std::cerr << (failed ? ", " + std::to_string(failed) + " failed\n" : "\n");
+  }
+  return failed ? 1 : 0;
 }
 
 int RunImage(int argc, char* argv[])
 {
-  Arguments args(argc, argv, 2, { "--karis", "--quiet" });
+  Arguments args(argc, argv, 2, { "--karis", "--quiet", "--exact" });
   CommonOptions common;
   TakeCommon(args, common);
+  std::string value;
   vtkNew<vtkImageBloom> bloom;
-  // Files are processed once: the exact double-precision chain, bit for bit PRESETS.md's.
-  bloom->SetExecutionModeToReference();
+  // FAST (the fused float32 chain) unless --exact asks for the double-precision REFERENCE
+  // chain, which reproduces PRESETS.md bit for bit. Both skip the bloom work of a frame with
+  // nothing above the threshold (SkipEmptyBloom), and FAST then writes the input unchanged.
+  if (args.Take("--exact", value))
+  {
+    bloom->SetExecutionModeToReference();
+  }
+  // Statistics cost about twice the chain; measure them only when they are reported.
+  bloom->SetComputeStatistics(!common.StatisticsFile.empty());
   bloom->SetPreset("webgpu-market");
   ApplyImageOptions(args, bloom);
-  return RunFilter(args, common, bloom, "image", false);
+  return RunFiles(args, common, bloom, bloom, "image", false);
 }
 
 int RunBlur(int argc, char* argv[])
@@ -722,10 +489,12 @@ int RunBlur(int argc, char* argv[])
   blur->SetStandardDeviations(sigma, sigma, 0.0);
   blur->SetRadius(radius, radius, 0);
   // Blur all four channels, alpha included, as seed 004 does.
-  return RunFilter(args, common, blur, "blur", true);
+  return RunFiles(args, common, blur, nullptr, "blur", true);
 }
 }
 
+namespace
+{
 int RunRender(int argc, char* argv[])
 {
   Arguments args(argc, argv, 2, { "--list", "--no-bloom", "--karis", "--quiet" });
@@ -750,6 +519,10 @@ int RunRender(int argc, char* argv[])
 #else
   CommonOptions common;
   TakeCommon(args, common);
+  if (!common.OutputDirectory.empty() || common.FormatGiven || !common.StatisticsFile.empty())
+  {
+    throw UsageError{ "-o, --format and --stats apply to image and blur, not render" };
+  }
   int size[2] = { 960, 540 };
   if (args.Take("--size", value))
   {
@@ -817,8 +590,9 @@ int RunRender(int argc, char* argv[])
   }
   window->ReleaseGraphicsResources(window);
   errors.ThrowIfAny("render " + scene + " failed:");
-  const int displayWindow[4] = { 0, 0, size[0] - 1, size[1] - 1 };
-  WriteOutput(image, displayWindow, out, common, errors);
+  const int displayWindow[4] = { 0, size[0] - 1, 0, size[1] - 1 };
+  ProgressBar progress;
+  WriteOutput(image, displayWindow, out, common.Exposure, errors, progress);
   if (!common.Quiet)
   {
     std::cerr << "vtk-bloom: rendered " << scene << " (" << size[0] << "x" << size[1] << ", "
@@ -826,6 +600,7 @@ int RunRender(int argc, char* argv[])
   }
   return 0;
 #endif
+}
 }
 
 int main(int argc, char* argv[])
