@@ -9,3 +9,10 @@ add_dependencies(TestCommandLine vtk-bloom)
 if (VTKBLOOM_ENABLE_RENDERING)
   target_compile_definitions(TestCommandLine PRIVATE VTKBLOOM_HAS_RENDERING)
 endif ()
+
+# The tool on many files: hostile inputs, --exact, batch mode, --stats, --max-pixels.
+vtkbloom_add_gtest(TestCommandLineFiles
+  SOURCES Tools/TestCommandLineFiles.cxx
+  LIBRARIES OpenEXR::OpenEXR)
+target_compile_definitions(TestCommandLineFiles PRIVATE VTKBLOOM_TOOL="$<TARGET_FILE:vtk-bloom>")
+add_dependencies(TestCommandLineFiles vtk-bloom)

@@ -35,6 +35,13 @@ InputImage ReadInput(const std::string& path, vtkTypeUInt64 maximumPixels, Error
   // Up to 4 float components and the luminance/chroma conversion's 8 bytes per pixel.
   reader->SetMaximumImageBytes(std::max(reader->GetMaximumImageBytes(), maximumPixels * 24));
   reader->Update();
+  for (std::string& message : errors.Messages)
+  {
+    if (message.find("MaximumImagePixels") != std::string::npos)
+    {
+      message += " (--max-pixels " + std::to_string(maximumPixels) + ")";
+    }
+  }
   errors.ThrowIfAny("cannot read " + path + ":");
   vtkImageData* image = reader->GetOutput();
   if (!image || image->GetNumberOfPoints() == 0 || !image->GetPointData()->GetScalars())

@@ -8,6 +8,8 @@
 #   bash scripts/test.sh --osmesa  only the OSMesa leg
 #   bash scripts/test.sh --asan    AddressSanitizer + UndefinedBehaviorSanitizer build in
 #                                  build-asan/ (system VTK, under Xvfb)
+#   bash scripts/test.sh --fuzz [S] the OpenEXR reader's libFuzzer target for S seconds
+#                                  (default 120; scripts/fuzz.sh)
 # Tests whose shared data (../shared/data) is missing are skipped, except under CI=true, where
 # they fail.
 set -euo pipefail
@@ -52,8 +54,11 @@ case "$mode" in
     export LSAN_OPTIONS="suppressions=$root/Testing/lsan.supp:print_suppressions=0"
     run_x11 "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVTKBLOOM_ENABLE_SANITIZERS=ON
     ;;
+  --fuzz)
+    bash "$root/scripts/fuzz.sh" "${2:-120}"
+    ;;
   *)
-    echo "usage: bash scripts/test.sh [--x11 | --osmesa | --asan]" >&2
+    echo "usage: bash scripts/test.sh [--x11 | --osmesa | --asan | --fuzz [SECONDS]]" >&2
     exit 2
     ;;
 esac

@@ -1,6 +1,7 @@
 // End-to-end tests of `vtk-bloom`: the acceptance commands, exit codes, and that nothing is
 // ever overwritten or left half-written.
 #include "vtkBloomTestSupport.h"
+#include "vtkBloomToolTestHelpers.h"
 
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -26,95 +27,7 @@
 #include <vector>
 
 namespace fs = std::filesystem;
-
-namespace
-{
-// Run the tool with the given arguments; returns its exit status, stderr in `errors`.
-int RunTool(const std::string& arguments, std::string* errors = nullptr)
-{
-  const std::string log = vtkBloomTest::OutputPath("cli-stderr.txt");
-  const std::string command = std::string(VTKBLOOM_TOOL) + " " + arguments + " >/dev/null 2>" + log;
-  const int status = std::system(command.c_str());
-  if (errors)
-  {
-    std::ifstream in(log);
-    errors->assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-  }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-// An EXR file as float RGBA (missing channels: 0, alpha 1), read with OpenEXR directly.
-struct Pixels
-{
-  int Width = 0, Height = 0;
-  std::vector<float> Rgba;
-};
-
-Pixels ReadEXR(const std::string& path)
-{
-  Imf::InputFile file(path.c_str());
-  const Imath::Box2i dw = file.header().dataWindow();
-  Pixels p;
-  p.Width = dw.max.x - dw.min.x + 1;
-  p.Height = dw.max.y - dw.min.y + 1;
-  p.Rgba.assign(static_cast<size_t>(p.Width) * p.Height * 4, 0.0f);
-  char* base = reinterpret_cast<char*>(p.Rgba.data()) -
-    (static_cast<ptrdiff_t>(dw.min.x) + static_cast<ptrdiff_t>(dw.min.y) * p.Width) * 16;
-  Imf::FrameBuffer fb;
-  const char* names[4] = { "R", "G", "B", "A" };
-  for (int c = 0; c < 4; ++c)
-  {
-    fb.insert(names[c],
-      Imf::Slice(
-        Imf::FLOAT, base + 4 * c, 16, 16 * static_cast<size_t>(p.Width), 1, 1, c == 3 ? 1.0 : 0.0));
-  }
-  file.setFrameBuffer(fb);
-  file.readPixels(dw.min.y, dw.max.y);
-  return p;
-}
-
-bool IsFloatRGBA(const std::string& path)
-{
-  Imf::InputFile file(path.c_str());
-  const Imf::ChannelList& channels = file.header().channels();
-  int count = 0;
-  for (auto it = channels.begin(); it != channels.end(); ++it, ++count)
-  {
-    if (it.channel().type != Imf::FLOAT)
-    {
-      return false;
-    }
-  }
-  return count == 4 && channels.findChannel("R") && channels.findChannel("A");
-}
-
-double RelativeL2(const Pixels& out, const Pixels& expected)
-{
-  if (out.Width != expected.Width || out.Height != expected.Height)
-  {
-    return INFINITY;
-  }
-  double num = 0.0, den = 0.0;
-  for (size_t i = 0; i < out.Rgba.size(); ++i)
-  {
-    const double d = static_cast<double>(out.Rgba[i]) - expected.Rgba[i];
-    num += d * d;
-    den += static_cast<double>(expected.Rgba[i]) * expected.Rgba[i];
-  }
-  return std::sqrt(num / den);
-}
-
-std::string Slurp(const std::string& path)
-{
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
-std::string Quote(const std::string& path)
-{
-  return "'" + path + "'";
-}
-}
+using namespace vtkBloomToolTest;
 
 // The calibration example in ../shared/data/presets: every preset and both blur settings.
 class PresetExample : public ::testing::TestWithParam<std::pair<std::string, std::string>>
