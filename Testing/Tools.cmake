@@ -16,3 +16,16 @@ vtkbloom_add_gtest(TestCommandLineFiles
   LIBRARIES OpenEXR::OpenEXR)
 target_compile_definitions(TestCommandLineFiles PRIVATE VTKBLOOM_TOOL="$<TARGET_FILE:vtk-bloom>")
 add_dependencies(TestCommandLineFiles vtk-bloom)
+
+# render FILE and view, on datasets the test writes with VTK's writers.
+if (VTKBLOOM_ENABLE_RENDERING)
+  vtkbloom_add_gtest(TestCommandLineData OPENGL
+    SOURCES Tools/TestCommandLineData.cxx
+    LIBRARIES OpenEXR::OpenEXR VTK::IOXML VTK::IOLegacy VTK::FiltersCore VTK::FiltersGeneral
+      VTK::FiltersSources VTK::ImagingCore)
+  target_compile_definitions(TestCommandLineData PRIVATE VTKBLOOM_TOOL="$<TARGET_FILE:vtk-bloom>")
+  if (TARGET VTK::InteractionWidgets AND TARGET VTK::RenderingFreeType)
+    target_compile_definitions(TestCommandLineData PRIVATE VTKBLOOM_TEST_INTERACTIVE)
+  endif ()
+  add_dependencies(TestCommandLineData vtk-bloom)
+endif ()

@@ -36,6 +36,7 @@
 #include <cstring>
 #include <filesystem>
 #include <iostream>
+#include <map>
 #include <string>
 #include <unistd.h>
 #include <vector>
@@ -43,9 +44,7 @@
 #ifdef VTKBLOOM_HAS_RENDERING
 #include "vtkBloomExampleScenes.h"
 #include "vtkBloomPass.h"
-#include "vtkRenderStepsPass.h"
-#include "vtkRenderWindow.h"
-#include "vtkRenderer.h"
+#include "vtkBloomToolRender.h"
 #endif
 
 namespace fs = std::filesystem;
@@ -495,11 +494,113 @@ int RunBlur(int argc, char* argv[])
 
 namespace
 {
-int RunRender(int argc, char* argv[])
+#ifdef VTKBLOOM_HAS_RENDERING
+// The options of render and view: size, precision, the data scene's, and the bloom's.
+RenderOptions TakeRenderOptions(Arguments& args, const CommonOptions& common)
+{
+  if (!common.OutputDirectory.empty() || common.FormatGiven || !common.StatisticsFile.empty())
+  {
+    throw UsageError{ "-o, --format and --stats apply to image and blur, not render or view" };
+  }
+  RenderOptions options;
+  options.Exposure = common.Exposure;
+  options.Quiet = common.Quiet;
+  std::string value;
+  if (args.Take("--size", value))
+  {
+    const auto x = value.find('x');
+    if (x == std::string::npos)
+    {
+      throw UsageError{ "--size expects WxH, got '" + value + "'" };
+    }
+    options.Size[0] = ParseInt("--size", value.substr(0, x), 1, 8192);
+    options.Size[1] = ParseInt("--size", value.substr(x + 1), 1, 8192);
+  }
+  if (args.Take("--precision", value))
+  {
+    options.Precision = ParseInt("--precision", value, 16, 32);
+    if (options.Precision != 16 && options.Precision != 32)
+    {
+      throw UsageError{ "--precision expects 16 or 32, got '" + value + "'" };
+    }
+  }
+  options.Bloom = !args.Take("--no-bloom", value);
+  DataSceneOptions& data = options.Data;
+  for (const char* option :
+    { "--color-by", "--range", "--emit-range", "--contour", "--background" })
+  {
+    if (args.Take(option, value))
+    {
+      ParseDataOption(option, value, data);
+    }
+  }
+  if (args.Take("--colormap", value))
+  {
+    const int map = ParseChoice("--colormap", value,
+      { { "viridis", 0 }, { "inferno", 1 }, { "coolwarm", 2 }, { "grayscale", 3 } });
+    data.Colormap = std::vector<std::string>{ "viridis", "inferno", "coolwarm", "grayscale" }[map];
+  }
+  if (args.Take("--representation", value))
+  {
+    const int r = ParseChoice("--representation", value,
+      { { "surface", 0 }, { "points", 1 }, { "wireframe", 2 }, { "volume", 3 } });
+    data.Representation = std::vector<std::string>{ "surface", "points", "wireframe", "volume" }[r];
+  }
+  if (args.Take("--view", value))
+  {
+    const int v = ParseChoice("--view", value,
+      { { "iso", 0 }, { "+x", 1 }, { "-x", 2 }, { "+y", 3 }, { "-y", 4 }, { "+z", 5 },
+        { "-z", 6 } });
+    data.View = std::vector<std::string>{ "iso", "+x", "-x", "+y", "-y", "+z", "-z" }[v];
+  }
+  if (args.Take("--emit-gain", value))
+  {
+    data.EmitGain = ParseDouble("--emit-gain", value);
+    if (data.EmitGain < 0.0)
+    {
+      throw UsageError{ "--emit-gain must be >= 0" };
+    }
+  }
+  if (args.Take("--azimuth", value))
+  {
+    data.Azimuth = ParseDouble("--azimuth", value);
+  }
+  if (args.Take("--elevation", value))
+  {
+    data.Elevation = ParseDouble("--elevation", value);
+  }
+  if (args.Take("--zoom", value))
+  {
+    data.Zoom = ParseDouble("--zoom", value);
+    if (!(data.Zoom > 0.0))
+    {
+      throw UsageError{ "--zoom must be > 0" };
+    }
+  }
+  if (args.Take("--snapshot", value))
+  {
+    options.SnapshotPrefix = value;
+  }
+  // The bloom options are parsed now (usage errors before any rendering) and applied to the
+  // pass after the scene has set its own parameters.
+  vtkNew<vtkImageBloom> parsed;
+  const std::map<std::string, std::string> bloomOptions = args.Options;
+  ApplyImageOptions(args, parsed);
+  options.ConfigureBloom = [bloomOptions](vtkBloomPass* pass)
+  {
+    Arguments again(0, nullptr, 0, {});
+    again.Options = bloomOptions;
+    ApplyImageOptions(again, pass->GetParameters());
+  };
+  return options;
+}
+#endif
+
+int RunRender(int argc, char* argv[], bool interactive)
 {
   Arguments args(argc, argv, 2, { "--list", "--no-bloom", "--karis", "--quiet" });
   std::string value;
-  if (args.Take("--list", value))
+  if (!interactive && args.Take("--list", value))
   {
     args.CheckAllTaken();
     if (!args.Positional.empty())
@@ -519,86 +620,34 @@ int RunRender(int argc, char* argv[])
 #else
   CommonOptions common;
   TakeCommon(args, common);
-  if (!common.OutputDirectory.empty() || common.FormatGiven || !common.StatisticsFile.empty())
+  std::string events;
+  if (interactive)
   {
-    throw UsageError{ "-o, --format and --stats apply to image and blur, not render" };
+    args.Take("--play-events", events);
   }
-  int size[2] = { 960, 540 };
-  if (args.Take("--size", value))
+  const RenderOptions options = TakeRenderOptions(args, common);
+  args.CheckAllTaken();
+  if (interactive)
   {
-    const auto x = value.find('x');
-    if (x == std::string::npos)
+    if (args.Positional.size() != 1)
     {
-      throw UsageError{ "--size expects WxH, got '" + value + "'" };
+      throw UsageError{ "view needs one dataset file or scene name" };
     }
-    size[0] = ParseInt("--size", value.substr(0, x), 1, 8192);
-    size[1] = ParseInt("--size", value.substr(x + 1), 1, 8192);
+#ifdef VTKBLOOM_HAS_INTERACTIVE
+    return View(args.Positional[0], options, events);
+#else
+    throw RunError{ "this vtk-bloom renders headless only (its VTK has no X window or widgets); "
+                    "use 'vtk-bloom render " +
+      args.Positional[0] + " OUT.png'" };
+#endif
   }
-  int precision = vtkBloomPass::FLOAT16;
-  if (args.Take("--precision", value))
-  {
-    precision = ParseInt("--precision", value, 16, 32);
-    if (precision != 16 && precision != 32)
-    {
-      throw UsageError{ "--precision expects 16 or 32, got '" + value + "'" };
-    }
-  }
-  const bool bloom = !args.Take("--no-bloom", value);
   if (args.Positional.size() != 2)
   {
-    throw UsageError{ "render needs a scene name and an output file (see render --list)" };
+    throw UsageError{ "render needs a scene name or dataset file and an output file (see render "
+                      "--list)" };
   }
-  const std::string scene = args.Positional[0], out = args.Positional[1];
-  const auto names = vtkBloomExampleSceneNames();
-  if (std::find(names.begin(), names.end(), scene) == names.end())
-  {
-    throw UsageError{ "unknown scene '" + scene + "' (see render --list)" };
-  }
-  const std::string ext = Extension(out);
-  if (ext != ".exr" && ext != ".png")
-  {
-    throw UsageError{ "output must be .exr or .png: " + out };
-  }
-
-  ErrorCollector errors;
-  vtkNew<vtkRenderWindow> window;
-  vtkNew<vtkRenderer> renderer;
-  vtkNew<vtkBloomPass> pass;
-  vtkNew<vtkRenderStepsPass> steps;
-  errors.Watch(window);
-  errors.Watch(pass);
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(0);
-  window->SetSize(size[0], size[1]);
-  window->AddRenderer(renderer);
-  pass->SetDelegatePass(steps);
-  renderer->SetPass(pass);
-  vtkBloomBuildExampleScene(scene, renderer, pass);
-  ApplyImageOptions(args, pass->GetParameters());
-  args.CheckAllTaken();
-  pass->SetFloatPrecision(precision);
-  pass->CaptureResultOn();
-  window->Render();
-  vtkNew<vtkImageData> image;
-  if (bloom)
-  {
-    pass->ReadResultImage(image);
-  }
-  else
-  {
-    pass->ReadSceneImage(image);
-  }
-  window->ReleaseGraphicsResources(window);
-  errors.ThrowIfAny("render " + scene + " failed:");
-  const int displayWindow[4] = { 0, size[0] - 1, 0, size[1] - 1 };
-  ProgressBar progress;
-  WriteOutput(image, displayWindow, out, common.Exposure, errors, progress);
-  if (!common.Quiet)
-  {
-    std::cerr << "vtk-bloom: rendered " << scene << " (" << size[0] << "x" << size[1] << ", "
-              << pass->GetNumberOfPasses() << " GPU passes) to " << out << "\n";
-  }
-  return 0;
+  const std::string input = args.Positional[0], out = args.Positional[1];
+  return IsDatasetPath(input) ? RenderData(input, out, options) : RenderScene(input, out, options);
 #endif
 }
 }
@@ -629,9 +678,9 @@ int main(int argc, char* argv[])
     {
       return RunBlur(argc, argv);
     }
-    if (command == "render")
+    if (command == "render" || command == "view")
     {
-      return RunRender(argc, argv);
+      return RunRender(argc, argv, command == "view");
     }
     throw UsageError{ command.empty() ? "no command given" : "unknown command '" + command + "'" };
   }

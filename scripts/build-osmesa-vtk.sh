@@ -20,7 +20,16 @@ work=${VTKBLOOM_OSMESA_WORK:-$HOME/.cache/vtk-bloom/osmesa-build}
 stamp="$prefix/.vtk-bloom-osmesa-complete"
 log() { echo "build-osmesa-vtk: $*" >&2; }
 
-if [ -f "$stamp" ]; then
+# The modules the prefix must hold; a cached prefix built with another list is rebuilt (ccache
+# keeps that incremental).
+modules=(
+  CommonCore CommonDataModel CommonExecutionModel CommonMath ImagingCore ImagingGeneral
+  ImagingSources ImagingMath IOImage FiltersSources FiltersGeneral RenderingCore
+  RenderingOpenGL2 InteractionStyle TestingRendering
+  # `vtk-bloom render FILE`: VTK's XML and legacy readers, contours, volumes.
+  IOXML IOLegacy FiltersCore FiltersGeometry RenderingVolume RenderingVolumeOpenGL2
+)
+if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "${modules[*]}" ]; then
   log "using the cached OSMesa VTK in $prefix"
   echo "$prefix"
   exit 0
@@ -88,11 +97,6 @@ cp "$glew_src/LICENSE.txt" "$vtkglew/LICENSE.txt"
 cp "$root/scripts/osmesa-vtkglew.cmake" "$vtkglew/CMakeLists.txt"
 
 # 5. Configure a minimal VTK: OpenGL through OSMesa only, system libraries where Debian has them.
-modules=(
-  CommonCore CommonDataModel CommonExecutionModel CommonMath ImagingCore ImagingGeneral
-  ImagingSources ImagingMath IOImage FiltersSources FiltersGeneral RenderingCore
-  RenderingOpenGL2 InteractionStyle TestingRendering
-)
 module_args=()
 for m in "${modules[@]}"; do module_args+=("-DVTK_MODULE_ENABLE_VTK_$m=YES"); done
 external_args=()
@@ -132,6 +136,6 @@ cmake --build "$build" -- -j"$(nproc)" 2>&1 | tee "$work/build.log" |
        /error|FAILED/ { print; fflush() }' >&2
 [ "${PIPESTATUS[0]}" -eq 0 ] || { tail -n 40 "$work/build.log" >&2; exit 1; }
 cmake --install "$build" >"$work/install.log" 2>&1 || { tail -n 40 "$work/install.log" >&2; exit 1; }
-touch "$stamp"
+echo "${modules[*]}" >"$stamp"
 log "installed $(du -sh "$prefix" | cut -f1) into $prefix"
 echo "$prefix"

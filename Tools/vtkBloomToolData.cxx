@@ -1,0 +1,845 @@
+#include "vtkBloomToolData.h"
+
+#include "vtkBloomPass.h"
+#include "vtkImageBloom.h"
+#include "vtkImageBloomThreshold.h"
+
+#include <vtkActor.h>
+#include <vtkCamera.h>
+#include <vtkCellData.h>
+#include <vtkCellDataToPointData.h>
+#include <vtkColorTransferFunction.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkCompositePolyDataMapper2.h>
+#include <vtkContourFilter.h>
+#include <vtkDataObjectTreeIterator.h>
+#include <vtkDataSet.h>
+#include <vtkDataSetMapper.h>
+#include <vtkDataSetSurfaceFilter.h>
+#include <vtkGenericDataObjectReader.h>
+#include <vtkImageData.h>
+#include <vtkLookupTable.h>
+#include <vtkMath.h>
+#include <vtkNew.h>
+#include <vtkOutputWindow.h>
+#include <vtkPiecewiseFunction.h>
+#include <vtkPointData.h>
+#include <vtkProperty.h>
+#include <vtkRenderer.h>
+#include <vtkSmartVolumeMapper.h>
+#include <vtkTrivialProducer.h>
+#include <vtkVolume.h>
+#include <vtkVolumeProperty.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLDataParser.h>
+#include <vtkXMLGenericDataObjectReader.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <filesystem>
+#include <functional>
+#include <map>
+#include <regex>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace vtkBloomTool
+{
+namespace
+{
+const char* const DatasetExtensions[] = { ".vti", ".vtu", ".vtp", ".vts", ".vtr", ".vtm", ".vtk" };
+
+bool IsDataExtension(const std::string& extension)
+{
+  return std::find(std::begin(DatasetExtensions), std::end(DatasetExtensions), extension) !=
+    std::end(DatasetExtensions);
+}
+
+// %d or %0Nd in a file name: a numbered series.
+const std::regex NumberPattern("%(0[1-9][0-9]*)?d");
+
+//------------------------------------------------------------------------------
+// Every dataset leaf of a data object (the object itself when it is a dataset).
+void ForEachDataSet(vtkDataObject* data, const std::function<void(vtkDataSet*)>& visit)
+{
+  if (auto* dataset = vtkDataSet::SafeDownCast(data))
+  {
+    visit(dataset);
+  }
+  else if (auto* composite = vtkCompositeDataSet::SafeDownCast(data))
+  {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(composite->NewIterator());
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+    {
+      if (auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+      {
+        visit(leaf);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// The arrays of a dataset, for messages: "point: Temperature, Velocity (3); cell: Id".
+std::string DescribeArrays(vtkDataObject* data)
+{
+  std::map<std::string, int> point, cell;
+  ForEachDataSet(data,
+    [&](vtkDataSet* dataset)
+    {
+      for (int a = 0; a < dataset->GetPointData()->GetNumberOfArrays(); ++a)
+      {
+        if (vtkDataArray* array = dataset->GetPointData()->GetArray(a))
+        {
+          point[array->GetName() ? array->GetName() : "(unnamed)"] = array->GetNumberOfComponents();
+        }
+      }
+      for (int a = 0; a < dataset->GetCellData()->GetNumberOfArrays(); ++a)
+      {
+        if (vtkDataArray* array = dataset->GetCellData()->GetArray(a))
+        {
+          cell[array->GetName() ? array->GetName() : "(unnamed)"] = array->GetNumberOfComponents();
+        }
+      }
+    });
+  auto list = [](const std::map<std::string, int>& arrays)
+  {
+    std::string text;
+    for (const auto& entry : arrays)
+    {
+      text += (text.empty() ? "" : ", ") + entry.first +
+        (entry.second > 1 ? " (" + std::to_string(entry.second) + " components)" : "");
+    }
+    return text.empty() ? std::string("none") : text;
+  };
+  return "point arrays: " + list(point) + "; cell arrays: " + list(cell);
+}
+
+//------------------------------------------------------------------------------
+struct ArrayChoice
+{
+  std::string Name;
+  bool OnCells = false;
+  int Components = 1;
+};
+
+// The array to colour by: the named one (points first, then cells), else the active point
+// scalars, else the first point array, else the first cell array; Name "" when there is none.
+ArrayChoice ChooseArray(vtkDataObject* data, const std::string& requested)
+{
+  ArrayChoice choice;
+  ForEachDataSet(data,
+    [&](vtkDataSet* dataset)
+    {
+      if (!choice.Name.empty())
+      {
+        return;
+      }
+      vtkPointData* pd = dataset->GetPointData();
+      vtkCellData* cd = dataset->GetCellData();
+      vtkDataArray* array = nullptr;
+      bool onCells = false;
+      if (!requested.empty())
+      {
+        array = pd->GetArray(requested.c_str());
+        if (!array && (array = cd->GetArray(requested.c_str())))
+        {
+          onCells = true;
+        }
+      }
+      else if ((array = pd->GetScalars()) || (pd->GetNumberOfArrays() && (array = pd->GetArray(0))))
+      {
+      }
+      else if (cd->GetNumberOfArrays() && (array = cd->GetArray(0)))
+      {
+        onCells = true;
+      }
+      if (array && array->GetName())
+      {
+        choice.Name = array->GetName();
+        choice.OnCells = onCells;
+        choice.Components = array->GetNumberOfComponents();
+      }
+    });
+  return choice;
+}
+
+//------------------------------------------------------------------------------
+// Range of the chosen array (a component, or the magnitude with component -1) over every leaf,
+// and how many of its values lie in [lo, hi].
+void ArrayRange(vtkDataObject* data, const ArrayChoice& choice, int component, double range[2],
+  const double* within = nullptr, vtkIdType* count = nullptr)
+{
+  range[0] = VTK_DOUBLE_MAX;
+  range[1] = VTK_DOUBLE_MIN;
+  if (count)
+  {
+    *count = 0;
+  }
+  ForEachDataSet(data,
+    [&](vtkDataSet* dataset)
+    {
+      vtkDataArray* array = choice.OnCells ? dataset->GetCellData()->GetArray(choice.Name.c_str())
+                                           : dataset->GetPointData()->GetArray(choice.Name.c_str());
+      if (!array || array->GetNumberOfTuples() == 0)
+      {
+        return;
+      }
+      const int c = array->GetNumberOfComponents() == 1 ? 0 : component;
+      double r[2];
+      array->GetRange(r, c);
+      range[0] = std::min(range[0], r[0]);
+      range[1] = std::max(range[1], r[1]);
+      if (within && count)
+      {
+        for (vtkIdType t = 0; t < array->GetNumberOfTuples(); ++t)
+        {
+          double v;
+          if (c >= 0)
+          {
+            v = array->GetComponent(t, c);
+          }
+          else
+          {
+            double sum = 0.0;
+            for (int k = 0; k < array->GetNumberOfComponents(); ++k)
+            {
+              sum += array->GetComponent(t, k) * array->GetComponent(t, k);
+            }
+            v = std::sqrt(sum);
+          }
+          *count += (v >= within[0] && v <= within[1]) ? 1 : 0;
+        }
+      }
+    });
+  if (range[0] > range[1])
+  {
+    range[0] = 0.0;
+    range[1] = 1.0;
+  }
+}
+
+//------------------------------------------------------------------------------
+// The colour maps, as control points (t, r, g, b): viridis and inferno sampled at nine points
+// from matplotlib's tables (van der Walt and Smith), coolwarm Moreland's diverging map,
+// grayscale a linear ramp.
+void FillColorMap(const std::string& name, vtkColorTransferFunction* colours, double lo, double hi)
+{
+  static const std::map<std::string, std::vector<std::array<double, 4>>> maps = {
+    { "viridis",
+      { { 0.0, 0.267004, 0.004874, 0.329415 }, { 0.125, 0.275191, 0.194905, 0.496005 },
+        { 0.25, 0.229739, 0.322361, 0.545706 }, { 0.375, 0.172719, 0.448791, 0.557885 },
+        { 0.5, 0.127568, 0.566949, 0.550556 }, { 0.625, 0.157851, 0.683765, 0.501686 },
+        { 0.75, 0.369214, 0.788888, 0.382914 }, { 0.875, 0.678489, 0.863742, 0.189503 },
+        { 1.0, 0.993248, 0.906157, 0.143936 } } },
+    { "inferno",
+      { { 0.0, 0.001462, 0.000466, 0.013866 }, { 0.125, 0.087411, 0.044556, 0.224813 },
+        { 0.25, 0.258234, 0.038571, 0.406485 }, { 0.375, 0.416331, 0.090203, 0.432943 },
+        { 0.5, 0.578304, 0.148039, 0.404411 }, { 0.625, 0.735683, 0.215906, 0.330245 },
+        { 0.75, 0.865006, 0.316822, 0.226055 }, { 0.875, 0.954506, 0.468744, 0.099874 },
+        { 1.0, 0.988362, 0.998364, 0.644924 } } },
+    { "coolwarm", { { 0.0, 0.230, 0.299, 0.754 }, { 1.0, 0.706, 0.016, 0.150 } } },
+    { "grayscale", { { 0.0, 0.0, 0.0, 0.0 }, { 1.0, 1.0, 1.0, 1.0 } } },
+  };
+  const auto& points = maps.at(name);
+  colours->RemoveAllPoints();
+  if (name == "coolwarm")
+  {
+    colours->SetColorSpaceToDiverging();
+  }
+  else if (name == "grayscale")
+  {
+    colours->SetColorSpaceToRGB();
+  }
+  else
+  {
+    colours->SetColorSpaceToLab();
+  }
+  const double span = hi > lo ? hi - lo : 1.0;
+  for (const auto& p : points)
+  {
+    colours->AddRGBPoint(lo + p[0] * span, p[1], p[2], p[3]);
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+bool IsDatasetPath(const std::string& path)
+{
+  const std::string extension = Extension(path);
+  return extension == ".pvd" || IsDataExtension(extension);
+}
+
+//------------------------------------------------------------------------------
+DatasetFiles ResolveDataset(const std::string& path)
+{
+  DatasetFiles result;
+  const std::string extension = Extension(path);
+  std::error_code ec;
+  const std::string name = fs::path(path).filename().string();
+  if (std::regex_search(name, NumberPattern))
+  {
+    // A numbered series: every file of the directory whose name matches, consecutive.
+    fs::path directory = fs::path(path).parent_path();
+    if (directory.empty())
+    {
+      directory = ".";
+    }
+    std::string expression;
+    std::smatch match;
+    std::string rest = name;
+    while (std::regex_search(rest, match, NumberPattern))
+    {
+      expression +=
+        std::regex_replace(match.prefix().str(), std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)");
+      expression += match[1].matched ? "([0-9]{" + match[1].str().substr(1) + ",})" : "([0-9]+)";
+      rest = match.suffix().str();
+    }
+    expression += std::regex_replace(rest, std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)");
+    const std::regex filePattern(expression);
+    std::map<long, std::string> steps;
+    for (const auto& entry : fs::directory_iterator(directory, ec))
+    {
+      const std::string candidate = entry.path().filename().string();
+      std::smatch m;
+      if (entry.is_regular_file(ec) && std::regex_match(candidate, m, filePattern))
+      {
+        steps[std::stol(m[1].str())] = entry.path().string();
+      }
+    }
+    if (ec || steps.empty())
+    {
+      throw RunError{ "no file matches the pattern " + path };
+    }
+    long expected = steps.begin()->first;
+    for (const auto& step : steps)
+    {
+      if (step.first != expected)
+      {
+        throw RunError{ "the series " + path + " is missing step " + std::to_string(expected) +
+          " (it has " + std::to_string(steps.begin()->first) + " to " +
+          std::to_string(steps.rbegin()->first) + ")" };
+      }
+      ++expected;
+      result.Files.push_back(step.second);
+      result.Times.push_back(static_cast<double>(step.first));
+    }
+    return result;
+  }
+  if (!fs::exists(path, ec))
+  {
+    throw RunError{ "cannot read " + path + ": no such file" };
+  }
+  if (fs::is_directory(path, ec))
+  {
+    throw RunError{ "cannot read " + path + ": is a directory" };
+  }
+  if (extension == ".pvd")
+  {
+    // A ParaView collection: <VTKFile type="Collection"><Collection><DataSet timestep= file=/>.
+    // VTK 9.1 ships no .pvd reader, so it is read with VTK's own XML parser.
+    vtkNew<vtkXMLDataParser> parser;
+    ErrorCollector errors;
+    errors.Watch(parser);
+    parser->SetFileName(path.c_str());
+    vtkXMLDataElement* root = parser->Parse() ? parser->GetRootElement() : nullptr;
+    vtkXMLDataElement* collection = root ? root->FindNestedElementWithName("Collection") : nullptr;
+    const char* type = root ? root->GetAttribute("type") : nullptr;
+    if (!collection || !type || std::string(type) != "Collection")
+    {
+      throw RunError{ "cannot read " + path + ": not a VTK collection (.pvd) file" };
+    }
+    std::vector<std::pair<double, std::string>> steps;
+    for (int i = 0; i < collection->GetNumberOfNestedElements(); ++i)
+    {
+      vtkXMLDataElement* dataset = collection->GetNestedElement(i);
+      const char* file = dataset->GetAttribute("file");
+      if (std::string(dataset->GetName()) != "DataSet" || !file)
+      {
+        continue;
+      }
+      double time = static_cast<double>(steps.size());
+      dataset->GetScalarAttribute("timestep", time);
+      fs::path step(file);
+      if (step.is_relative())
+      {
+        step = fs::path(path).parent_path() / step;
+      }
+      steps.emplace_back(time, step.string());
+    }
+    if (steps.empty())
+    {
+      throw RunError{ "cannot read " + path + ": the collection lists no DataSet" };
+    }
+    std::stable_sort(
+      steps.begin(), steps.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+    for (size_t i = 0; i < steps.size(); ++i)
+    {
+      if (i > 0 && steps[i].first == steps[i - 1].first)
+      {
+        throw RunError{ "cannot read " + path +
+          ": several parts per time step are not supported (time " +
+          std::to_string(steps[i].first) + ")" };
+      }
+      if (!fs::is_regular_file(steps[i].second, ec))
+      {
+        throw RunError{ "cannot read " + path + ": time step " + std::to_string(i) + " (time " +
+          std::to_string(steps[i].first) + ") names " + steps[i].second +
+          ", which does not exist" };
+      }
+      result.Files.push_back(steps[i].second);
+      result.Times.push_back(steps[i].first);
+    }
+    return result;
+  }
+  if (!IsDataExtension(extension))
+  {
+    throw RunError{ "cannot read " + path + ": unknown extension '" + extension +
+      "' (expected .vti, .vtu, .vtp, .vts, .vtr, .vtm, .vtk or .pvd)" };
+  }
+  result.Files.push_back(path);
+  result.Times.push_back(0.0);
+  return result;
+}
+
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkDataObject> ReadDataset(const std::string& file, ErrorCollector& errors)
+{
+  // The readers make inner readers and parsers of their own, whose errors reach only the
+  // output window: collect those too, and keep them off the terminal.
+  vtkOutputWindow* window = vtkOutputWindow::GetInstance();
+  const int mode = window->GetDisplayMode();
+  window->SetDisplayModeToNever();
+  errors.Watch(window);
+  vtkSmartPointer<vtkDataObject> data;
+  if (Extension(file) == ".vtk")
+  {
+    vtkNew<vtkGenericDataObjectReader> reader;
+    errors.Watch(reader);
+    reader->SetFileName(file.c_str());
+    if (reader->OpenVTKFile() && reader->ReadHeader())
+    {
+      reader->CloseVTKFile();
+      reader->Update();
+      data = reader->GetOutput();
+    }
+    else
+    {
+      reader->CloseVTKFile();
+      errors.Messages.push_back("not a legacy VTK file");
+    }
+  }
+  else
+  {
+    vtkNew<vtkXMLGenericDataObjectReader> reader;
+    errors.Watch(reader);
+    reader->SetFileName(file.c_str());
+    reader->Update();
+    data = reader->GetOutputDataObject(0);
+  }
+  window->RemoveAllObservers();
+  window->SetDisplayMode(mode);
+  errors.ThrowIfAny("cannot read " + file + ":");
+  if (!data)
+  {
+    throw RunError{ "cannot read " + file + ": not a VTK data file" };
+  }
+  vtkIdType points = 0;
+  ForEachDataSet(data, [&points](vtkDataSet* dataset) { points += dataset->GetNumberOfPoints(); });
+  if (points == 0)
+  {
+    throw RunError{ "cannot render " + file + ": the dataset is empty (no points)" };
+  }
+  return data;
+}
+
+//------------------------------------------------------------------------------
+void ParseDataOption(const std::string& option, const std::string& value, DataSceneOptions& o)
+{
+  auto pair = [&](double out[2])
+  {
+    const auto colon = value.find(':');
+    if (colon == std::string::npos)
+    {
+      throw UsageError{ option + " expects LO:HI, got '" + value + "'" };
+    }
+    out[0] = ParseDouble(option, value.substr(0, colon));
+    out[1] = ParseDouble(option, value.substr(colon + 1));
+    if (!(out[0] <= out[1]))
+    {
+      throw UsageError{ option + " expects LO <= HI, got '" + value + "'" };
+    }
+  };
+  if (option == "--color-by")
+  {
+    const auto colon = value.rfind(':');
+    o.ColorBy = value.substr(0, colon);
+    o.ColorComponent = colon == std::string::npos
+      ? -1
+      : ParseInt(option + " component", value.substr(colon + 1), 0, 1 << 20);
+    if (o.ColorBy.empty())
+    {
+      throw UsageError{ "--color-by expects NAME or NAME:COMPONENT" };
+    }
+  }
+  else if (option == "--range")
+  {
+    pair(o.Range);
+    o.HasRange = true;
+  }
+  else if (option == "--emit-range")
+  {
+    pair(o.EmitRange);
+    o.HasEmitRange = true;
+  }
+  else if (option == "--contour")
+  {
+    o.Contours = ParseList(option, value);
+  }
+  else if (option == "--background")
+  {
+    const auto rgb = ParseList(option, value);
+    if (rgb.size() != 3)
+    {
+      throw UsageError{ "--background expects R,G,B" };
+    }
+    std::copy(rgb.begin(), rgb.end(), o.Background);
+    o.HasBackground = true;
+  }
+}
+
+//------------------------------------------------------------------------------
+struct DataScene::vtkInternals
+{
+  DataSceneOptions Options;
+  std::string FileName;
+  ArrayChoice Array;
+  double ColorRange[2] = { 0.0, 1.0 };
+  vtkNew<vtkTrivialProducer> Producer;
+  vtkNew<vtkCellDataToPointData> ToPoints;
+  vtkNew<vtkContourFilter> Contour;
+  vtkNew<vtkDataSetSurfaceFilter> Surface;
+  vtkSmartPointer<vtkMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkSmartPointer<vtkActor> Emitter;
+  vtkNew<vtkLookupTable> Table;
+  vtkNew<vtkColorTransferFunction> Colours;
+  vtkNew<vtkSmartVolumeMapper> VolumeMapper;
+  vtkNew<vtkVolume> Volume;
+  vtkSmartPointer<vtkDataObject> Data;
+  bool IsVolume = false;
+  bool IsComposite = false;
+
+  void CheckArray(vtkDataObject* data, const std::string& name)
+  {
+    if (this->Options.ColorBy.empty())
+    {
+      return;
+    }
+    const ArrayChoice found = ChooseArray(data, this->Options.ColorBy);
+    if (found.Name.empty())
+    {
+      throw UsageError{ "--color-by: " + name + " has no array '" + this->Options.ColorBy +
+        "'; its " + DescribeArrays(data) };
+    }
+    if (this->Options.ColorComponent >= found.Components)
+    {
+      throw UsageError{ "--color-by: array '" + found.Name + "' of " + name + " has " +
+        std::to_string(found.Components) + " component(s), no component " +
+        std::to_string(this->Options.ColorComponent) };
+    }
+  }
+};
+
+DataScene::DataScene()
+  : Internals(new vtkInternals)
+{
+}
+
+DataScene::~DataScene() = default;
+
+//------------------------------------------------------------------------------
+void DataScene::Build(vtkDataObject* data, const std::string& name, const DataSceneOptions& options,
+  vtkRenderer* renderer, vtkBloomPass* pass)
+{
+  vtkInternals& d = *this->Internals;
+  d.Options = options;
+  d.CheckArray(data, name);
+  d.Array = ChooseArray(data, options.ColorBy);
+  d.IsComposite = vtkCompositeDataSet::SafeDownCast(data) != nullptr;
+  d.IsVolume = options.Representation == "volume";
+  if (d.IsVolume && !vtkImageData::SafeDownCast(data))
+  {
+    throw UsageError{ "--representation volume needs image data (.vti); " + name + " holds " +
+      data->GetClassName() };
+  }
+  if (d.IsVolume && options.HasEmitRange)
+  {
+    throw UsageError{ "--emit-range applies to surface, points and wireframe; a volume blooms "
+                      "as a whole scene (raise --emit-gain)" };
+  }
+  if ((options.HasEmitRange || !options.Contours.empty() || d.IsVolume) && d.Array.Name.empty())
+  {
+    throw UsageError{ name +
+      " has no point or cell array to contour, emit or render as a "
+      "volume by; its " +
+      DescribeArrays(data) };
+  }
+  const int component = d.Array.Components == 1 ? 0 : options.ColorComponent;
+  if (options.HasRange)
+  {
+    d.ColorRange[0] = options.Range[0];
+    d.ColorRange[1] = options.Range[1];
+  }
+  else if (!d.Array.Name.empty())
+  {
+    ArrayRange(data, d.Array, component, d.ColorRange);
+  }
+  FillColorMap(options.Colormap, d.Colours, d.ColorRange[0], d.ColorRange[1]);
+  const double gain =
+    options.EmitGain >= 0.0 ? options.EmitGain : (options.HasEmitRange ? 4.0 : 1.0);
+
+  d.Producer->SetOutput(data);
+  d.Data = data;
+  d.FileName = name;
+  if (d.IsVolume)
+  {
+    vtkNew<vtkColorTransferFunction> colours;
+    FillColorMap(options.Colormap, colours, d.ColorRange[0], d.ColorRange[1]);
+    // HDR colours: the gain lifts the volume above the bright-pass threshold.
+    for (int i = 0; i < colours->GetSize(); ++i)
+    {
+      double node[6];
+      colours->GetNodeValue(i, node);
+      node[1] *= gain;
+      node[2] *= gain;
+      node[3] *= gain;
+      colours->SetNodeValue(i, node);
+    }
+    vtkNew<vtkPiecewiseFunction> opacity;
+    opacity->AddPoint(d.ColorRange[0], 0.0);
+    opacity->AddPoint(d.ColorRange[1], 0.3);
+    vtkNew<vtkVolumeProperty> property;
+    property->SetColor(colours);
+    property->SetScalarOpacity(opacity);
+    property->SetInterpolationTypeToLinear();
+    vtkAlgorithm* source = d.Producer;
+    if (d.Array.OnCells)
+    {
+      d.ToPoints->SetInputConnection(d.Producer->GetOutputPort());
+      source = d.ToPoints;
+    }
+    d.VolumeMapper->SetInputConnection(source->GetOutputPort());
+    // CPU ray casting: VTK 9.1's GPU ray caster draws nothing inside a framebuffer render pass
+    // (vtkFramebufferPass as much as vtkBloomPass), while the CPU image is composited there.
+    d.VolumeMapper->SetRequestedRenderModeToRayCast();
+    d.VolumeMapper->SetScalarModeToUsePointFieldData();
+    d.VolumeMapper->SelectScalarArray(d.Array.Name.c_str());
+    if (d.Array.Components > 1)
+    {
+      d.VolumeMapper->SetVectorMode(
+        component < 0 ? vtkSmartVolumeMapper::MAGNITUDE : vtkSmartVolumeMapper::COMPONENT);
+      d.VolumeMapper->SetVectorComponent(std::max(component, 0));
+    }
+    d.Volume->SetMapper(d.VolumeMapper);
+    d.Volume->SetProperty(property);
+    renderer->AddVolume(d.Volume);
+  }
+  else
+  {
+    vtkAlgorithm* source = d.Producer;
+    if (!options.Contours.empty())
+    {
+      if (d.Array.OnCells)
+      {
+        d.ToPoints->SetInputConnection(source->GetOutputPort());
+        source = d.ToPoints;
+      }
+      d.Contour->SetInputConnection(source->GetOutputPort());
+      d.Contour->SetInputArrayToProcess(
+        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, d.Array.Name.c_str());
+      for (size_t i = 0; i < options.Contours.size(); ++i)
+      {
+        d.Contour->SetValue(static_cast<int>(i), options.Contours[i]);
+      }
+      source = d.Contour;
+    }
+    if (d.IsComposite)
+    {
+      // Block by block (each keeps its own arrays), drawn by the composite mapper.
+      d.Surface->SetInputConnection(source->GetOutputPort());
+      source = d.Surface;
+      d.Mapper = vtkSmartPointer<vtkCompositePolyDataMapper2>::New();
+    }
+    else
+    {
+      d.Mapper = vtkSmartPointer<vtkDataSetMapper>::New();
+    }
+    d.Mapper->SetInputConnection(source->GetOutputPort());
+    if (!d.Array.Name.empty())
+    {
+      const bool onCells = d.Array.OnCells && options.Contours.empty();
+      d.Table->SetNumberOfTableValues(256);
+      d.Table->SetTableRange(d.ColorRange);
+      for (int i = 0; i < 256; ++i)
+      {
+        double rgb[3];
+        d.Colours->GetColor(d.ColorRange[0] + (d.ColorRange[1] - d.ColorRange[0]) * i / 255.0, rgb);
+        d.Table->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
+      }
+      if (d.Array.Components > 1)
+      {
+        if (component < 0)
+        {
+          d.Table->SetVectorModeToMagnitude();
+        }
+        else
+        {
+          d.Table->SetVectorModeToComponent();
+          d.Table->SetVectorComponent(component);
+        }
+      }
+      d.Mapper->SetLookupTable(d.Table);
+      d.Mapper->SetScalarRange(d.ColorRange);
+      d.Mapper->SetScalarModeToDefault();
+      if (onCells)
+      {
+        d.Mapper->SetScalarModeToUseCellFieldData();
+      }
+      else
+      {
+        d.Mapper->SetScalarModeToUsePointFieldData();
+      }
+      d.Mapper->SelectColorArray(d.Array.Name.c_str());
+      d.Mapper->ScalarVisibilityOn();
+      d.Mapper->SetColorModeToMapScalars();
+      d.Mapper->SetInterpolateScalarsBeforeMapping(true);
+    }
+    else
+    {
+      d.Mapper->ScalarVisibilityOff();
+    }
+    vtkProperty* property = d.Actor->GetProperty();
+    // Blocks without the coloured array, and data without arrays, in a neutral grey.
+    property->SetColor(0.7, 0.7, 0.7);
+    if (options.Representation == "points")
+    {
+      property->SetRepresentationToPoints();
+      property->SetPointSize(3.0);
+    }
+    else if (options.Representation == "wireframe")
+    {
+      property->SetRepresentationToWireframe();
+    }
+    d.Actor->SetMapper(d.Mapper);
+    renderer->AddActor(d.Actor);
+
+    if (options.HasEmitRange)
+    {
+      // Only the emit range glows: an emitter copy of the actor, black outside the range, its
+      // colours lifted to HDR by the gain and unlit (ambient only), as the scalar-field scene.
+      // The emitter colours by texture (InterpolateScalarsBeforeMapping), where a value exactly
+      // at an end of the range samples the edge between the range and the black outside it:
+      // widen the range by a hair so that LO and HI themselves glow.
+      const double hair = 1e-6 *
+        std::max({ options.EmitRange[1] - options.EmitRange[0], std::abs(options.EmitRange[0]),
+          std::abs(options.EmitRange[1]), 1e-300 });
+      const double emitRange[2] = { options.EmitRange[0] - hair, options.EmitRange[1] + hair };
+      d.Emitter = vtkBloomPass::CreateScalarRangeEmitter(d.Actor, emitRange);
+      if (!d.Emitter)
+      {
+        throw RunError{ "cannot make the emitter for --emit-range" };
+      }
+      if (auto* table = vtkScalarsToColors::SafeDownCast(d.Emitter->GetMapper()->GetLookupTable()))
+      {
+        table->SetVectorMode(d.Table->GetVectorMode());
+        table->SetVectorComponent(d.Table->GetVectorComponent());
+      }
+      vtkNew<vtkProperty> glow;
+      glow->DeepCopy(property);
+      glow->SetAmbient(gain);
+      glow->SetDiffuse(0.0);
+      glow->SetSpecular(0.0);
+      // Blocks without the array take the property's colour: black, so they do not emit.
+      glow->SetColor(0.0, 0.0, 0.0);
+      d.Emitter->SetProperty(glow);
+      pass->SetEmissionSourceToEmitters();
+      pass->AddEmitter(d.Emitter);
+      pass->GetParameters()->SetThresholdMode(vtkImageBloomThreshold::NONE);
+    }
+    else if (gain != 1.0)
+    {
+      property->SetAmbient(property->GetAmbient() * gain);
+      property->SetDiffuse(property->GetDiffuse() * gain);
+    }
+  }
+
+  // The camera looks along the chosen axis (iso: along -1,-1,-1), z up (y up for +-z).
+  if (options.HasBackground)
+  {
+    renderer->SetBackground(options.Background);
+  }
+  else
+  {
+    renderer->SetBackground(0.02, 0.02, 0.03);
+  }
+  static const std::map<std::string, std::array<double, 3>> directions = {
+    { "iso", { -1, -1, -1 } }, { "+x", { 1, 0, 0 } }, { "-x", { -1, 0, 0 } }, { "+y", { 0, 1, 0 } },
+    { "-y", { 0, -1, 0 } }, { "+z", { 0, 0, 1 } }, { "-z", { 0, 0, -1 } }
+  };
+  const auto direction = directions.at(options.View);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(-direction[0], -direction[1], -direction[2]);
+  if (options.View == "+z" || options.View == "-z")
+  {
+    camera->SetViewUp(0.0, 1.0, 0.0);
+  }
+  else
+  {
+    camera->SetViewUp(0.0, 0.0, 1.0);
+  }
+  renderer->ResetCamera();
+  camera->Azimuth(options.Azimuth);
+  camera->Elevation(options.Elevation);
+  camera->OrthogonalizeViewUp();
+  camera->Zoom(options.Zoom);
+  renderer->ResetCameraClippingRange();
+}
+
+//------------------------------------------------------------------------------
+void DataScene::SetData(vtkDataObject* data, const std::string& name)
+{
+  vtkInternals& d = *this->Internals;
+  d.CheckArray(data, name);
+  d.Producer->SetOutput(data);
+  d.Data = data;
+  d.FileName = name;
+}
+
+//------------------------------------------------------------------------------
+std::string DataScene::EmitWarning() const
+{
+  const vtkInternals& d = *this->Internals;
+  if (!d.Options.HasEmitRange || !d.Data)
+  {
+    return "";
+  }
+  double range[2];
+  vtkIdType count = 0;
+  const int component = d.Array.Components == 1 ? 0 : d.Options.ColorComponent;
+  ArrayRange(d.Data, d.Array, component, range, d.Options.EmitRange, &count);
+  if (count > 0)
+  {
+    return "";
+  }
+  std::ostringstream message;
+  message << "--emit-range " << d.Options.EmitRange[0] << ":" << d.Options.EmitRange[1]
+          << " selects nothing in " << d.FileName << " ('" << d.Array.Name << "' spans ["
+          << range[0] << ", " << range[1] << "]); no bloom is added";
+  return message.str();
+}
+}
