@@ -57,8 +57,9 @@ const char* const Usage = R"(usage:
   vtk-bloom image [options] IN.exr... -o OUTDIR
   vtk-bloom blur --radius R [--sigma S] [--border clamp|reflect|zero] IN.exr OUT.exr|OUT.png
   vtk-bloom blur --radius R [options] IN.exr... -o OUTDIR
-  vtk-bloom render [--size WxH] [--precision 16|32] [--no-bloom] [options] SCENE OUT.exr|OUT.png
+  vtk-bloom render [options] SCENE|FILE OUT.exr|OUT.png
   vtk-bloom render --list
+  vtk-bloom view [options] SCENE|FILE
   vtk-bloom --help
 
 image: HDR bloom (vtkImageBloom). A preset is applied first; options then override it.
@@ -99,12 +100,30 @@ batch (image and blur): many inputs, one output directory.
   --stats FILE.json      write each file's outcome and bloom statistics (energy in and out,
                          bright pixels, peak luminance, levels, whether the bloom was skipped)
 
-render: render an example emissive scene headless with the GPU pass (vtkBloomPass).
+render: render an example scene or your dataset headless with the GPU pass (vtkBloomPass).
+  SCENE is an example scene (--list). FILE is a dataset read by VTK's readers: .vti .vtu
+  .vtp .vts .vtr .vtm .vtk, a .pvd time series, or a numbered pattern (step_%04d.vtu); a
+  series writes one frame per step (OUT_0000.png, ..., or a %d pattern in OUT).
   --list                 print the scene names, one per line
   --size WxH             image size in pixels (default 960x540)
   --precision P          16 (default) or 32: float precision of the scene render target
   --no-bloom             write the float render without bloom (the "before" image)
-  The scene chooses its bloom parameters; the image options above override them.
+  --color-by NAME[:C]    point or cell array to colour by (component C; default magnitude)
+  --range LO:HI          colour range (default: the array's range in the first step)
+  --colormap M           viridis (default) | inferno | coolwarm | grayscale
+  --representation R     surface (default) | points | wireframe | volume (image data)
+  --contour V1,V2,...    draw iso-contours of the coloured array
+  --emit-range LO:HI     only the data in this range of the coloured array glows
+  --emit-gain G          HDR intensity of what glows (default 4 with --emit-range, else 1)
+  --view V               iso (default) | +x | -x | +y | -y | +z | -z: the camera looks along V
+  --azimuth A, --elevation E, --zoom Z    turn and zoom the camera after --view
+  --background R,G,B     background colour (default 0.02,0.02,0.03)
+  Scenes choose their bloom parameters, datasets start from webgpu-market; the image options
+  above override them.
+
+view: the same in an interactive X window: sliders for threshold, strength and levels; keys
+  b bloom on/off, p next preset, s PNG screenshot, e EXR of the float frame, h help, q quit.
+  --snapshot PREFIX      where s and e save (default vtk-bloom-view-NNN.png|exr)
 
 common:
   --exposure E           exposure multiplier for .png output (default 1)
@@ -117,6 +136,29 @@ common:
 .exr output is float32 RGBA with no tone mapping; .png output is tone-mapped to 8-bit.
 Exit status: 0 success, 1 failure, 2 usage error. An input file is never overwritten.
 )";
+
+// The options each command knows (CLI11 refuses any other); their values are parsed by the
+// command (ApplyImageOptions, TakeCommon, TakeRenderOptions).
+const std::vector<std::string> CommonOptionNames = { "--exposure", "--max-pixels", "-o", "--format",
+  "--stats" };
+const std::vector<std::string> BloomOptionNames = { "--preset", "--threshold", "--knee", "--mode",
+  "--clamp-luminance", "--strength", "--composite", "--tint", "--levels", "--start-level",
+  "--down", "--up", "--accumulate", "--blur-sigma", "--blur-radius", "--blur-spacing",
+  "--blur-iterations", "--level-weights" };
+const std::vector<std::string> BlurOptionNames = { "--radius", "--sigma", "--border", "--kernel" };
+const std::vector<std::string> RenderOptionNames = { "--size", "--precision", "--color-by",
+  "--range", "--emit-range", "--contour", "--background", "--colormap", "--representation",
+  "--view", "--emit-gain", "--azimuth", "--elevation", "--zoom", "--snapshot", "--play-events" };
+
+std::vector<std::string> Join(std::initializer_list<std::vector<std::string>> lists)
+{
+  std::vector<std::string> all;
+  for (const auto& list : lists)
+  {
+    all.insert(all.end(), list.begin(), list.end());
+  }
+  return all;
+}
 
 struct CommonOptions
 {
@@ -431,7 +473,8 @@ int RunFiles(const Arguments& args, const CommonOptions& common, vtkImageAlgorit
 
 int RunImage(int argc, char* argv[])
 {
-  Arguments args(argc, argv, 2, { "--karis", "--quiet", "--exact" });
+  Arguments args(
+    argc, argv, 2, { "--karis", "--quiet", "--exact" }, Join({ CommonOptionNames, BloomOptionNames }));
   CommonOptions common;
   TakeCommon(args, common);
   std::string value;
@@ -452,7 +495,7 @@ int RunImage(int argc, char* argv[])
 
 int RunBlur(int argc, char* argv[])
 {
-  Arguments args(argc, argv, 2, { "--quiet" });
+  Arguments args(argc, argv, 2, { "--quiet" }, Join({ CommonOptionNames, BlurOptionNames }));
   CommonOptions common;
   TakeCommon(args, common);
   std::string v;
@@ -588,8 +631,7 @@ RenderOptions TakeRenderOptions(Arguments& args, const CommonOptions& common)
   ApplyImageOptions(args, parsed);
   options.ConfigureBloom = [bloomOptions](vtkBloomPass* pass)
   {
-    Arguments again(0, nullptr, 0, {});
-    again.Options = bloomOptions;
+    Arguments again(bloomOptions);
     ApplyImageOptions(again, pass->GetParameters());
   };
   return options;
@@ -598,7 +640,8 @@ RenderOptions TakeRenderOptions(Arguments& args, const CommonOptions& common)
 
 int RunRender(int argc, char* argv[], bool interactive)
 {
-  Arguments args(argc, argv, 2, { "--list", "--no-bloom", "--karis", "--quiet" });
+  Arguments args(argc, argv, 2, { "--list", "--no-bloom", "--karis", "--quiet" },
+    Join({ CommonOptionNames, BloomOptionNames, RenderOptionNames }));
   std::string value;
   if (!interactive && args.Take("--list", value))
   {

@@ -5,6 +5,8 @@
 #include <vtkCommand.h>
 #include <vtkNew.h>
 
+#include <CLI/CLI.hpp>
+
 #include <algorithm>
 #include <cctype>
 #include <cerrno>
@@ -118,34 +120,68 @@ vtkTypeUInt64 ParseCount(const std::string& option, const std::string& text)
 }
 
 //------------------------------------------------------------------------------
-Arguments::Arguments(int argc, char* argv[], int first, const std::vector<std::string>& flags)
+Arguments::Arguments(int argc, char* argv[], int first, const std::vector<std::string>& flags,
+  const std::vector<std::string>& options)
 {
-  for (int i = first; i < argc; ++i)
+  CLI::App app;
+  app.set_help_flag(); // --help is handled before any command runs
+  app.allow_extras(false);
+  app.positionals_at_end(false);
+  std::map<std::string, std::string> values;
+  std::map<std::string, bool> given;
+  for (const std::string& flag : flags)
   {
-    const std::string arg = argv[i];
-    const bool longOption = arg.size() > 2 && arg.compare(0, 2, "--") == 0;
-    if (longOption || arg == "-o")
+    app.add_flag(flag, given[flag]);
+  }
+  for (const std::string& option : options)
+  {
+    app.add_option(option, values[option])->type_name("VALUE");
+  }
+  app.add_option("arguments", this->Positional);
+  try
+  {
+    // CLI11 skips its argv[0]; the command's own arguments start at `first`.
+    app.parse(argc - first + 1, argv + first - 1);
+  }
+  catch (const CLI::ParseError& e)
+  {
+    // Today's wording for the common cases; CLI11's own for the rest.
+    std::string message = e.what();
+    const std::string name = message.substr(0, message.find(':'));
+    if (message.find("not expected") != std::string::npos)
     {
-      if (std::find(flags.begin(), flags.end(), arg) != flags.end())
-      {
-        this->Options[arg] = "";
-        continue;
-      }
-      if (i + 1 >= argc)
-      {
-        throw UsageError{ arg + " needs a value" };
-      }
-      if (this->Options.count(arg))
-      {
-        throw UsageError{ arg + " is given more than once" };
-      }
-      this->Options[arg] = argv[++i];
+      message = "unknown option" + message.substr(message.find(':'));
     }
-    else
+    else if (message.find("VALUE missing") != std::string::npos)
     {
-      this->Positional.push_back(arg);
+      message = name + " needs a value";
+    }
+    else if (message.find("At Most 1") != std::string::npos)
+    {
+      message = name + " is given more than once";
+    }
+    throw UsageError{ message };
+  }
+  for (const auto& flag : given)
+  {
+    if (flag.second)
+    {
+      this->Options[flag.first] = "";
     }
   }
+  for (const std::string& option : options)
+  {
+    if (app.count(option) > 0)
+    {
+      this->Options[option] = values[option];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+Arguments::Arguments(std::map<std::string, std::string> options)
+  : Options(std::move(options))
+{
 }
 
 //------------------------------------------------------------------------------

@@ -40,12 +40,19 @@ int ParseChoice(
 /// A count such as 268435456, 300M or 2G (decimal suffixes K, M, G), at least 1.
 vtkTypeUInt64 ParseCount(const std::string& option, const std::string& text);
 
-/// Command-line arguments: options with values ("--name value", and "-o DIR"), flags, and
-/// positional arguments. Options are taken by name; what is left is reported as unknown.
+/// Command-line arguments of one command, parsed by CLI11: the flags and the options (with one
+/// value each) the command knows, and its positional arguments. A name it does not know, a
+/// missing value or an option given twice is a UsageError. The command then takes each option
+/// by name and parses its value itself (the Parse* functions above, with their range checks
+/// and messages); CheckAllTaken() reports an option it did not use.
 class Arguments
 {
 public:
-  Arguments(int argc, char* argv[], int first, const std::vector<std::string>& flags);
+  Arguments(int argc, char* argv[], int first, const std::vector<std::string>& flags,
+    const std::vector<std::string>& options);
+
+  /// Options given directly (ConfigureBloom re-applies the bloom options).
+  explicit Arguments(std::map<std::string, std::string> options);
 
   /// Visit a known option; everything not visited is reported as unknown.
   bool Take(const std::string& name, std::string& value);
