@@ -341,6 +341,29 @@ private:
   std::atomic<vtkIdType> Done{ 0 };
   std::mutex Lock;
 };
+
+//------------------------------------------------------------------------------
+// Run a read through OpenEXR's C++ library, which reports failures as exceptions.
+template <typename Read>
+bool CatchOpenEXR(vtkOpenEXRFailure& failure, Read&& read)
+{
+  try
+  {
+    return read();
+  }
+  catch (const std::bad_alloc&)
+  {
+    return failure.Set(vtkErrorCode::UnknownError, "out of memory");
+  }
+  catch (const std::exception& e)
+  {
+    return failure.Set(vtkErrorCode::FileFormatError, e.what());
+  }
+  catch (...)
+  {
+    return failure.Set(vtkErrorCode::UnknownError, "unknown exception from OpenEXR");
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -365,95 +388,73 @@ bool vtkOpenEXRDecodeChunks(vtkOpenEXRCoreFile& file, const vtkOpenEXRHeader& he
 bool vtkOpenEXRConvertLuminanceChroma(const std::string& fileName, const vtkOpenEXRHeader& header,
   float* output, vtkOpenEXRFailure& failure)
 {
-  try
-  {
-    Imf::RgbaInputFile input(fileName.c_str(), header.Layer);
-    const Imath::Box2i window = input.dataWindow();
-    if (window.min.x != header.DataWindow[0] || window.max.x != header.DataWindow[1] ||
-      window.min.y != header.DataWindow[2] || window.max.y != header.DataWindow[3])
+  return CatchOpenEXR(failure,
+    [&]
     {
-      return failure.Set(vtkErrorCode::FileFormatError, "inconsistent data window");
-    }
-    const size_t width = static_cast<size_t>(header.Width);
-    const size_t count = width * static_cast<size_t>(header.Height);
-    std::vector<Imf::Rgba> pixels(count);
-    // The frame buffer is addressed by absolute pixel coordinates; compute its origin with
-    // integer arithmetic because the pointer itself lies outside the vector.
-    const vtkTypeInt64 origin =
-      static_cast<vtkTypeInt64>(header.DataWindow[2]) * header.Width + header.DataWindow[0];
-    const uintptr_t base = reinterpret_cast<uintptr_t>(pixels.data()) -
-      static_cast<uintptr_t>(origin) * sizeof(Imf::Rgba);
-    input.setFrameBuffer(reinterpret_cast<Imf::Rgba*>(base), 1, width);
-    input.readPixels(header.DataWindow[2], header.DataWindow[3]);
-
-    const int components = header.NumberOfComponents;
-    for (size_t p = 0; p < count; ++p)
-    {
-      float* out = output + p * static_cast<size_t>(components);
-      out[0] = pixels[p].r;
-      out[1] = pixels[p].g;
-      out[2] = pixels[p].b;
-      if (components == 4)
+      Imf::RgbaInputFile input(fileName.c_str(), header.Layer);
+      const Imath::Box2i window = input.dataWindow();
+      if (window.min.x != header.DataWindow[0] || window.max.x != header.DataWindow[1] ||
+        window.min.y != header.DataWindow[2] || window.max.y != header.DataWindow[3])
       {
-        out[3] = pixels[p].a;
+        return failure.Set(vtkErrorCode::FileFormatError, "inconsistent data window");
       }
-    }
-    return true;
-  }
-  catch (const std::bad_alloc&)
-  {
-    return failure.Set(vtkErrorCode::UnknownError, "out of memory");
-  }
-  catch (const std::exception& e)
-  {
-    return failure.Set(vtkErrorCode::FileFormatError, e.what());
-  }
-  catch (...)
-  {
-    return failure.Set(vtkErrorCode::UnknownError, "unknown exception from OpenEXR");
-  }
+      const size_t width = static_cast<size_t>(header.Width);
+      const size_t count = width * static_cast<size_t>(header.Height);
+      std::vector<Imf::Rgba> pixels(count);
+      // The frame buffer is addressed by absolute pixel coordinates; compute its origin with
+      // integer arithmetic because the pointer itself lies outside the vector.
+      const vtkTypeInt64 origin =
+        static_cast<vtkTypeInt64>(header.DataWindow[2]) * header.Width + header.DataWindow[0];
+      const uintptr_t base = reinterpret_cast<uintptr_t>(pixels.data()) -
+        static_cast<uintptr_t>(origin) * sizeof(Imf::Rgba);
+      input.setFrameBuffer(reinterpret_cast<Imf::Rgba*>(base), 1, width);
+      input.readPixels(header.DataWindow[2], header.DataWindow[3]);
+
+      const int components = header.NumberOfComponents;
+      for (size_t p = 0; p < count; ++p)
+      {
+        float* out = output + p * static_cast<size_t>(components);
+        out[0] = pixels[p].r;
+        out[1] = pixels[p].g;
+        out[2] = pixels[p].b;
+        if (components == 4)
+        {
+          out[3] = pixels[p].a;
+        }
+      }
+      return true;
+    });
 }
 
 //------------------------------------------------------------------------------
 bool vtkOpenEXRDecodeWithImf(const std::string& fileName, const vtkOpenEXRHeader& header,
   void* output, bool unsignedOutput, vtkOpenEXRFailure& failure)
 {
-  try
-  {
-    Imf::MultiPartInputFile file(fileName.c_str(), vtkOpenEXRUseThreadPool(0));
-    Imf::InputPart part(file, header.Part);
-    const Imath::Box2i window = part.header().dataWindow();
-    if (window.min.x != header.DataWindow[0] || window.max.x != header.DataWindow[1] ||
-      window.min.y != header.DataWindow[2] || window.max.y != header.DataWindow[3])
+  return CatchOpenEXR(failure,
+    [&]
     {
-      return failure.Set(vtkErrorCode::FileFormatError, "inconsistent data window");
-    }
-    const size_t components = static_cast<size_t>(header.NumberOfComponents);
-    const size_t xStride = 4 * components;
-    const size_t yStride = xStride * static_cast<size_t>(header.Width);
-    const Imf::PixelType type = unsignedOutput ? Imf::UINT : Imf::FLOAT;
-    Imf::FrameBuffer frameBuffer;
-    for (size_t k = 0; k < components; ++k)
-    {
-      // Slice::Make maps absolute pixel coordinates onto the output without forming an
-      // out-of-range pointer ourselves.
-      frameBuffer.insert(header.Channels[header.Decoded[k]].Name,
-        Imf::Slice::Make(type, static_cast<char*>(output) + 4 * k, window, xStride, yStride));
-    }
-    part.setFrameBuffer(frameBuffer);
-    part.readPixels(window.min.y, window.max.y);
-    return true;
-  }
-  catch (const std::bad_alloc&)
-  {
-    return failure.Set(vtkErrorCode::UnknownError, "out of memory");
-  }
-  catch (const std::exception& e)
-  {
-    return failure.Set(vtkErrorCode::FileFormatError, e.what());
-  }
-  catch (...)
-  {
-    return failure.Set(vtkErrorCode::UnknownError, "unknown exception from OpenEXR");
-  }
+      Imf::MultiPartInputFile file(fileName.c_str(), vtkOpenEXRUseThreadPool(0));
+      Imf::InputPart part(file, header.Part);
+      const Imath::Box2i window = part.header().dataWindow();
+      if (window.min.x != header.DataWindow[0] || window.max.x != header.DataWindow[1] ||
+        window.min.y != header.DataWindow[2] || window.max.y != header.DataWindow[3])
+      {
+        return failure.Set(vtkErrorCode::FileFormatError, "inconsistent data window");
+      }
+      const size_t components = static_cast<size_t>(header.NumberOfComponents);
+      const size_t xStride = 4 * components;
+      const size_t yStride = xStride * static_cast<size_t>(header.Width);
+      const Imf::PixelType type = unsignedOutput ? Imf::UINT : Imf::FLOAT;
+      Imf::FrameBuffer frameBuffer;
+      for (size_t k = 0; k < components; ++k)
+      {
+        // Slice::Make maps absolute pixel coordinates onto the output without forming an
+        // out-of-range pointer ourselves.
+        frameBuffer.insert(header.Channels[header.Decoded[k]].Name,
+          Imf::Slice::Make(type, static_cast<char*>(output) + 4 * k, window, xStride, yStride));
+      }
+      part.setFrameBuffer(frameBuffer);
+      part.readPixels(window.min.y, window.max.y);
+      return true;
+    });
 }
