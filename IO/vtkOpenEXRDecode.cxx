@@ -398,28 +398,35 @@ bool vtkOpenEXRConvertLuminanceChroma(const std::string& fileName, const vtkOpen
       {
         return failure.Set(vtkErrorCode::FileFormatError, "inconsistent data window");
       }
+      // Strips of rows through a small half-float buffer, never a full-size copy: the C++
+      // library keeps the lines its chroma filter needs between consecutive reads.
       const size_t width = static_cast<size_t>(header.Width);
-      const size_t count = width * static_cast<size_t>(header.Height);
-      std::vector<Imf::Rgba> pixels(count);
-      // The frame buffer is addressed by absolute pixel coordinates; compute its origin with
-      // integer arithmetic because the pointer itself lies outside the vector.
-      const vtkTypeInt64 origin =
-        static_cast<vtkTypeInt64>(header.DataWindow[2]) * header.Width + header.DataWindow[0];
-      const uintptr_t base = reinterpret_cast<uintptr_t>(pixels.data()) -
-        static_cast<uintptr_t>(origin) * sizeof(Imf::Rgba);
-      input.setFrameBuffer(reinterpret_cast<Imf::Rgba*>(base), 1, width);
-      input.readPixels(header.DataWindow[2], header.DataWindow[3]);
-
       const int components = header.NumberOfComponents;
-      for (size_t p = 0; p < count; ++p)
+      const int stripRows = 64;
+      std::vector<Imf::Rgba> strip(width * stripRows);
+      for (int y0 = header.DataWindow[2]; y0 <= header.DataWindow[3]; y0 += stripRows)
       {
-        float* out = output + p * static_cast<size_t>(components);
-        out[0] = pixels[p].r;
-        out[1] = pixels[p].g;
-        out[2] = pixels[p].b;
-        if (components == 4)
+        const int y1 = std::min(y0 + stripRows - 1, header.DataWindow[3]);
+        // The frame buffer is addressed by absolute pixel coordinates; compute its origin with
+        // integer arithmetic because the pointer itself lies outside the strip.
+        const vtkTypeInt64 origin =
+          static_cast<vtkTypeInt64>(y0) * header.Width + header.DataWindow[0];
+        const uintptr_t base = reinterpret_cast<uintptr_t>(strip.data()) -
+          static_cast<uintptr_t>(origin) * sizeof(Imf::Rgba);
+        input.setFrameBuffer(reinterpret_cast<Imf::Rgba*>(base), 1, width);
+        input.readPixels(y0, y1);
+        const size_t first = static_cast<size_t>(y0 - header.DataWindow[2]) * width;
+        const size_t count = static_cast<size_t>(y1 - y0 + 1) * width;
+        for (size_t p = 0; p < count; ++p)
         {
-          out[3] = pixels[p].a;
+          float* out = output + (first + p) * static_cast<size_t>(components);
+          out[0] = strip[p].r;
+          out[1] = strip[p].g;
+          out[2] = strip[p].b;
+          if (components == 4)
+          {
+            out[3] = strip[p].a;
+          }
         }
       }
       return true;

@@ -352,12 +352,10 @@ bool vtkOpenEXRReadHeader(vtkOpenEXRCoreFile& file, int partIndex, const std::st
     return failure.Set(vtkErrorCode::FileFormatError, "invalid compression");
   }
 
-  // Refuse before allocating: width * height against the pixel limit, and width * height *
-  // (components * 4 [+ 8 for the half RGBA buffer of the luminance/chroma conversion]) against
-  // the byte limit, with overflow checks.
+  // Refuse before allocating: width * height against the pixel limit, and the decoded output,
+  // width * height * components * 4 bytes, against the byte limit, with overflow checks.
   vtkTypeUInt64 pixels = 0, bytes = 0;
-  const vtkTypeUInt64 perPixel =
-    4u * static_cast<vtkTypeUInt64>(header.NumberOfComponents) + (header.LuminanceChroma ? 8 : 0);
+  const vtkTypeUInt64 perPixel = 4u * static_cast<vtkTypeUInt64>(header.NumberOfComponents);
   const bool representable = CheckedMultiply(static_cast<vtkTypeUInt64>(header.Width),
                                static_cast<vtkTypeUInt64>(header.Height), pixels) &&
     CheckedMultiply(pixels, perPixel, bytes);

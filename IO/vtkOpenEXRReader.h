@@ -119,8 +119,8 @@ public:
 
   ///@{
   /**
-   * Largest decoded image, in bytes (width * height * components * 4, plus the 8 bytes per
-   * pixel that the luminance/chroma conversion needs), that the reader agrees to allocate.
+   * Largest decoded image, in bytes (width * height * components * 4), that the reader agrees
+   * to allocate.
    * Larger images are refused before any pixel memory is allocated, which bounds the memory a
    * damaged or hostile header can request. Default 4 GiB.
    */

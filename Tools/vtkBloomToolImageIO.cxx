@@ -32,8 +32,8 @@ InputImage ReadInput(const std::string& path, vtkTypeUInt64 maximumPixels, Error
   progress.Watch(reader);
   reader->SetFileName(path.c_str());
   reader->SetMaximumImagePixels(maximumPixels);
-  // Up to 4 float components and the luminance/chroma conversion's 8 bytes per pixel.
-  reader->SetMaximumImageBytes(std::max(reader->GetMaximumImageBytes(), maximumPixels * 24));
+  // Up to 4 float components per pixel.
+  reader->SetMaximumImageBytes(std::max(reader->GetMaximumImageBytes(), maximumPixels * 16));
   reader->Update();
   for (std::string& message : errors.Messages)
   {
