@@ -47,7 +47,7 @@
  * and decompresses the chunks on several threads (vtkSMPTools), and the reader unpacks each
  * into the output after checking that its size matches the channel layout; the output is the
  * only full-size buffer. Luminance/chroma files go through the same validation and
- * decompression before Imf::RgbaInputFile reads them. Only regular files are opened. Channels
+ * decompression before Imf::RgbaInputFile reads them (in strips). Only regular files are opened. Channels
  * other than luminance/chroma must not be subsampled.
  * Every failure is reported with vtkErrorMacro (so an ErrorEvent observer sees it), sets the
  * error code (GetErrorCode(): vtkErrorCode::FileNotFoundError, FileFormatError, ...) and
