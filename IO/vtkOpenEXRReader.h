@@ -47,11 +47,11 @@
  * and decompresses the chunks on several threads (vtkSMPTools), and the reader unpacks each
  * into the output after checking that its size matches the channel layout; the output is the
  * only full-size buffer. Luminance/chroma files go through the same validation and
- * decompression before Imf::RgbaInputFile reads them (in strips). Only regular files are opened. Channels
- * other than luminance/chroma must not be subsampled.
- * Every failure is reported with vtkErrorMacro (so an ErrorEvent observer sees it), sets the
- * error code (GetErrorCode(): vtkErrorCode::FileNotFoundError, FileFormatError, ...) and
- * leaves the output empty: no point data and an empty extent.
+ * decompression before Imf::RgbaInputFile reads them (in strips). Only regular files are opened.
+ * Channels other than luminance/chroma must not be subsampled. Every failure is reported with
+ * vtkErrorMacro (so an ErrorEvent observer sees it), sets the error code (GetErrorCode():
+ * vtkErrorCode::FileNotFoundError, FileFormatError, ...) and leaves the output empty: no point data
+ * and an empty extent.
  */
 
 #ifndef vtkOpenEXRReader_h
