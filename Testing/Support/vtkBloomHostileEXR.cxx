@@ -107,6 +107,7 @@ struct Part
   std::string Name;      // multi-part and deep parts
   std::string Type;      // "scanlineimage", "tiledimage", "deepscanline", "deeptile"
   int64_t ChunkCount = -1;
+  Bytes Extra; // more attributes, written last
 
   Bytes Header() const
   {
@@ -152,7 +153,7 @@ struct Part
     {
       h.Attribute("chunkCount", "int", Bytes().I32(static_cast<int32_t>(this->ChunkCount)));
     }
-    return h;
+    return h.Append(this->Extra);
   }
 
   Bytes NameValue() const
@@ -320,6 +321,22 @@ std::vector<File> MakeAll()
     "window-inverted.exr", "data window with min > max", Window(small, 100, 100, 0, 0), 96, 96));
   files.push_back(SinglePart("window-one-row-2g-wide.exr", "a 2^31 - 1 pixel wide row",
     Window(small, 0, 0, INT32_MAX - 1, 0), 96, 96));
+
+  // Attributes whose sizes claim gigabytes.
+  {
+    Part a = small;
+    a.Extra.Str("comments").Str("string").I32(0x7ffffff0).Str("abc");
+    files.push_back(
+      SinglePart("attribute-size-2g.exr", "a string attribute of 2^31 bytes", a, 96, 96));
+    Part b = small;
+    b.Extra.Str("preview").Str("preview").I32(24).U32(65535).U32(65535).Zeros(16);
+    files.push_back(
+      SinglePart("preview-65535x65535.exr", "a 65535x65535 preview image", b, 96, 96));
+    Part c = small;
+    c.Extra.Str("multiView").Str("stringvector").I32(8).I32(0x7ffffff0).Str("abc");
+    files.push_back(
+      SinglePart("stringvector-2g.exr", "a string vector entry of 2^31 bytes", c, 96, 96));
+  }
 
   // Tiled layouts.
   {
