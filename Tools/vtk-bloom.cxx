@@ -142,9 +142,9 @@ Exit status: 0 success, 1 failure, 2 usage error. An input file is never overwri
 const std::vector<std::string> CommonOptionNames = { "--exposure", "--max-pixels", "-o", "--format",
   "--stats" };
 const std::vector<std::string> BloomOptionNames = { "--preset", "--threshold", "--knee", "--mode",
-  "--clamp-luminance", "--strength", "--composite", "--tint", "--levels", "--start-level",
-  "--down", "--up", "--accumulate", "--blur-sigma", "--blur-radius", "--blur-spacing",
-  "--blur-iterations", "--level-weights" };
+  "--clamp-luminance", "--strength", "--composite", "--tint", "--levels", "--start-level", "--down",
+  "--up", "--accumulate", "--blur-sigma", "--blur-radius", "--blur-spacing", "--blur-iterations",
+  "--level-weights" };
 const std::vector<std::string> BlurOptionNames = { "--radius", "--sigma", "--border", "--kernel" };
 const std::vector<std::string> RenderOptionNames = { "--size", "--precision", "--color-by",
   "--range", "--emit-range", "--contour", "--background", "--colormap", "--representation",
@@ -473,8 +473,8 @@ int RunFiles(const Arguments& args, const CommonOptions& common, vtkImageAlgorit
 
 int RunImage(int argc, char* argv[])
 {
-  Arguments args(
-    argc, argv, 2, { "--karis", "--quiet", "--exact" }, Join({ CommonOptionNames, BloomOptionNames }));
+  Arguments args(argc, argv, 2, { "--karis", "--quiet", "--exact" },
+    Join({ CommonOptionNames, BloomOptionNames }));
   CommonOptions common;
   TakeCommon(args, common);
   std::string value;

@@ -1,6 +1,7 @@
 // vtk-bloom command-line tool: the user's own datasets. Which files a path names (one dataset,
-// a .pvd time series or a numbered file pattern), reading them with VTK's own readers, and the
-// scene that shows them (colouring, representation, contours, what emits, the camera).
+// a .pvd time series or a numbered file pattern) and reading them with VTK's own readers
+// (vtkBloomToolDataFiles.cxx), and the scene that shows them: colouring, representation,
+// contours, what emits, the camera (vtkBloomToolData.cxx).
 #ifndef vtkBloomToolData_h
 #define vtkBloomToolData_h
 
@@ -8,16 +9,21 @@
 
 #include <vtkSmartPointer.h>
 
+#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
 
 class vtkBloomPass;
 class vtkDataObject;
+class vtkDataSet;
 class vtkRenderer;
 
 namespace vtkBloomTool
 {
+/// Every dataset leaf of a data object (the object itself when it is a dataset).
+void ForEachDataSet(vtkDataObject* data, const std::function<void(vtkDataSet*)>& visit);
+
 /// True when `path` names a dataset (by its extension: .vti .vtu .vtp .vts .vtr .vtm .vtk
 /// .pvd, or a numbered pattern such as step_%04d.vtu) rather than an example scene.
 bool IsDatasetPath(const std::string& path);
