@@ -178,103 +178,6 @@ bool vtkImageBloom::BloomIsDisabled(int colours, size_t levels) const
 }
 
 //------------------------------------------------------------------------------
-std::vector<std::string> vtkImageBloom::GetPresetNames()
-{
-  return { "webgpu-market", "mip-atlas", "ping-pong", "crt-halfres" };
-}
-
-//------------------------------------------------------------------------------
-bool vtkImageBloom::SetPreset(const char* name)
-{
-  const std::string preset = name ? name : "";
-  const auto names = vtkImageBloom::GetPresetNames();
-  if (std::find(names.begin(), names.end(), preset) == names.end())
-  {
-    vtkErrorMacro(<< "Unknown bloom preset '" << preset
-                  << "'; expected webgpu-market, mip-atlas, ping-pong or crt-halfres.");
-    return false;
-  }
-  // Shared defaults; each preset then states what it changes.
-  this->ClampLuminance = VTK_FLOAT_MAX;
-  this->Knee = 0.5;
-  this->LimitLevelsToImageSize = false;
-  this->DownsampleKernel = vtkImagePyramidDown::JIMENEZ13;
-  this->KarisAverage = false;
-  this->BlurTapSpacing = 1.0;
-  this->BlurIterations = 1;
-  this->UpsampleKernel = vtkImagePyramidUp::TENT;
-  this->AccumulateMode = CASCADE;
-  this->LevelWeights.clear();
-  this->CompositeMode = ADDITIVE;
-  this->Tint[0] = this->Tint[1] = this->Tint[2] = 1.0;
-
-  if (preset == "webgpu-market")
-  {
-    // Seed 000: threshold into half-res mip 0, 13-tap down x4, 9-tap blur with taps
-    // radius = 0.5 texels apart, tent up-and-add, original + bloom * strength.
-    this->ThresholdMode = vtkImageBloomThreshold::SMOOTHSTEP_KNEE;
-    this->Threshold = 0.8;
-    this->StartLevel = 1;
-    this->NumberOfLevels = 5;
-    this->BlurKernel = BLUR_CUSTOM;
-    this->BlurHalfKernel = vtkBloomKernels::WebGPUMarketBlurHalfKernel();
-    this->BlurTapSpacing = 0.5;
-    this->Strength = 1.0;
-  }
-  else if (preset == "mip-atlas")
-  {
-    // Seed 001: the HDR scene's mip chain, LODs 2..8 blurred by a 7x7 binomial, averaged with
-    // weights 1 1 1 .8 .8 .6 .4 times 0.14, lerp(colour, bloom, 0.52).
-    this->ThresholdMode = vtkImageBloomThreshold::NONE;
-    this->Threshold = 0.0;
-    this->StartLevel = 0;
-    this->NumberOfLevels = 9;
-    this->LimitLevelsToImageSize = true;
-    this->DownsampleKernel = vtkImagePyramidDown::BOX;
-    this->BlurKernel = BLUR_CUSTOM;
-    this->BlurHalfKernel = vtkBloomKernels::Binomial7HalfKernel();
-    this->AccumulateMode = DIRECT;
-    const double lod[7] = { 1.0, 1.0, 1.0, 0.8, 0.8, 0.6, 0.4 };
-    this->LevelWeights = { 0.0, 0.0 };
-    for (double w : lod)
-    {
-      this->LevelWeights.push_back(0.14 * w);
-    }
-    this->CompositeMode = LERP;
-    this->Strength = 0.52;
-  }
-  else if (preset == "ping-pong")
-  {
-    // Seed 002: hard luminance mask at full resolution, 32 x (horizontal + vertical) 13-tap
-    // blur passes, original + blur.
-    this->ThresholdMode = vtkImageBloomThreshold::HARD_LUMINANCE;
-    this->Threshold = 1.0;
-    this->StartLevel = 0;
-    this->NumberOfLevels = 1;
-    this->BlurKernel = BLUR_CUSTOM;
-    this->BlurHalfKernel = vtkBloomKernels::PingPongBlurHalfKernel();
-    this->BlurIterations = 32;
-    this->Strength = 1.0;
-  }
-  else // crt-halfres
-  {
-    // Seed 003: per-channel max(src - 0.8, 0) at half resolution, 9-tap Gaussian sigma 1.8,
-    // scene + 1.5 * bloom.
-    this->ThresholdMode = vtkImageBloomThreshold::PER_CHANNEL;
-    this->Threshold = 0.8;
-    this->StartLevel = 1;
-    this->NumberOfLevels = 1;
-    this->BlurKernel = BLUR_GAUSSIAN;
-    this->BlurStandardDeviation = 1.8;
-    this->BlurRadius = 4;
-    this->BlurGaussianKind = vtkBloomKernels::GAUSSIAN_SAMPLED;
-    this->Strength = 1.5;
-  }
-  this->Modified();
-  return true;
-}
-
-//------------------------------------------------------------------------------
 void vtkImageBloom::SetBlurHalfKernel(int n, const double* weights)
 {
   this->SetBlurHalfKernel(std::vector<double>(weights, weights + std::max(n, 0)));
@@ -431,21 +334,12 @@ int vtkImageBloom::RequestData(
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
   vtkImageData* output = vtkImageData::GetData(outInfo);
   this->ResetStatistics();
-  if (!input || !input->GetPointData()->GetScalars())
-  {
-    vtkErrorMacro(<< "Input has no point scalars.");
-    output->Initialize();
-    return 0;
-  }
-  const int nc = input->GetNumberOfScalarComponents();
-  if (!vtkImageSeparableAlgorithm::IsSupportedInput(input->GetScalarType(), nc))
-  {
-    vtkErrorMacro(<< "Input scalars must be float or double with 1 to 4 components; got "
-                  << input->GetScalarTypeAsString() << " with " << nc << " components.");
-    output->Initialize();
-    return 0;
-  }
-  if (!this->CheckParameters())
+  this->LastRunWasFast = false;
+  this->LastBloomSkipped = false;
+  this->LastPassedThrough = false;
+  this->LastLevelsBuilt = -1;
+  this->LastRunUsedAVX2 = false;
+  if (!this->CheckInput(input))
   {
     output->Initialize();
     return 0;
@@ -454,19 +348,72 @@ int vtkImageBloom::RequestData(
   input->GetExtent(inExt);
   const int width = inExt[1] - inExt[0] + 1;
   const int height = inExt[3] - inExt[2] + 1;
-  if (width <= 0 || height <= 0 || inExt[5] < inExt[4])
+  this->UpdateChain(width, height);
+  if (this->ExecutionMode == FAST && this->ExecuteFast(input, outInfo, output))
   {
-    vtkErrorMacro(<< "Input is empty.");
-    output->Initialize();
-    return 0;
+    this->ComputeOutputStatistics(
+      input, output, static_cast<int>(this->ComputeLevelSizes(width, height).size()));
+    this->UpdateProgress(1.0);
+    return 1;
   }
 
-  this->LastRunWasFast = false;
-  this->LastBloomSkipped = false;
-  this->LastPassedThrough = false;
-  this->LastLevelsBuilt = -1;
-  this->LastRunUsedAVX2 = false;
-  const int colours = nc >= 3 ? 3 : 1;
+  // REFERENCE, in double precision: the chain's steps one after the other.
+  this->AllocateOutputData(output, outInfo);
+  std::vector<vtkBloomBuffer> levels;
+  int levelsUsed = 0;
+  const bool bright = this->ThresholdStep(input, levels, levelsUsed); // 1. bright pass
+  if (bright)
+  {
+    this->DownsampleStep(levels); // 2. pyramid down
+    this->BlurStep(levels);       // 3. blur the levels
+  }
+  if (this->AbortExecute)
+  {
+    return 1;
+  }
+  vtkBloomBuffer bloom;
+  if (bright)
+  {
+    this->UpsampleStep(levels, width, height, bloom); // 4. up and accumulate
+  }
+  this->Composite(input, bright ? &bloom : nullptr, output); // 5. composite
+  this->ComputeOutputStatistics(input, output, levelsUsed);  // 6. statistics
+  this->UpdateProgress(1.0);
+  return 1;
+}
+
+//------------------------------------------------------------------------------
+bool vtkImageBloom::CheckInput(vtkImageData* input)
+{
+  if (!input || !input->GetPointData()->GetScalars())
+  {
+    vtkErrorMacro(<< "Input has no point scalars.");
+    return false;
+  }
+  const int nc = input->GetNumberOfScalarComponents();
+  if (!vtkImageSeparableAlgorithm::IsSupportedInput(input->GetScalarType(), nc))
+  {
+    vtkErrorMacro(<< "Input scalars must be float or double with 1 to 4 components; got "
+                  << input->GetScalarTypeAsString() << " with " << nc << " components.");
+    return false;
+  }
+  if (!this->CheckParameters())
+  {
+    return false;
+  }
+  int inExt[6];
+  input->GetExtent(inExt);
+  if (inExt[1] < inExt[0] || inExt[3] < inExt[2] || inExt[5] < inExt[4])
+  {
+    vtkErrorMacro(<< "Input is empty.");
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::UpdateChain(int width, int height)
+{
   // The operators of every step, shared by both paths here and by vtkBloomPass; built again
   // only when a parameter (this filter's MTime) or the size changed.
   if (this->GetMTime() > this->ChainTime || width != this->ChainSize[0] ||
@@ -477,57 +424,71 @@ int vtkImageBloom::RequestData(
     this->ChainSize[0] = width;
     this->ChainSize[1] = height;
   }
-  const vtkBloomChain& chain = *this->Chain;
-  if (this->ExecutionMode == FAST)
-  {
-    vtkBloomFastChainParameters p;
-    p.ThresholdMode = this->ThresholdMode;
-    p.Threshold = this->Threshold;
-    p.Knee = this->Knee;
-    p.ClampLuminance = this->ClampLuminance;
-    p.Chain = &chain;
-    p.LevelSizes = this->ComputeLevelSizes(width, height);
-    for (size_t i = 0; i < p.LevelSizes.size(); ++i)
-    {
-      p.LevelWeights.push_back(this->GetLevelWeight(static_cast<int>(i)));
-    }
-    p.DownsampleKernel = this->DownsampleKernel;
-    p.KarisAverage = this->KarisAverage;
-    p.BlurIterations = this->BlurIterations;
-    p.AccumulateMode = this->AccumulateMode;
-    p.CompositeMode = this->CompositeMode;
-    p.Strength = this->Strength;
-    std::copy(this->Tint, this->Tint + 3, p.Tint);
-    p.SanitizeNonFinite = this->SanitizeNonFinite;
-    p.SkipEmpty = this->SkipEmptyBloom;
-    p.TrimPyramid = this->TrimPyramid;
-    p.RestrictToBrightRegion = this->RestrictToBrightRegion;
-    p.SkipDisabled = this->SkipDisabledEffects;
-    p.UseAVX2 = this->UseAVX2;
-    if (vtkBloomFastChain::Supports(p, input))
-    {
-      int outExt[6];
-      std::copy(inExt, inExt + 6, outExt);
-      if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
-      {
-        outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
-      }
-      vtkBloomFastChainReport report;
-      this->FastChain->Execute(p, input, outExt, output, report, this);
-      this->LastRunWasFast = true;
-      this->LastBloomSkipped = report.ChainSkipped;
-      this->LastPassedThrough = report.PassedThrough;
-      this->LastLevelsBuilt = report.LevelsBuilt;
-      this->LastWorkspaceBytes = static_cast<vtkIdType>(report.WorkspaceBytes);
-      this->LastRunUsedAVX2 = report.UsedAVX2;
-      this->ComputeOutputStatistics(input, output, static_cast<int>(p.LevelSizes.size()));
-      this->UpdateProgress(1.0);
-      return 1;
-    }
-  }
-  this->AllocateOutputData(output, outInfo);
+}
 
-  // 1. Bright pass at the start level: bilinear fetch first, threshold second.
+//------------------------------------------------------------------------------
+bool vtkImageBloom::ExecuteFast(vtkImageData* input, vtkInformation* outInfo, vtkImageData* output)
+{
+  int inExt[6];
+  input->GetExtent(inExt);
+  const int width = inExt[1] - inExt[0] + 1;
+  const int height = inExt[3] - inExt[2] + 1;
+  vtkBloomFastChainParameters p;
+  p.ThresholdMode = this->ThresholdMode;
+  p.Threshold = this->Threshold;
+  p.Knee = this->Knee;
+  p.ClampLuminance = this->ClampLuminance;
+  p.Chain = this->Chain;
+  p.LevelSizes = this->ComputeLevelSizes(width, height);
+  for (size_t i = 0; i < p.LevelSizes.size(); ++i)
+  {
+    p.LevelWeights.push_back(this->GetLevelWeight(static_cast<int>(i)));
+  }
+  p.DownsampleKernel = this->DownsampleKernel;
+  p.KarisAverage = this->KarisAverage;
+  p.BlurIterations = this->BlurIterations;
+  p.AccumulateMode = this->AccumulateMode;
+  p.CompositeMode = this->CompositeMode;
+  p.Strength = this->Strength;
+  std::copy(this->Tint, this->Tint + 3, p.Tint);
+  p.SanitizeNonFinite = this->SanitizeNonFinite;
+  p.SkipEmpty = this->SkipEmptyBloom;
+  p.TrimPyramid = this->TrimPyramid;
+  p.RestrictToBrightRegion = this->RestrictToBrightRegion;
+  p.SkipDisabled = this->SkipDisabledEffects;
+  p.UseAVX2 = this->UseAVX2;
+  if (!vtkBloomFastChain::Supports(p, input))
+  {
+    return false;
+  }
+  int outExt[6];
+  std::copy(inExt, inExt + 6, outExt);
+  if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))
+  {
+    outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
+  }
+  vtkBloomFastChainReport report;
+  this->FastChain->Execute(p, input, outExt, output, report, this);
+  this->LastRunWasFast = true;
+  this->LastBloomSkipped = report.ChainSkipped;
+  this->LastPassedThrough = report.PassedThrough;
+  this->LastLevelsBuilt = report.LevelsBuilt;
+  this->LastWorkspaceBytes = static_cast<vtkIdType>(report.WorkspaceBytes);
+  this->LastRunUsedAVX2 = report.UsedAVX2;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkImageBloom::ThresholdStep(
+  vtkImageData* input, std::vector<vtkBloomBuffer>& levels, int& levelsUsed)
+{
+  // Bilinear fetch to the start level first, threshold second.
+  int inExt[6];
+  input->GetExtent(inExt);
+  const int width = inExt[1] - inExt[0] + 1;
+  const int height = inExt[3] - inExt[2] + 1;
+  const int colours = input->GetNumberOfScalarComponents() >= 3 ? 3 : 1;
+  const vtkBloomChain& chain = *this->Chain;
   vtkBloomBuffer source;
   const int wholeLo[3] = { inExt[0], inExt[2], inExt[4] };
   vtkBloomImport(input, inExt, wholeLo, 0, colours, source);
@@ -539,70 +500,76 @@ int vtkImageBloom::RequestData(
   const auto sizes = this->ComputeLevelSizes(width, height);
   if (sizes.empty() || (this->SkipDisabledEffects && this->BloomIsDisabled(colours, sizes.size())))
   {
-    // No level fits (LimitLevelsToImageSize with a start level beyond the mip chain): there
-    // is nothing to bloom, and the composite sees a black bloom image.
+    // No level fits (LimitLevelsToImageSize with a start level beyond the mip chain), or the
+    // bloom term is zero: there is nothing to bloom, and the composite sees a black bloom.
     this->LastBloomSkipped = !sizes.empty();
-    this->Composite(input, nullptr, output);
-    this->ComputeOutputStatistics(input, output, 0);
-    this->UpdateProgress(1.0);
-    return 1;
+    levelsUsed = 0;
+    return false;
   }
-  const size_t n = chain.Levels.size();
-  std::vector<vtkBloomBuffer> levels(n);
+  levelsUsed = static_cast<int>(sizes.size());
+  levels.resize(chain.Levels.size());
   if (chain.SourceIsIdentity)
   {
-    levels[0] = source;
+    levels[0] = std::move(source);
   }
   else
   {
     Resample2D(source, chain.Source.X, chain.Source.Y, levels[0]);
   }
-  {
-    vtkBloomBuffer& bright = levels[0];
-    const int mode = this->ThresholdMode;
-    const double t = this->Threshold, knee = this->Knee, clampLum = this->ClampLuminance;
-    // The chain maps non-finite colours in every mode, NONE included, so that nothing
-    // non-finite ever enters the pyramid (a no-op on finite samples).
-    const double ceiling = std::min(clampLum, static_cast<double>(VTK_FLOAT_MAX));
-    vtkSMPTools::For(0, static_cast<vtkIdType>(bright.GetNumberOfSamples()),
-      [&](vtkIdType begin, vtkIdType end)
+  vtkBloomBuffer& bright = levels[0];
+  const int mode = this->ThresholdMode;
+  const double t = this->Threshold, knee = this->Knee, clampLum = this->ClampLuminance;
+  // The chain maps non-finite colours in every mode, NONE included, so that nothing
+  // non-finite ever enters the pyramid (a no-op on finite samples).
+  const double ceiling = std::min(clampLum, static_cast<double>(VTK_FLOAT_MAX));
+  vtkSMPTools::For(0, static_cast<vtkIdType>(bright.GetNumberOfSamples()),
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      for (vtkIdType s = begin; s < end; ++s)
       {
-        for (vtkIdType s = begin; s < end; ++s)
+        double* colour = bright.Data.data() + s * colours;
+        if (colours == 3)
         {
-          double* colour = bright.Data.data() + s * colours;
-          if (colours == 3)
-          {
-            vtkBloomMapNonFinite<3>(colour, ceiling);
-            vtkBloomBrightPass<3>(colour, mode, t, knee, clampLum);
-          }
-          else
-          {
-            vtkBloomMapNonFinite<1>(colour, ceiling);
-            vtkBloomBrightPass<1>(colour, mode, t, knee, clampLum);
-          }
+          vtkBloomMapNonFinite<3>(colour, ceiling);
+          vtkBloomBrightPass<3>(colour, mode, t, knee, clampLum);
         }
-      });
-  }
+        else
+        {
+          vtkBloomMapNonFinite<1>(colour, ceiling);
+          vtkBloomBrightPass<1>(colour, mode, t, knee, clampLum);
+        }
+      }
+    });
   if (this->SkipEmptyBloom &&
-    std::all_of(levels[0].Data.begin(), levels[0].Data.end(), [](double v) { return v == 0.0; }))
+    std::all_of(bright.Data.begin(), bright.Data.end(), [](double v) { return v == 0.0; }))
   {
     // Nothing is bright: every level, and so the bloom, is zero.
     this->LastBloomSkipped = true;
-    this->Composite(input, nullptr, output);
-    this->ComputeOutputStatistics(input, output, static_cast<int>(sizes.size()));
-    this->UpdateProgress(1.0);
-    return 1;
+    levels.clear();
+    return false;
   }
   this->UpdateProgress(0.15);
+  return true;
+}
 
-  // 2. The pyramid, each level from the unblurred level above it.
-  for (size_t i = 1; i < n && !this->AbortExecute; ++i)
+//------------------------------------------------------------------------------
+void vtkImageBloom::DownsampleStep(std::vector<vtkBloomBuffer>& levels)
+{
+  // Each level from the unblurred level above it.
+  const vtkBloomChain& chain = *this->Chain;
+  for (size_t i = 1; i < levels.size() && !this->AbortExecute; ++i)
   {
     Downsample(levels[i - 1], chain.Levels[i], levels[i]);
   }
   this->UpdateProgress(0.35);
+}
 
-  // 3. Blur each level that contributes; repeated passes are folded into one operator.
+//------------------------------------------------------------------------------
+void vtkImageBloom::BlurStep(std::vector<vtkBloomBuffer>& levels)
+{
+  // Each level that contributes; repeated passes are folded into one operator.
+  const vtkBloomChain& chain = *this->Chain;
+  const size_t n = levels.size();
   for (size_t i = 0; i < n && !this->AbortExecute; ++i)
   {
     const vtkBloomChain::Level& level = chain.Levels[i];
@@ -614,18 +581,21 @@ int vtkImageBloom::RequestData(
     }
     this->UpdateProgress(0.35 + 0.35 * (i + 1) / n);
   }
-  if (this->AbortExecute)
-  {
-    return 1;
-  }
+}
 
-  // 4. Accumulate into a full-resolution bloom image.
-  vtkBloomBuffer bloom;
+//------------------------------------------------------------------------------
+void vtkImageBloom::UpsampleStep(
+  std::vector<vtkBloomBuffer>& levels, int width, int height, vtkBloomBuffer& bloom)
+{
+  // Accumulate the levels into a full-resolution bloom image: each straight to full size
+  // (DIRECT), or up the cascade level by level (CASCADE).
+  const vtkBloomChain& chain = *this->Chain;
+  const size_t n = levels.size();
   if (chain.AccumulateMode == DIRECT)
   {
     int lo[3] = { 0, 0, 0 };
-    int size[3] = { width, height, source.Size[2] };
-    bloom.Allocate(lo, size, colours);
+    int size[3] = { width, height, levels[0].Size[2] };
+    bloom.Allocate(lo, size, levels[0].NumberOfComponents);
     for (size_t i = 0; i < n; ++i)
     {
       const vtkBloomChain::Level& level = chain.Levels[i];
@@ -670,12 +640,6 @@ int vtkImageBloom::RequestData(
   }
   levels.clear();
   this->UpdateProgress(0.9);
-
-  // 5. Composite over the requested output extent.
-  this->Composite(input, &bloom, output);
-  this->ComputeOutputStatistics(input, output, static_cast<int>(sizes.size()));
-  this->UpdateProgress(1.0);
-  return 1;
 }
 
 //------------------------------------------------------------------------------

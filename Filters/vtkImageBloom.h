@@ -400,6 +400,25 @@ protected:
   /// vtkErrorMacro and false when a parameter is out of its domain.
   bool CheckParameters();
 
+  ///@{
+  /**
+   * The steps of RequestData. CheckInput: vtkErrorMacro and false for input the filter cannot
+   * use. UpdateChain: rebuild the operators when a parameter or the size changed.
+   * ExecuteFast: the fused float32 chain, false when it does not apply (see the class
+   * description). The REFERENCE chain, in double: ThresholdStep (the bright pass at the start
+   * level into levels[0]; false, with levelsUsed, when there is nothing to bloom),
+   * DownsampleStep, BlurStep and UpsampleStep (up and accumulate into `bloom`).
+   */
+  bool CheckInput(vtkImageData* input);
+  void UpdateChain(int width, int height);
+  bool ExecuteFast(vtkImageData* input, vtkInformation* outInfo, vtkImageData* output);
+  bool ThresholdStep(vtkImageData* input, std::vector<vtkBloomBuffer>& levels, int& levelsUsed);
+  void DownsampleStep(std::vector<vtkBloomBuffer>& levels);
+  void BlurStep(std::vector<vtkBloomBuffer>& levels);
+  void UpsampleStep(
+    std::vector<vtkBloomBuffer>& levels, int width, int height, vtkBloomBuffer& bloom);
+  ///@}
+
   /// Step 5 over the output's extent; a null bloom means a black one.
   void Composite(vtkImageData* input, const vtkBloomBuffer* bloom, vtkImageData* output);
 

@@ -1,0 +1,109 @@
+// vtkImageBloom's presets: the four seed bloom systems as ../shared/seeds/PRESETS.md pins them,
+// with their known defects fixed (docs/presets.md lists each deviation). A table of parameter
+// values, apart from the filter's pipeline code in vtkImageBloom.cxx.
+#include "vtkImageBloom.h"
+
+#include "vtkImageBloomThreshold.h"
+#include "vtkImagePyramidDown.h"
+#include "vtkImagePyramidUp.h"
+
+#include <algorithm>
+#include <string>
+#include <vector>
+
+//------------------------------------------------------------------------------
+std::vector<std::string> vtkImageBloom::GetPresetNames()
+{
+  return { "webgpu-market", "mip-atlas", "ping-pong", "crt-halfres" };
+}
+
+//------------------------------------------------------------------------------
+bool vtkImageBloom::SetPreset(const char* name)
+{
+  const std::string preset = name ? name : "";
+  const auto names = vtkImageBloom::GetPresetNames();
+  if (std::find(names.begin(), names.end(), preset) == names.end())
+  {
+    vtkErrorMacro(<< "Unknown bloom preset '" << preset
+                  << "'; expected webgpu-market, mip-atlas, ping-pong or crt-halfres.");
+    return false;
+  }
+  // Shared defaults; each preset then states what it changes.
+  this->ClampLuminance = VTK_FLOAT_MAX;
+  this->Knee = 0.5;
+  this->LimitLevelsToImageSize = false;
+  this->DownsampleKernel = vtkImagePyramidDown::JIMENEZ13;
+  this->KarisAverage = false;
+  this->BlurTapSpacing = 1.0;
+  this->BlurIterations = 1;
+  this->UpsampleKernel = vtkImagePyramidUp::TENT;
+  this->AccumulateMode = CASCADE;
+  this->LevelWeights.clear();
+  this->CompositeMode = ADDITIVE;
+  this->Tint[0] = this->Tint[1] = this->Tint[2] = 1.0;
+
+  if (preset == "webgpu-market")
+  {
+    // Seed 000: threshold into half-res mip 0, 13-tap down x4, 9-tap blur with taps
+    // radius = 0.5 texels apart, tent up-and-add, original + bloom * strength.
+    this->ThresholdMode = vtkImageBloomThreshold::SMOOTHSTEP_KNEE;
+    this->Threshold = 0.8;
+    this->StartLevel = 1;
+    this->NumberOfLevels = 5;
+    this->BlurKernel = BLUR_CUSTOM;
+    this->BlurHalfKernel = vtkBloomKernels::WebGPUMarketBlurHalfKernel();
+    this->BlurTapSpacing = 0.5;
+    this->Strength = 1.0;
+  }
+  else if (preset == "mip-atlas")
+  {
+    // Seed 001: the HDR scene's mip chain, LODs 2..8 blurred by a 7x7 binomial, averaged with
+    // weights 1 1 1 .8 .8 .6 .4 times 0.14, lerp(colour, bloom, 0.52).
+    this->ThresholdMode = vtkImageBloomThreshold::NONE;
+    this->Threshold = 0.0;
+    this->StartLevel = 0;
+    this->NumberOfLevels = 9;
+    this->LimitLevelsToImageSize = true;
+    this->DownsampleKernel = vtkImagePyramidDown::BOX;
+    this->BlurKernel = BLUR_CUSTOM;
+    this->BlurHalfKernel = vtkBloomKernels::Binomial7HalfKernel();
+    this->AccumulateMode = DIRECT;
+    const double lod[7] = { 1.0, 1.0, 1.0, 0.8, 0.8, 0.6, 0.4 };
+    this->LevelWeights = { 0.0, 0.0 };
+    for (double w : lod)
+    {
+      this->LevelWeights.push_back(0.14 * w);
+    }
+    this->CompositeMode = LERP;
+    this->Strength = 0.52;
+  }
+  else if (preset == "ping-pong")
+  {
+    // Seed 002: hard luminance mask at full resolution, 32 x (horizontal + vertical) 13-tap
+    // blur passes, original + blur.
+    this->ThresholdMode = vtkImageBloomThreshold::HARD_LUMINANCE;
+    this->Threshold = 1.0;
+    this->StartLevel = 0;
+    this->NumberOfLevels = 1;
+    this->BlurKernel = BLUR_CUSTOM;
+    this->BlurHalfKernel = vtkBloomKernels::PingPongBlurHalfKernel();
+    this->BlurIterations = 32;
+    this->Strength = 1.0;
+  }
+  else // crt-halfres
+  {
+    // Seed 003: per-channel max(src - 0.8, 0) at half resolution, 9-tap Gaussian sigma 1.8,
+    // scene + 1.5 * bloom.
+    this->ThresholdMode = vtkImageBloomThreshold::PER_CHANNEL;
+    this->Threshold = 0.8;
+    this->StartLevel = 1;
+    this->NumberOfLevels = 1;
+    this->BlurKernel = BLUR_GAUSSIAN;
+    this->BlurStandardDeviation = 1.8;
+    this->BlurRadius = 4;
+    this->BlurGaussianKind = vtkBloomKernels::GAUSSIAN_SAMPLED;
+    this->Strength = 1.5;
+  }
+  this->Modified();
+  return true;
+}
