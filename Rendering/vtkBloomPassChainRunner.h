@@ -1,0 +1,172 @@
+/**
+ * @file   vtkBloomPassChainRunner.h
+ * @brief  (private to vtkBloomPass) runs a vtkBloomChain as full-screen GLSL passes on the
+ *         targets of a vtkBloomPassResources, and composites the result.
+ *
+ * Every pass is step(Y X source) (see glsl/vtkBloomPassFS.glsl): up to two banded operators of
+ * the chain, one along x and one along y, then one point-wise step. Each axis is drawn in
+ * segments: the operator's translation-invariant interior from uniform weights (OP_PERIODIC),
+ * its borders from the operator's rows uploaded as a small R32F texture (OP_TABLE). One
+ * program per variant (evaluation modes, interior taps, step, flags) is made on first use,
+ * from the one shader file and #defines.
+ */
+
+#ifndef vtkBloomPassChainRunner_h
+#define vtkBloomPassChainRunner_h
+
+#include "vtkSmartPointer.h" // For the operator textures
+
+#include <map>
+#include <memory>
+#include <string>
+#include <vector>
+
+class vtkBloomLinearOperator;
+class vtkBloomPassResources;
+struct vtkBloomPassTarget;
+class vtkImageBloom;
+class vtkObject;
+class vtkOpenGLQuadHelper;
+class vtkShaderProgram;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkBloomPassChainRunner
+{
+public:
+  /// `owner` reports the errors; `resources` holds the chain, the context and the targets.
+  vtkBloomPassChainRunner(vtkObject* owner, vtkBloomPassResources& resources);
+  ~vtkBloomPassChainRunner();
+  vtkBloomPassChainRunner(const vtkBloomPassChainRunner&) = delete;
+  vtkBloomPassChainRunner& operator=(const vtkBloomPassChainRunner&) = delete;
+
+  /**
+   * Bloom `emission` (the scene's or the emitters' colour; with `mask`, only where the
+   * emitters are the visible surface) into the chain's targets. Returns false when the bloom
+   * is skipped (no level, a disabled effect or nothing bright): the composite then keeps the
+   * scene only.
+   */
+  bool Run(vtkImageBloom* parameters, vtkTextureObject* emission, bool mask);
+
+  /**
+   * out = keep * scene + Strength * Tint * bloom into `target`, or into the bound framebuffer
+   * at `origin` when `target` is null.
+   */
+  void Composite(vtkBloomPassTarget* target, const int origin[2], bool bloom);
+
+  /// Copy `source` into `target`, or into the bound framebuffer at `origin` when it is null.
+  void Copy(vtkBloomPassTarget* target, const int origin[2], vtkBloomPassTarget& source);
+
+  /// Free the operator textures; call it before the chain is rebuilt.
+  void ReleaseOperators(vtkWindow* w);
+
+  /// Free the operator textures, the programs and the query.
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+  int Passes = 0; ///< passes drawn since it was last set to 0, the composite included
+
+private:
+  // Values shared with vtkBloomPassFS.glsl, emitted into the shader as #defines.
+  enum
+  {
+    OP_IDENTITY = 0,
+    OP_TABLE = 1,
+    OP_PERIODIC = 2
+  };
+  enum
+  {
+    STEP_SCALE = 0,
+    STEP_THRESHOLD,
+    STEP_KARIS_TERM,
+    STEP_KARIS_NORMALIZE,
+    STEP_ADD,
+    STEP_COMPOSITE
+  };
+  static std::string ShaderConstants();
+
+  /**
+   * The translation-invariant interior of a vtkBloomLinearOperator: output samples
+   * [Begin, End) whose rows repeat with period Period, First advancing by Stride per period
+   * (a convolution: period 1, stride 1; a 2:1 resample: 1, 2; a 1:2 resample: 2, 1). It is read
+   * from the operator's own rows, in the float precision the GPU uses, so a pass that computes
+   * the interior from these constants evaluates exactly the operator's weights.
+   */
+  struct Interior
+  {
+    int Begin = 0;
+    int End = 0; ///< End == Begin: no interior
+    int Period = 0;
+    int Stride = 0;
+    int Taps = 0;
+    int First[2] = { 0, 0 };    ///< First of rows Begin and Begin + 1 (period 2)
+    std::vector<float> Weights; ///< Period rows of Taps weights
+
+    static Interior Find(const vtkBloomLinearOperator& op);
+
+    /// The #defines of OP_PERIODIC along `axis` ("X" or "Y"); the weights are uniforms.
+    std::string Defines(const char* axis) const;
+  };
+
+  // A range of output samples along one axis and how the pass evaluates it.
+  struct Segment
+  {
+    int Begin;
+    int End;
+    int Mode;
+  };
+
+  /// What one pass computes: step(Y X source), see vtkBloomPassFS.glsl.
+  struct PassSpec
+  {
+    vtkTextureObject* Source = nullptr;
+    const int* SourceSize = nullptr;
+    const vtkBloomLinearOperator* X = nullptr; ///< null: identity along x
+    const vtkBloomLinearOperator* Y = nullptr; ///< null: identity along y
+    int Step = STEP_SCALE;
+    double Weight = 1.0;
+    bool Blend = false;       ///< add to the target instead of replacing it
+    bool ReadsSource = false; ///< the chain's source: depth mask and sanitizing apply
+    bool DiscardZero = false; ///< leave zero results unwritten (counted by the query)
+    bool CompositeBloom = true;
+    vtkTextureObject* Addend = nullptr; ///< STEP_ADD
+  };
+
+  vtkTextureObject* OperatorTexture(const vtkBloomLinearOperator& op);
+  const Interior& InteriorOf(const vtkBloomLinearOperator& op);
+
+  /// The output samples along one axis: the periodic interior, and the borders by table.
+  std::vector<Segment> Segments(const vtkBloomLinearOperator* op, int size);
+
+  /// The program of one variant, made on first use; null (with an error) if it fails.
+  vtkOpenGLQuadHelper* Program(const std::string& variant);
+  std::string Variant(const PassSpec& spec, int xMode, int yMode);
+
+  /**
+   * One pass into `target` (or the bound framebuffer when null, at `origin`): one draw per
+   * combination of x and y segments, each with the program of its evaluation modes.
+   */
+  void Pass(vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec);
+  void SetStepUniforms(vtkShaderProgram* program, int step);
+  void Clear(vtkBloomPassTarget& target);
+
+  vtkObject* Owner;
+  vtkBloomPassResources& Resources;
+
+  // Derived from the chain's operators, dropped when the chain is rebuilt.
+  std::map<const vtkBloomLinearOperator*, vtkSmartPointer<vtkTextureObject>> Operators;
+  std::map<const vtkBloomLinearOperator*, Interior> Interiors;
+
+  // One program per variant (operator modes, interior weights, step, flags), made on first use.
+  std::map<std::string, std::unique_ptr<vtkOpenGLQuadHelper>> Programs;
+
+  // Occlusion query that counts the non-zero samples of the bright pass (SkipEmptyBloom).
+  unsigned int Query = 0;
+
+  // Values of the current evaluation that the programs read as uniforms.
+  bool MaskSource = false;
+  bool SanitizeSource = false;
+  bool SanitizeOutput = false;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkBloomPassChainRunner.h

@@ -1,0 +1,203 @@
+// The OpenGL resources of vtkBloomPass: saved state, float targets, the scene target and the
+// chain's targets (see vtkBloomPassResources.h).
+#include "vtkBloomPassResources.h"
+
+#include "vtkDataArray.h"
+#include "vtkImageBloom.h"
+#include "vtkImageData.h"
+#include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkPointData.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+//------------------------------------------------------------------------------
+vtkBloomPassSavedState::vtkBloomPassSavedState(vtkOpenGLState* state)
+  : Blend(state, GL_BLEND)
+  , Depth(state, GL_DEPTH_TEST)
+  , Scissor(state, GL_SCISSOR_TEST)
+  , BlendFunc(state)
+  , Viewport(state)
+  , ScissorBox(state)
+  , ClearColor(state)
+{
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassTarget::Allocate(
+  vtkOpenGLRenderWindow* context, int width, int height, unsigned int format)
+{
+  if (this->Color && this->Size[0] == width && this->Size[1] == height)
+  {
+    return;
+  }
+  this->Release(context);
+  this->Color = vtkSmartPointer<vtkTextureObject>::New();
+  this->Color->SetContext(context);
+  this->Color->SetInternalFormat(format);
+  this->Color->SetMinificationFilter(vtkTextureObject::Nearest);
+  this->Color->SetMagnificationFilter(vtkTextureObject::Nearest);
+  this->Color->SetWrapS(vtkTextureObject::ClampToEdge);
+  this->Color->SetWrapT(vtkTextureObject::ClampToEdge);
+  this->Color->Allocate2D(width, height, 4, VTK_FLOAT);
+  this->FBO = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+  this->FBO->SetContext(context);
+  context->GetState()->PushFramebufferBindings();
+  this->FBO->Bind();
+  this->FBO->AddColorAttachment(0, this->Color);
+  this->FBO->ActivateDrawBuffer(0);
+  context->GetState()->PopFramebufferBindings();
+  this->Size[0] = width;
+  this->Size[1] = height;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassTarget::Release(vtkWindow* window)
+{
+  if (this->FBO)
+  {
+    this->FBO->ReleaseGraphicsResources(window);
+  }
+  if (this->Color)
+  {
+    this->Color->ReleaseGraphicsResources(window);
+  }
+  this->FBO = nullptr;
+  this->Color = nullptr;
+  this->Size[0] = this->Size[1] = 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassTarget::Read(vtkOpenGLRenderWindow* context, vtkImageData* image)
+{
+  context->MakeCurrent();
+  vtkOpenGLState* state = context->GetState();
+  state->PushFramebufferBindings();
+  this->FBO->Bind(GL_READ_FRAMEBUFFER);
+  this->FBO->ActivateReadBuffer(0);
+  image->Initialize();
+  image->SetExtent(0, this->Size[0] - 1, 0, this->Size[1] - 1, 0, 0);
+  image->SetOrigin(0.0, 0.0, 0.0);
+  image->SetSpacing(1.0, 1.0, 1.0);
+  image->AllocateScalars(VTK_FLOAT, 4);
+  image->GetPointData()->GetScalars()->SetName("RGBA");
+  state->vtkglPixelStorei(GL_PACK_ALIGNMENT, 1);
+  glReadPixels(0, 0, this->Size[0], this->Size[1], GL_RGBA, GL_FLOAT, image->GetScalarPointer());
+  state->PopFramebufferBindings();
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassSceneTarget::AllocateWithDepth(
+  vtkOpenGLRenderWindow* context, int width, int height, unsigned int format)
+{
+  if (this->Color && this->Size[0] == width && this->Size[1] == height)
+  {
+    return;
+  }
+  this->Allocate(context, width, height, format);
+  this->Depth = vtkSmartPointer<vtkTextureObject>::New();
+  this->Depth->SetContext(context);
+  this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+  context->GetState()->PushFramebufferBindings();
+  this->FBO->Bind();
+  this->FBO->AddDepthAttachment(this->Depth);
+  context->GetState()->PopFramebufferBindings();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassSceneTarget::ReleaseAll(vtkWindow* window)
+{
+  this->Release(window);
+  if (this->Depth)
+  {
+    this->Depth->ReleaseGraphicsResources(window);
+  }
+  this->Depth = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassResources::AllocateScene(int width, int height, bool emitters)
+{
+  this->Scene.AllocateWithDepth(this->Context, width, height, this->Format);
+  if (emitters)
+  {
+    this->Emitter.AllocateWithDepth(this->Context, width, height, this->Format);
+  }
+  else
+  {
+    this->Emitter.ReleaseAll(this->Context);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassResources::ChainIsStale(vtkImageBloom* parameters, int width, int height) const
+{
+  // The chain depends on the size and the parameters only.
+  return this->ChainTime == 0 || this->ChainTime < parameters->GetMTime() ||
+    this->Chain.Width != width || this->Chain.Height != height;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassResources::BuildChain(vtkImageBloom* parameters, int width, int height)
+{
+  vtkOpenGLRenderWindow* window = this->Context;
+  const vtkMTimeType parametersTime = parameters->GetMTime();
+  this->ReleaseChain(window);
+  this->Chain.Build(parameters, width, height);
+  this->ChainTime = parametersTime;
+  const size_t n = this->Chain.Levels.size();
+  // The scene is stored at the requested precision; the chain always runs on 32-bit floats,
+  // so that half-float rounding does not compound over its dozen passes.
+  const unsigned int chainFormat = GL_RGBA32F;
+  this->Levels.resize(n);
+  this->Work.resize(n);
+  this->Accum.resize(this->Chain.AccumulateMode == vtkImageBloom::CASCADE ? n : 0);
+  for (size_t i = 0; i < n; ++i)
+  {
+    const int* size = this->Chain.Levels[i].Size;
+    this->Levels[i].Allocate(window, size[0], size[1], chainFormat);
+    this->Work[i].Allocate(window, size[0], size[1], chainFormat);
+    if (!this->Accum.empty())
+    {
+      this->Accum[i].Allocate(window, size[0], size[1], chainFormat);
+    }
+  }
+  if (n > 0)
+  {
+    // The x passes run on the levels only (the source fetch and the final resample are
+    // two-dimensional passes), so level 0 is the largest intermediate.
+    this->Temp.Allocate(
+      window, this->Chain.Levels[0].Size[0], this->Chain.Levels[0].Size[1], chainFormat);
+    if (this->Chain.AccumulateMode == vtkImageBloom::DIRECT)
+    {
+      this->Full.Allocate(window, width, height, chainFormat);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassResources::ReleaseChain(vtkWindow* w)
+{
+  for (auto* list : { &this->Levels, &this->Work, &this->Accum })
+  {
+    for (auto& t : *list)
+    {
+      t.Release(w);
+    }
+    list->clear();
+  }
+  this->Temp.Release(w);
+  this->Full.Release(w);
+  this->ChainTime = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassResources::ReleaseAll(vtkWindow* w)
+{
+  this->ReleaseChain(w);
+  this->Scene.ReleaseAll(w);
+  this->Emitter.ReleaseAll(w);
+  this->Result.Release(w);
+  this->Context = nullptr;
+}

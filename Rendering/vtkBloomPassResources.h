@@ -1,0 +1,110 @@
+/**
+ * @file   vtkBloomPassResources.h
+ * @brief  (private to vtkBloomPass) the pass's OpenGL resources: the float targets, the scene
+ *         and emitter targets with their depth, the chain's intermediate targets, and the GL
+ *         state the pass saves while it runs.
+ *
+ * vtkBloomPass makes these on first use and remakes them when the size, the precision or the
+ * parameters change; vtkBloomPassChainRunner draws into them. Every target is a float RGBA
+ * texture with nearest filtering and clamped borders: the passes read it with exact texel
+ * fetches, never through hardware filtering.
+ */
+
+#ifndef vtkBloomPassResources_h
+#define vtkBloomPassResources_h
+
+#include "vtkBloomChain.h"   // For the chain the targets are sized for
+#include "vtkOpenGLState.h"  // For the scoped savers
+#include "vtkSmartPointer.h" // For the targets' textures and framebuffers
+#include "vtkType.h"         // For vtkMTimeType
+
+#include <vector>
+
+class vtkImageBloom;
+class vtkImageData;
+class vtkOpenGLFramebufferObject;
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+//------------------------------------------------------------------------------
+// The OpenGL state the pass changes, restored when it returns.
+struct vtkBloomPassSavedState
+{
+  vtkOpenGLState::ScopedglEnableDisable Blend, Depth, Scissor;
+  vtkOpenGLState::ScopedglBlendFuncSeparate BlendFunc;
+  vtkOpenGLState::ScopedglViewport Viewport;
+  vtkOpenGLState::ScopedglScissor ScissorBox;
+  vtkOpenGLState::ScopedglClearColor ClearColor;
+
+  explicit vtkBloomPassSavedState(vtkOpenGLState* state);
+};
+
+//------------------------------------------------------------------------------
+// A float texture and the framebuffer that renders into it.
+struct vtkBloomPassTarget
+{
+  vtkSmartPointer<vtkTextureObject> Color;
+  vtkSmartPointer<vtkOpenGLFramebufferObject> FBO;
+  int Size[2] = { 0, 0 };
+
+  /// Make the target at width x height in `format`, unless it already has that size.
+  void Allocate(vtkOpenGLRenderWindow* context, int width, int height, unsigned int format);
+  void Release(vtkWindow* window);
+
+  /**
+   * Read the colour back into `image` as float RGBA (origin 0, spacing 1, row 0 at the
+   * bottom) and return true. The framebuffer bindings are restored afterwards.
+   */
+  bool Read(vtkOpenGLRenderWindow* context, vtkImageData* image);
+};
+
+//------------------------------------------------------------------------------
+// A float colour target with a depth texture, for the delegate's render.
+struct vtkBloomPassSceneTarget : vtkBloomPassTarget
+{
+  vtkSmartPointer<vtkTextureObject> Depth;
+
+  void AllocateWithDepth(
+    vtkOpenGLRenderWindow* context, int width, int height, unsigned int format);
+  void ReleaseAll(vtkWindow* window);
+};
+
+//------------------------------------------------------------------------------
+class vtkBloomPassResources
+{
+public:
+  vtkOpenGLRenderWindow* Context = nullptr;
+  unsigned int Format = 0; ///< the scene's internal format: GL_RGBA16F or GL_RGBA32F
+
+  vtkBloomPassSceneTarget Scene;
+  vtkBloomPassSceneTarget Emitter;
+  vtkBloomPassTarget Result;
+
+  // The chain and its resources, rebuilt when the size or the parameters change.
+  vtkBloomChain Chain;
+  vtkMTimeType ChainTime = 0;
+  std::vector<vtkBloomPassTarget> Levels; // L_i
+  std::vector<vtkBloomPassTarget> Work;   // blurred levels and Karis sums
+  std::vector<vtkBloomPassTarget> Accum;  // CASCADE accumulation A_i
+  vtkBloomPassTarget Temp;                // the output of every x pass, at most the size of level 0
+  vtkBloomPassTarget Full;                // DIRECT: the full-size bloom
+
+  /**
+   * Make the scene target at width x height in Format, and the emitters' when `emitters`
+   * (else release it).
+   */
+  void AllocateScene(int width, int height, bool emitters);
+
+  /// Whether the chain was built for older parameters or for another size.
+  bool ChainIsStale(vtkImageBloom* parameters, int width, int height) const;
+
+  /// Build the chain for `parameters` at width x height and make its targets.
+  void BuildChain(vtkImageBloom* parameters, int width, int height);
+
+  void ReleaseChain(vtkWindow* w);
+  void ReleaseAll(vtkWindow* w);
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkBloomPassResources.h
