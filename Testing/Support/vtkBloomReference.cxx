@@ -1,6 +1,9 @@
 // An independent float64 reference of the vtk-bloom filters; see vtkBloomReference.h.
 // Deliberately written as GPU-style passes and direct convolutions, not as separable operators,
 // so that it shares no structure (and no code) with the library it checks.
+// It is long for that reason: every kernel, resampling step and preset of the specification is
+// written out here a second time, in one place, rather than split across files a reader would
+// have to assemble.
 #include "vtkBloomReference.h"
 
 #include <vtkDataArray.h>
