@@ -340,8 +340,8 @@ void vtkOpenEXRWriter::WriteData()
     const char* base = nullptr;
     if (pixelType == Imf::UINT && vtkUnsignedIntArray::FastDownCast(scalars))
     {
-      base = reinterpret_cast<const char*>(
-        vtkUnsignedIntArray::FastDownCast(scalars)->GetPointer(0));
+      base =
+        reinterpret_cast<const char*>(vtkUnsignedIntArray::FastDownCast(scalars)->GetPointer(0));
     }
     else if (pixelType == Imf::UINT)
     {
