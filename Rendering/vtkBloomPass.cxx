@@ -22,6 +22,8 @@
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
+#include <algorithm>
+#include <cmath>
 #include <vector>
 
 vtkStandardNewMacro(vtkBloomPass);
@@ -211,14 +213,23 @@ vtkSmartPointer<vtkActor> vtkBloomPass::CreateScalarRangeEmitter(
   {
     return nullptr;
   }
-  // Sample the actor's colours over the range; everything outside maps to black.
+  // Sample the actor's colours over the range; everything outside maps to black. The mapper
+  // may colour by texture (InterpolateScalarsBeforeMapping), where a value exactly at an end
+  // of the table's range samples the edge between the range and the black outside it: the
+  // table spans the range widened by a hair, so that both ends themselves glow.
+  const double hair =
+    1e-6 * std::max({ range[1] - range[0], std::abs(range[0]), std::abs(range[1]), 1e-300 });
+  const double lo = range[0] - hair, hi = range[1] + hair;
   const int n = 256;
   vtkNew<vtkLookupTable> table;
   table->SetNumberOfTableValues(n);
-  table->SetTableRange(range[0], range[1]);
+  table->SetTableRange(lo, hi);
+  // Vectors are mapped as the actor maps them (magnitude or one component).
+  table->SetVectorMode(colours->GetVectorMode());
+  table->SetVectorComponent(colours->GetVectorComponent());
   for (int i = 0; i < n; ++i)
   {
-    const double value = range[0] + (range[1] - range[0]) * (i + 0.5) / n;
+    const double value = lo + (hi - lo) * (i + 0.5) / n;
     double rgb[3];
     colours->GetColor(value, rgb);
     table->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
@@ -248,7 +259,7 @@ vtkSmartPointer<vtkActor> vtkBloomPass::CreateScalarRangeEmitter(
   copy->SetColorMode(mapper->GetColorMode());
   copy->SetInterpolateScalarsBeforeMapping(mapper->GetInterpolateScalarsBeforeMapping());
   copy->SetLookupTable(table);
-  copy->SetScalarRange(range[0], range[1]);
+  copy->SetScalarRange(lo, hi);
 
   auto emitter = vtkSmartPointer<vtkActor>::New();
   emitter->ShallowCopy(actor);

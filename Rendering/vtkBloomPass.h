@@ -117,10 +117,11 @@ public:
 
   /**
    * A new actor that draws `actor`'s geometry with its colours only where the mapped scalar
-   * lies in [range[0], range[1]], and black elsewhere: use it as an emitter to make a scalar
-   * range glow. It shares the mapper's input and the actor's transform and property; the
-   * lookup table samples the actor's own table over the range. Returns null when the actor
-   * has no mapper with a lookup table.
+   * lies in [range[0], range[1]] (both ends included), and black elsewhere: use it as an
+   * emitter to make a scalar range glow. It shares the mapper's input and the actor's transform
+   * and property; the lookup table samples the actor's own table over the range and maps
+   * vectors as it does (magnitude or component). Returns null when the actor has no mapper
+   * with a lookup table.
    */
   static vtkSmartPointer<vtkActor> CreateScalarRangeEmitter(vtkActor* actor, const double range[2]);
 

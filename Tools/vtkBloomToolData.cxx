@@ -471,7 +471,6 @@ void DataScene::Build(vtkDataObject* data, const std::string& name, const DataSc
       }
       d.Mapper->SetLookupTable(d.Table);
       d.Mapper->SetScalarRange(d.ColorRange);
-      d.Mapper->SetScalarModeToDefault();
       if (onCells)
       {
         d.Mapper->SetScalarModeToUseCellFieldData();
@@ -508,22 +507,10 @@ void DataScene::Build(vtkDataObject* data, const std::string& name, const DataSc
     {
       // Only the emit range glows: an emitter copy of the actor, black outside the range, its
       // colours lifted to HDR by the gain and unlit (ambient only), as the scalar-field scene.
-      // The emitter colours by texture (InterpolateScalarsBeforeMapping), where a value exactly
-      // at an end of the range samples the edge between the range and the black outside it:
-      // widen the range by a hair so that LO and HI themselves glow.
-      const double hair = 1e-6 *
-        std::max({ options.EmitRange[1] - options.EmitRange[0], std::abs(options.EmitRange[0]),
-          std::abs(options.EmitRange[1]), 1e-300 });
-      const double emitRange[2] = { options.EmitRange[0] - hair, options.EmitRange[1] + hair };
-      d.Emitter = vtkBloomPass::CreateScalarRangeEmitter(d.Actor, emitRange);
+      d.Emitter = vtkBloomPass::CreateScalarRangeEmitter(d.Actor, options.EmitRange);
       if (!d.Emitter)
       {
         throw RunError{ "cannot make the emitter for --emit-range" };
-      }
-      if (auto* table = vtkScalarsToColors::SafeDownCast(d.Emitter->GetMapper()->GetLookupTable()))
-      {
-        table->SetVectorMode(d.Table->GetVectorMode());
-        table->SetVectorComponent(d.Table->GetVectorComponent());
       }
       vtkNew<vtkProperty> glow;
       glow->DeepCopy(property);

@@ -7,9 +7,11 @@
 #include "vtkActor.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
+#include "vtkDoubleArray.h"
 #include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"
+#include "vtkLookupTable.h"
 #include "vtkNew.h"
 #include "vtkOpenEXRReader.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -470,4 +472,58 @@ TEST(RenderingBloomPass, NonFiniteInputFollowsTheCPUPolicy)
     EXPECT_EQ(nonFinite > 0, !sanitize);
   }
   cpu->SetInputData(nullptr);
+}
+
+//------------------------------------------------------------------------------
+// The scalar-range emitter keeps both ends of its range, and maps vectors as the actor does.
+TEST(RenderingBloomPass, ScalarRangeEmitterIncludesItsEndsAndFollowsTheVectorMode)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->Update();
+  vtkNew<vtkDoubleArray> velocity;
+  velocity->SetName("Velocity");
+  velocity->SetNumberOfComponents(3);
+  for (vtkIdType p = 0; p < sphere->GetOutput()->GetNumberOfPoints(); ++p)
+  {
+    velocity->InsertNextTuple3(3.0, 4.0, 0.0); // magnitude 5, component 0 is 3
+  }
+  sphere->GetOutput()->GetPointData()->AddArray(velocity);
+  vtkNew<vtkLookupTable> colours;
+  colours->SetTableRange(0.0, 10.0);
+  colours->SetVectorModeToMagnitude();
+  colours->Build();
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(sphere->GetOutput());
+  mapper->SetLookupTable(colours);
+  mapper->SetScalarModeToUsePointFieldData();
+  mapper->SelectColorArray("Velocity");
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+
+  const double range[2] = { 4.0, 5.0 };
+  auto emitter = vtkBloomPass::CreateScalarRangeEmitter(actor, range);
+  ASSERT_NE(emitter, nullptr);
+  auto* table = vtkScalarsToColors::SafeDownCast(emitter->GetMapper()->GetLookupTable());
+  ASSERT_NE(table, nullptr);
+  EXPECT_EQ(table->GetVectorMode(), vtkScalarsToColors::MAGNITUDE);
+  // The ends glow (not black), values just outside do not.
+  auto brightness = [&](double v)
+  {
+    double rgb[3];
+    table->GetColor(v, rgb);
+    return rgb[0] + rgb[1] + rgb[2];
+  };
+  EXPECT_GT(brightness(4.0), 0.0);
+  EXPECT_GT(brightness(5.0), 0.0);
+  EXPECT_EQ(brightness(3.99), 0.0);
+  EXPECT_EQ(brightness(5.01), 0.0);
+  // The mapped colour of the data (magnitude 5, the top end) is the actor's colour there.
+  vtkSmartPointer<vtkUnsignedCharArray> mapped;
+  mapped.TakeReference(table->MapScalars(velocity, VTK_COLOR_MODE_MAP_SCALARS, -1));
+  unsigned char expected[3];
+  std::memcpy(expected, colours->MapValue(5.0), 3);
+  for (int c = 0; c < 3; ++c)
+  {
+    EXPECT_NEAR(mapped->GetValue(c), expected[c], 2) << c;
+  }
 }
