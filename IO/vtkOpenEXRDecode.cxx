@@ -280,8 +280,6 @@ public:
   {
   }
 
-  void Initialize() {}
-
   void operator()(vtkIdType begin, vtkIdType end)
   {
     std::shared_ptr<vtkOpenEXRChunkDecoder>& decoder = this->Decoders.Local();
@@ -314,8 +312,6 @@ public:
       }
     }
   }
-
-  void Reduce() {}
 
   void Fail(const vtkOpenEXRFailure& failure)
   {

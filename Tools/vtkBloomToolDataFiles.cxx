@@ -201,7 +201,7 @@ vtkSmartPointer<vtkDataObject> ReadDataset(const std::string& file, ErrorCollect
   vtkOutputWindow* window = vtkOutputWindow::GetInstance();
   const int mode = window->GetDisplayMode();
   window->SetDisplayModeToNever();
-  errors.Watch(window);
+  const unsigned long tag = errors.Watch(window);
   vtkSmartPointer<vtkDataObject> data;
   if (Extension(file) == ".vtk")
   {
@@ -228,7 +228,7 @@ vtkSmartPointer<vtkDataObject> ReadDataset(const std::string& file, ErrorCollect
     reader->Update();
     data = reader->GetOutputDataObject(0);
   }
-  window->RemoveAllObservers();
+  window->RemoveObserver(tag);
   window->SetDisplayMode(mode);
   errors.ThrowIfAny("cannot read " + file + ":");
   if (!data)

@@ -225,12 +225,12 @@ void ErrorCollector::OnError(vtkObject*, unsigned long, void* clientData, void* 
 }
 
 //------------------------------------------------------------------------------
-void ErrorCollector::Watch(vtkObject* object)
+unsigned long ErrorCollector::Watch(vtkObject* object)
 {
   vtkNew<vtkCallbackCommand> command;
   command->SetCallback(&ErrorCollector::OnError);
   command->SetClientData(this);
-  object->AddObserver(vtkCommand::ErrorEvent, command);
+  return object->AddObserver(vtkCommand::ErrorEvent, command);
 }
 
 //------------------------------------------------------------------------------

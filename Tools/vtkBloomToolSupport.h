@@ -67,7 +67,8 @@ public:
 class ErrorCollector
 {
 public:
-  void Watch(vtkObject* object);
+  /// Observe `object`'s ErrorEvent; returns the observer's tag (for RemoveObserver).
+  unsigned long Watch(vtkObject* object);
 
   /// Throw a RunError with `context` and every collected message, if any were collected.
   void ThrowIfAny(const std::string& context);
