@@ -349,10 +349,10 @@ int vtkImageBloom::RequestData(
   const int width = inExt[1] - inExt[0] + 1;
   const int height = inExt[3] - inExt[2] + 1;
   this->UpdateChain(width, height);
-  if (this->ExecutionMode == FAST && this->ExecuteFast(input, outInfo, output))
+  int levelsUsed = 0;
+  if (this->ExecutionMode == FAST && this->ExecuteFast(input, outInfo, output, levelsUsed))
   {
-    this->ComputeOutputStatistics(
-      input, output, static_cast<int>(this->ComputeLevelSizes(width, height).size()));
+    this->ComputeOutputStatistics(input, output, levelsUsed);
     this->UpdateProgress(1.0);
     return 1;
   }
@@ -360,7 +360,6 @@ int vtkImageBloom::RequestData(
   // REFERENCE, in double precision: the chain's steps one after the other.
   this->AllocateOutputData(output, outInfo);
   std::vector<vtkBloomBuffer> levels;
-  int levelsUsed = 0;
   const bool bright = this->ThresholdStep(input, levels, levelsUsed); // 1. bright pass
   if (bright)
   {
@@ -427,7 +426,8 @@ void vtkImageBloom::UpdateChain(int width, int height)
 }
 
 //------------------------------------------------------------------------------
-bool vtkImageBloom::ExecuteFast(vtkImageData* input, vtkInformation* outInfo, vtkImageData* output)
+bool vtkImageBloom::ExecuteFast(
+  vtkImageData* input, vtkInformation* outInfo, vtkImageData* output, int& levelsUsed)
 {
   int inExt[6];
   input->GetExtent(inExt);
@@ -461,6 +461,7 @@ bool vtkImageBloom::ExecuteFast(vtkImageData* input, vtkInformation* outInfo, vt
   {
     return false;
   }
+  levelsUsed = static_cast<int>(p.LevelSizes.size());
   int outExt[6];
   std::copy(inExt, inExt + 6, outExt);
   if (outInfo->Has(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT()))

@@ -405,13 +405,14 @@ protected:
    * The steps of RequestData. CheckInput: vtkErrorMacro and false for input the filter cannot
    * use. UpdateChain: rebuild the operators when a parameter or the size changed.
    * ExecuteFast: the fused float32 chain, false when it does not apply (see the class
-   * description). The REFERENCE chain, in double: ThresholdStep (the bright pass at the start
-   * level into levels[0]; false, with levelsUsed, when there is nothing to bloom),
-   * DownsampleStep, BlurStep and UpsampleStep (up and accumulate into `bloom`).
+   * description), with the number of levels it used. The REFERENCE chain, in double: ThresholdStep
+   * (the bright pass at the start level into levels[0]; false, with levelsUsed, when there is
+   * nothing to bloom), DownsampleStep, BlurStep and UpsampleStep (up and accumulate into `bloom`).
    */
   bool CheckInput(vtkImageData* input);
   void UpdateChain(int width, int height);
-  bool ExecuteFast(vtkImageData* input, vtkInformation* outInfo, vtkImageData* output);
+  bool ExecuteFast(
+    vtkImageData* input, vtkInformation* outInfo, vtkImageData* output, int& levelsUsed);
   bool ThresholdStep(vtkImageData* input, std::vector<vtkBloomBuffer>& levels, int& levelsUsed);
   void DownsampleStep(std::vector<vtkBloomBuffer>& levels);
   void BlurStep(std::vector<vtkBloomBuffer>& levels);
