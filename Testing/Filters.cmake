@@ -33,7 +33,8 @@ set(vtkbloom_filters_tests
   TestImageBloomThreshold
   TestBloomStreaming
   TestBloomErrors
-  TestBloomLinearOperator)
+  TestBloomLinearOperator
+  TestBloomFFTConvolution)
 
 foreach (test IN LISTS vtkbloom_filters_tests)
   set(extra)

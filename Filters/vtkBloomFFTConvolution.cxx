@@ -1,0 +1,659 @@
+#include "vtkBloomFFTConvolution.h"
+
+#include "vtkSMPThreadLocal.h"
+#include "vtkSMPTools.h"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <mutex>
+#include <type_traits>
+
+namespace
+{
+// FFTW's planner (and plan destruction) is not thread-safe; executing a plan is.
+std::mutex& PlannerMutex()
+{
+  static std::mutex mutex;
+  return mutex;
+}
+
+// The smallest m >= n whose only prime factors are 2, 3 and 5 (FFTW's fastest sizes).
+int GoodSize(int n)
+{
+  for (int m = std::max(n, 2);; ++m)
+  {
+    int r = m;
+    for (int p : { 2, 3, 5 })
+    {
+      while (r % p == 0)
+      {
+        r /= p;
+      }
+    }
+    if (r == 1)
+    {
+      return m;
+    }
+  }
+}
+
+/**
+ * Gram-Schmidt with column pivoting: B (rows x cols, row-major) ~ U V^T with U orthonormal
+ * (rank x rows) and V^T (rank x cols), stopping once every remaining column's norm is at most
+ * `tolerance`.
+ */
+int Factor(std::vector<double> b, int rows, int cols, double tolerance, std::vector<double>& u,
+  std::vector<double>& vt)
+{
+  std::vector<double> norms(cols, 0.0);
+  auto columnNorm = [&](int c)
+  {
+    double s = 0.0;
+    for (int r = 0; r < rows; ++r)
+    {
+      s += b[r * cols + c] * b[r * cols + c];
+    }
+    return s;
+  };
+  for (int c = 0; c < cols; ++c)
+  {
+    norms[c] = columnNorm(c);
+  }
+  u.clear();
+  vt.clear();
+  int rank = 0;
+  std::vector<double> q(rows);
+  while (rank < std::min(rows, cols))
+  {
+    const int p = static_cast<int>(std::max_element(norms.begin(), norms.end()) - norms.begin());
+    if (!(std::sqrt(norms[p]) > tolerance))
+    {
+      break;
+    }
+    // Two passes of orthogonalization against the previous directions keep q orthonormal.
+    for (int r = 0; r < rows; ++r)
+    {
+      q[r] = b[r * cols + p];
+    }
+    for (int pass = 0; pass < 2; ++pass)
+    {
+      for (int k = 0; k < rank; ++k)
+      {
+        const double* uk = u.data() + static_cast<size_t>(k) * rows;
+        double d = 0.0;
+        for (int r = 0; r < rows; ++r)
+        {
+          d += uk[r] * q[r];
+        }
+        for (int r = 0; r < rows; ++r)
+        {
+          q[r] -= d * uk[r];
+        }
+      }
+    }
+    double length = 0.0;
+    for (int r = 0; r < rows; ++r)
+    {
+      length += q[r] * q[r];
+    }
+    length = std::sqrt(length);
+    if (!(length > 0.0))
+    {
+      break;
+    }
+    for (int r = 0; r < rows; ++r)
+    {
+      q[r] /= length;
+    }
+    u.insert(u.end(), q.begin(), q.end());
+    // Row `rank` of V^T: q^T B; then remove q's part from every column.
+    vt.resize(vt.size() + cols);
+    double* v = vt.data() + static_cast<size_t>(rank) * cols;
+    for (int c = 0; c < cols; ++c)
+    {
+      double d = 0.0;
+      for (int r = 0; r < rows; ++r)
+      {
+        d += q[r] * b[r * cols + c];
+      }
+      v[c] = d;
+      for (int r = 0; r < rows; ++r)
+      {
+        b[r * cols + c] -= d * q[r];
+      }
+      norms[c] = columnNorm(c);
+    }
+    ++rank;
+  }
+  return rank;
+}
+
+template <typename P>
+struct Fftw;
+
+template <>
+struct Fftw<float>
+{
+  using Complex = fftwf_complex;
+  static void* Malloc(size_t n) { return fftwf_malloc(n); }
+  static void Free(void* p) { fftwf_free(p); }
+  static void* PlanForward(int n, float* in, Complex* out)
+  {
+    return fftwf_plan_dft_r2c_1d(n, in, out, FFTW_ESTIMATE);
+  }
+  static void* PlanInverse(int n, Complex* in, float* out)
+  {
+    return fftwf_plan_dft_c2r_1d(n, in, out, FFTW_ESTIMATE);
+  }
+  static void Forward(void* plan, float* in, Complex* out)
+  {
+    fftwf_execute_dft_r2c(static_cast<fftwf_plan>(plan), in, out);
+  }
+  static void Inverse(void* plan, Complex* in, float* out)
+  {
+    fftwf_execute_dft_c2r(static_cast<fftwf_plan>(plan), in, out);
+  }
+  static void Destroy(void* plan) { fftwf_destroy_plan(static_cast<fftwf_plan>(plan)); }
+};
+
+template <>
+struct Fftw<double>
+{
+  using Complex = fftw_complex;
+  static void* Malloc(size_t n) { return fftw_malloc(n); }
+  static void Free(void* p) { fftw_free(p); }
+  static void* PlanForward(int n, double* in, Complex* out)
+  {
+    return fftw_plan_dft_r2c_1d(n, in, out, FFTW_ESTIMATE);
+  }
+  static void* PlanInverse(int n, Complex* in, double* out)
+  {
+    return fftw_plan_dft_c2r_1d(n, in, out, FFTW_ESTIMATE);
+  }
+  static void Forward(void* plan, double* in, Complex* out)
+  {
+    fftw_execute_dft_r2c(static_cast<fftw_plan>(plan), in, out);
+  }
+  static void Inverse(void* plan, Complex* in, double* out)
+  {
+    fftw_execute_dft_c2r(static_cast<fftw_plan>(plan), in, out);
+  }
+  static void Destroy(void* plan) { fftw_destroy_plan(static_cast<fftw_plan>(plan)); }
+};
+
+template <typename P>
+void MakePlans(int n, void*& forward, void*& inverse)
+{
+  using F = Fftw<P>;
+  P* real = static_cast<P*>(F::Malloc(sizeof(P) * n));
+  auto* complex = static_cast<typename F::Complex*>(F::Malloc(sizeof(P) * 2 * (n / 2 + 1)));
+  forward = F::PlanForward(n, real, complex);
+  inverse = F::PlanInverse(n, complex, real);
+  F::Free(real);
+  F::Free(complex);
+}
+}
+
+struct vtkBloomFFTConvolution::Block
+{
+  int Row0 = 0;
+  int Rows = 0;
+  int Col0 = 0;
+  int Cols = 0;
+  int Rank = 0;
+  std::vector<double> U;  ///< Rank x Rows
+  std::vector<double> Vt; ///< Rank x Cols
+};
+
+//------------------------------------------------------------------------------
+vtkBloomFFTConvolution::Workspace::~Workspace()
+{
+  if (this->Single)
+  {
+    Fftw<float>::Free(this->Real);
+    Fftw<float>::Free(this->Complex);
+  }
+  else
+  {
+    Fftw<double>::Free(this->Real);
+    Fftw<double>::Free(this->Complex);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomFFTConvolution::Workspace::Reserve(int n, bool single)
+{
+  if (this->Capacity >= n && this->Single == single && this->Real)
+  {
+    return;
+  }
+  this->~Workspace();
+  this->Single = single;
+  this->Capacity = n;
+  const size_t bytes = single ? sizeof(float) : sizeof(double);
+  this->Real = single ? Fftw<float>::Malloc(bytes * n) : Fftw<double>::Malloc(bytes * n);
+  this->Complex = single ? Fftw<float>::Malloc(bytes * 2 * (n / 2 + 1))
+                         : Fftw<double>::Malloc(bytes * 2 * (n / 2 + 1));
+}
+
+//------------------------------------------------------------------------------
+vtkBloomFFTConvolution::vtkBloomFFTConvolution() = default;
+
+//------------------------------------------------------------------------------
+vtkBloomFFTConvolution::~vtkBloomFFTConvolution()
+{
+  this->Release();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomFFTConvolution::Release()
+{
+  std::lock_guard<std::mutex> lock(PlannerMutex());
+  for (void** plan : { &this->Forward, &this->Inverse })
+  {
+    if (*plan)
+    {
+      this->Single ? Fftw<float>::Destroy(*plan) : Fftw<double>::Destroy(*plan);
+      *plan = nullptr;
+    }
+  }
+  this->Ready = false;
+}
+
+//------------------------------------------------------------------------------
+double vtkBloomFFTConvolution::DirectCost(const vtkBloomLinearOperator& op)
+{
+  double nonzero = 0.0;
+  for (double w : op.Weights)
+  {
+    nonzero += w != 0.0 ? 1.0 : 0.0;
+  }
+  return nonzero;
+}
+
+//------------------------------------------------------------------------------
+double vtkBloomFFTConvolution::Cost() const
+{
+  if (!this->Ready)
+  {
+    return std::numeric_limits<double>::infinity();
+  }
+  double cost = FFTCostFactor * this->N * std::log2(static_cast<double>(this->N)) + 4.0 * this->N;
+  for (const Block& b : this->Corrections)
+  {
+    cost += static_cast<double>(b.Rank) * (b.Rows + b.Cols);
+  }
+  return cost;
+}
+
+//------------------------------------------------------------------------------
+int vtkBloomFFTConvolution::GetCorrectionRank(int side) const
+{
+  for (const Block& b : this->Corrections)
+  {
+    if ((side == 0) == (b.Row0 == 0))
+    {
+      return b.Rank;
+    }
+  }
+  return 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomFFTConvolution::Build(const vtkBloomLinearOperator& op, int border, bool single)
+{
+  this->Release();
+  this->Corrections.clear();
+  const int n = op.InputSize;
+  if (n != op.OutputSize || n < 2 || op.Width < 1)
+  {
+    return false;
+  }
+  const vtkBloomLinearOperator::InvariantRange range = op.FindInvariantRange(1, 1);
+  if (range.Begin >= range.End || range.Stride != 1)
+  {
+    return false;
+  }
+  // The kernel of the invariant rows, without its zero ends: row j reads x[j + offset + k].
+  const int mid = (range.Begin + range.End) / 2;
+  const size_t width = static_cast<size_t>(op.Width);
+  const double* row = op.Weights.data() + mid * width;
+  int k0 = 0, k1 = op.Width - 1;
+  while (k0 <= k1 && row[k0] == 0.0)
+  {
+    ++k0;
+  }
+  while (k1 >= k0 && row[k1] == 0.0)
+  {
+    --k1;
+  }
+  if (k0 > k1)
+  {
+    return false;
+  }
+  const std::vector<double> kernel(row + k0, row + k1 + 1);
+  const int taps = static_cast<int>(kernel.size());
+  const int offset = op.First[mid] - mid + k0;
+  this->Size = n;
+  this->Border = border;
+  this->Single = single;
+  this->PadLeft = std::max(0, -offset);
+  this->PadRight = std::max(0, offset + taps - 1);
+  this->N = GoodSize(n + this->PadLeft + this->PadRight);
+
+  // The kernel's spectrum for a circular convolution whose output j sits at PadLeft + j.
+  {
+    std::vector<double> h(this->N, 0.0);
+    for (int k = 0; k < taps; ++k)
+    {
+      const long long m = ((-(offset + k)) % this->N + this->N) % this->N;
+      h[m] += kernel[k];
+    }
+    std::vector<fftw_complex> spectrum(this->N / 2 + 1);
+    {
+      std::lock_guard<std::mutex> lock(PlannerMutex());
+      fftw_plan plan = fftw_plan_dft_r2c_1d(this->N, h.data(), spectrum.data(), FFTW_ESTIMATE);
+      fftw_execute(plan);
+      fftw_destroy_plan(plan);
+    }
+    this->SpectrumD.resize(2 * spectrum.size());
+    this->SpectrumF.resize(2 * spectrum.size());
+    for (size_t q = 0; q < spectrum.size(); ++q)
+    {
+      for (int part = 0; part < 2; ++part)
+      {
+        this->SpectrumD[2 * q + part] = spectrum[q][part] / this->N;
+        this->SpectrumF[2 * q + part] = static_cast<float>(this->SpectrumD[2 * q + part]);
+      }
+    }
+  }
+
+  // D = M - T on the rows outside the invariant range, one block per end.
+  for (int side = 0; side < 2; ++side)
+  {
+    const int r0 = side == 0 ? 0 : range.End;
+    const int r1 = side == 0 ? range.Begin : n;
+    if (r0 >= r1)
+    {
+      continue;
+    }
+    // The columns the rows touch (M's support and T's folded taps) bound the block.
+    int w0 = n, w1 = -1;
+    for (int j = r0; j < r1; ++j)
+    {
+      w0 = std::min(w0, op.First[j]);
+      w1 = std::max(w1, std::min(n - 1, op.First[j] + op.Width - 1));
+      for (int k = 0; k < taps; ++k)
+      {
+        const int i = vtkBloomLinearOperator::FoldIndex(j + offset + k, n, border);
+        if (i >= 0)
+        {
+          w0 = std::min(w0, i);
+          w1 = std::max(w1, i);
+        }
+      }
+    }
+    const int span = w1 - w0 + 1;
+    std::vector<std::vector<double>> rows(r1 - r0, std::vector<double>(span, 0.0));
+    int c0 = n, c1 = -1;
+    for (int j = r0; j < r1; ++j)
+    {
+      std::vector<double>& d = rows[j - r0];
+      for (size_t k = 0; k < width && op.First[j] + static_cast<int>(k) < n; ++k)
+      {
+        d[op.First[j] + k - w0] += op.Weights[j * width + k];
+      }
+      for (int k = 0; k < taps; ++k)
+      {
+        const int i = vtkBloomLinearOperator::FoldIndex(j + offset + k, n, border);
+        if (i >= 0)
+        {
+          d[i - w0] -= kernel[k];
+        }
+      }
+      for (int i = 0; i < span; ++i)
+      {
+        if (d[i] != 0.0)
+        {
+          c0 = std::min(c0, i + w0);
+          c1 = std::max(c1, i + w0);
+        }
+      }
+    }
+    if (c1 < c0)
+    {
+      continue;
+    }
+    Block block;
+    block.Row0 = r0;
+    block.Rows = r1 - r0;
+    block.Col0 = c0;
+    block.Cols = c1 - c0 + 1;
+    std::vector<double> dense(static_cast<size_t>(block.Rows) * block.Cols);
+    for (int r = 0; r < block.Rows; ++r)
+    {
+      std::copy(rows[r].begin() + (c0 - w0), rows[r].begin() + (c1 - w0) + 1,
+        dense.begin() + static_cast<size_t>(r) * block.Cols);
+    }
+    block.Rank = Factor(std::move(dense), block.Rows, block.Cols, 1e-12, block.U, block.Vt);
+    if (block.Rank > 0)
+    {
+      this->Corrections.push_back(std::move(block));
+    }
+  }
+
+  // The outputs each input sample reaches, made monotone so that a range's reach is its ends'.
+  this->ReachLo.assign(n, n);
+  this->ReachHi.assign(n, -1);
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = op.First[j]; i < std::min(n, op.First[j] + op.Width); ++i)
+    {
+      this->ReachLo[i] = std::min(this->ReachLo[i], j);
+      this->ReachHi[i] = std::max(this->ReachHi[i], j);
+    }
+  }
+  for (int i = n - 2; i >= 0; --i)
+  {
+    this->ReachLo[i] = std::min(this->ReachLo[i], this->ReachLo[i + 1]);
+  }
+  for (int i = 1; i < n; ++i)
+  {
+    this->ReachHi[i] = std::max(this->ReachHi[i], this->ReachHi[i - 1]);
+  }
+
+  std::lock_guard<std::mutex> lock(PlannerMutex());
+  if (single)
+  {
+    MakePlans<float>(this->N, this->Forward, this->Inverse);
+  }
+  else
+  {
+    MakePlans<double>(this->N, this->Forward, this->Inverse);
+  }
+  this->Ready = this->Forward && this->Inverse;
+  return this->Ready;
+}
+
+//------------------------------------------------------------------------------
+template <typename T>
+void vtkBloomFFTConvolution::ApplyLines(
+  T* data, std::ptrdiff_t sampleStride, std::ptrdiff_t lineStride, int count, Workspace& ws) const
+{
+  if (!this->Ready)
+  {
+    return;
+  }
+  const int n = this->Size;
+  ws.Reserve(this->N, this->Single);
+  ws.Line.resize(n);
+  for (int l = 0; l < count; ++l)
+  {
+    T* x = data + l * lineStride;
+    double* line = ws.Line.data();
+    int a = -1, b = -1;
+    double largest = 0.0;
+    for (int m = 0; m < n; ++m)
+    {
+      const double v = static_cast<double>(x[m * sampleStride]);
+      line[m] = v;
+      if (v != 0.0)
+      {
+        a = a < 0 ? m : a;
+        b = m;
+        largest = std::max(largest, std::abs(v));
+      }
+    }
+    if (a < 0)
+    {
+      continue; // an all-zero line stays zero
+    }
+    // Scale by a power of two (exact) so that the largest magnitude is below 1.
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    const double scale = std::ldexp(1.0, -exponent);
+    auto transform = [&](auto precision)
+    {
+      using P = decltype(precision);
+      using F = Fftw<P>;
+      P* r = static_cast<P*>(ws.Real);
+      auto* c = static_cast<typename F::Complex*>(ws.Complex);
+      const int left = this->PadLeft;
+      for (int q = 1; q <= left; ++q)
+      {
+        const int i = vtkBloomLinearOperator::FoldIndex(-q, n, this->Border);
+        r[left - q] = i < 0 ? P(0) : static_cast<P>(line[i] * scale);
+      }
+      for (int m = 0; m < n; ++m)
+      {
+        r[left + m] = static_cast<P>(line[m] * scale);
+      }
+      for (int q = 0; q < this->PadRight; ++q)
+      {
+        const int i = vtkBloomLinearOperator::FoldIndex(n + q, n, this->Border);
+        r[left + n + q] = i < 0 ? P(0) : static_cast<P>(line[i] * scale);
+      }
+      std::fill(r + left + n + this->PadRight, r + this->N, P(0));
+      F::Forward(this->Forward, r, c);
+      const P* s = std::is_same<P, float>::value
+        ? reinterpret_cast<const P*>(this->SpectrumF.data())
+        : reinterpret_cast<const P*>(this->SpectrumD.data());
+      for (int q = 0; q <= this->N / 2; ++q)
+      {
+        const P re = c[q][0] * s[2 * q] - c[q][1] * s[2 * q + 1];
+        const P im = c[q][0] * s[2 * q + 1] + c[q][1] * s[2 * q];
+        c[q][0] = re;
+        c[q][1] = im;
+      }
+      F::Inverse(this->Inverse, c, r);
+    };
+    if (this->Single)
+    {
+      transform(float());
+    }
+    else
+    {
+      transform(double());
+    }
+    // Back to the line's scale, plus the border corrections, zero where nothing reaches.
+    const int lo = this->ReachLo[a], hi = this->ReachHi[b];
+    std::vector<double>& out = ws.Coefficients;
+    out.assign(n, 0.0);
+    if (this->Single)
+    {
+      const float* r = static_cast<const float*>(ws.Real) + this->PadLeft;
+      for (int j = lo; j <= hi; ++j)
+      {
+        out[j] = std::ldexp(static_cast<double>(r[j]), exponent);
+      }
+    }
+    else
+    {
+      const double* r = static_cast<const double*>(ws.Real) + this->PadLeft;
+      for (int j = lo; j <= hi; ++j)
+      {
+        out[j] = std::ldexp(r[j], exponent);
+      }
+    }
+    for (const Block& block : this->Corrections)
+    {
+      for (int k = 0; k < block.Rank; ++k)
+      {
+        const double* v = block.Vt.data() + static_cast<size_t>(k) * block.Cols;
+        double t = 0.0;
+        for (int q = 0; q < block.Cols; ++q)
+        {
+          t += v[q] * line[block.Col0 + q];
+        }
+        if (t == 0.0)
+        {
+          continue;
+        }
+        const double* u = block.U.data() + static_cast<size_t>(k) * block.Rows;
+        const int j0 = std::max(lo, block.Row0), j1 = std::min(hi, block.Row0 + block.Rows - 1);
+        for (int j = j0; j <= j1; ++j)
+        {
+          out[j] += t * u[j - block.Row0];
+        }
+      }
+    }
+    const double largestT = static_cast<double>(std::numeric_limits<T>::max());
+    for (int j = 0; j < n; ++j)
+    {
+      x[j * sampleStride] = static_cast<T>(std::min(std::max(out[j], -largestT), largestT));
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomFFTConvolution::Apply(float* data, std::ptrdiff_t sampleStride,
+  std::ptrdiff_t lineStride, int count, Workspace& ws) const
+{
+  this->ApplyLines(data, sampleStride, lineStride, count, ws);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomFFTConvolution::Apply(double* data, std::ptrdiff_t sampleStride,
+  std::ptrdiff_t lineStride, int count, Workspace& ws) const
+{
+  this->ApplyLines(data, sampleStride, lineStride, count, ws);
+}
+
+//------------------------------------------------------------------------------
+template <typename T>
+void vtkBloomFFTConvolution::ApplyAxis(
+  T* data, const int size[3], int lanes, int activeLanes, int axis) const
+{
+  if (!this->Ready || size[axis] != this->Size)
+  {
+    return;
+  }
+  // Lines are numbered so that neighbours in the numbering are neighbours in memory.
+  const int u = axis == 0 ? 1 : 0; // the faster of the other two axes
+  const int v = axis == 2 ? 1 : 2; // the slower one
+  std::ptrdiff_t stride[3] = { lanes, 0, 0 };
+  stride[1] = stride[0] * size[0];
+  stride[2] = stride[1] * size[1];
+  const vtkIdType lines = static_cast<vtkIdType>(size[u]) * size[v] * activeLanes;
+  vtkSMPThreadLocal<Workspace> workspaces;
+  vtkSMPTools::For(0, lines,
+    [&](vtkIdType begin, vtkIdType end)
+    {
+      Workspace& ws = workspaces.Local();
+      for (vtkIdType id = begin; id < end; ++id)
+      {
+        const vtkIdType lane = id % activeLanes;
+        const vtkIdType rest = id / activeLanes;
+        const vtkIdType iu = rest % size[u];
+        const vtkIdType iv = rest / size[u];
+        T* line = data + iu * stride[u] + iv * stride[v] + lane;
+        this->ApplyLines(line, stride[axis], 0, 1, ws);
+      }
+    });
+}
+
+template void vtkBloomFFTConvolution::ApplyAxis<float>(float*, const int[3], int, int, int) const;
+template void vtkBloomFFTConvolution::ApplyAxis<double>(double*, const int[3], int, int, int) const;
