@@ -13,7 +13,7 @@
  * FindInvariantRange), E extends x beyond its ends by the operator's border mode (clamp,
  * reflect or zero) and D = M - T is what is left near the ends:
  * - T runs through one real FFT of the extended line, a product with the kernel's spectrum and
- *   one inverse FFT (FFTW, sizes 2^a 3^b 5^c, zero padded so that nothing wraps).
+ *   one inverse FFT (FFTW, sizes 2^a 3^b, zero padded so that nothing wraps).
  * - D is zero for a single convolution (padding the line is how its borders were folded). For
  *   repeated clamped passes it is not, but it lives in two corner blocks (rows near each end
  *   reading samples near that end) of very low numerical rank: the 32 clamped passes of the
@@ -34,7 +34,7 @@
  * deterministic (FFTW_ESTIMATE plans, which do not depend on timing).
  *
  * Cost model: per line, the direct path costs nnz(M) multiply-adds; this path costs
- * FFTCostFactor N log2 N (forward and inverse real transforms) plus 4 N (extension, product,
+ * FFTCostFactor N log2 N (forward and inverse real transforms) plus 8 N (extension, product,
  * copy) plus rank x (block rows + block columns) for D. Cost() and DirectCost() return these in
  * multiply-add units; callers pick the cheaper one (vtkImageSeparableGaussian and
  * vtkImageBloom do, unless told otherwise).
@@ -59,7 +59,7 @@ public:
    * Multiply-adds one N log2 N unit of the forward and inverse transforms costs, measured with
    * BloomAccuracyStudy against the direct path (docs/numerics.md).
    */
-  static constexpr double FFTCostFactor = 0.75;
+  static constexpr double FFTCostFactor = 2.0;
 
   vtkBloomFFTConvolution();
   ~vtkBloomFFTConvolution();
@@ -123,6 +123,8 @@ public:
   struct Block; ///< one factored border correction
 
 private:
+  template <typename T, typename P>
+  void ApplyLine(T* x, std::ptrdiff_t stride, Workspace& ws) const;
   template <typename T>
   void ApplyLines(T* data, std::ptrdiff_t sampleStride, std::ptrdiff_t lineStride, int count,
     Workspace& ws) const;

@@ -3,6 +3,7 @@
 #include "vtkAlgorithm.h"
 #include "vtkBloomBrightPass.h"
 #include "vtkBloomChain.h"
+#include "vtkBloomFFTConvolution.h"
 #include "vtkBloomImageOps.h"
 #include "vtkBloomKernels.h"
 #include "vtkBloomLinearOperator.h"
@@ -15,10 +16,12 @@
 #include "vtkSMPTools.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <memory>
 #include <type_traits>
 
 #if defined(__SSE2__)
@@ -291,6 +294,16 @@ struct vtkBloomFastChain::Internals
   std::vector<Plane> Acc; // blurred or accumulated levels
   vtkSmartPointer<vtkDataArray> Recycled;
 
+  // The level blurs that run through the FFT (null where direct), for the chain built at
+  // FFTTime with FFTMode.
+  std::vector<std::array<std::unique_ptr<vtkBloomFFTConvolution>, 2>> BlurFFT;
+  const vtkBloomChain* FFTChain = nullptr;
+  vtkMTimeType FFTTime = 0;
+  int FFTMode = -1;
+
+  /// Rebuild BlurFFT when the chain or the mode changed.
+  void UpdateBlurFFT(const vtkBloomFastChainParameters& p);
+
   size_t Bytes() const
   {
     size_t n = 0;
@@ -304,6 +317,49 @@ struct vtkBloomFastChain::Internals
     return n;
   }
 };
+
+//------------------------------------------------------------------------------
+void vtkBloomFastChain::Internals::UpdateBlurFFT(const vtkBloomFastChainParameters& p)
+{
+  if (this->FFTChain == p.Chain && this->FFTTime == p.ChainTime &&
+    this->FFTMode == p.ConvolutionMode && this->BlurFFT.size() == p.Chain->Levels.size())
+  {
+    return;
+  }
+  this->FFTChain = p.Chain;
+  this->FFTTime = p.ChainTime;
+  this->FFTMode = p.ConvolutionMode;
+  this->BlurFFT.clear();
+  this->BlurFFT.resize(p.Chain->Levels.size());
+  if (p.ConvolutionMode == vtkBloomFastChain::CONVOLUTION_DIRECT)
+  {
+    return;
+  }
+  for (size_t i = 0; i < p.Chain->Levels.size(); ++i)
+  {
+    const vtkBloomChain::Level& level = p.Chain->Levels[i];
+    if (!level.Blur)
+    {
+      continue;
+    }
+    const vtkBloomLinearOperator* ops[2] = { &level.BlurPass.X, &level.BlurPass.Y };
+    for (int a = 0; a < 2; ++a)
+    {
+      auto fft = std::make_unique<vtkBloomFFTConvolution>();
+      // The level blurs clamp (seed behaviour); the correction takes what padding cannot.
+      if (!fft->Build(*ops[a], vtkBloomLinearOperator::BORDER_CLAMP, true))
+      {
+        continue;
+      }
+      if (p.ConvolutionMode == vtkBloomFastChain::CONVOLUTION_FFT ||
+        fft->Cost() <
+          vtkBloomFFTConvolution::DirectCost(*ops[a]) / vtkBloomFastChain::DirectSpeedup)
+      {
+        this->BlurFFT[i][a] = std::move(fft);
+      }
+    }
+  }
+}
 
 //------------------------------------------------------------------------------
 vtkBloomFastChain::vtkBloomFastChain()

@@ -42,6 +42,13 @@
  *   the bounding box of the bright samples; outside, samples are zero and the composite is
  *   keep * in + 0.
  * - SkipDisabled: Strength 0, a black tint or all weights 0 skip the whole chain.
+ * Wide level blurs (the ping-pong preset folds 32 passes into one operator 385 taps wide) can
+ * run through the FFT instead (vtkBloomFFTConvolution, single precision): per level and axis,
+ * when ConvolutionMode asks for it or, in AUTOMATIC, when the FFT's modeled cost is below the
+ * direct cost divided by DirectSpeedup (the fused direct passes are that many times faster per
+ * tap than the cost model's unit). The level is then blurred in place on those axes before the
+ * fused pass, whose blur on them becomes the identity. The FFT leaves exact zeros wherever no
+ * bright sample reaches, so the content-aware skips stay exact.
  * Double input, Karis averaging and 3-D (multi-slice) inputs are not handled (Supports()
  * returns false) and vtkImageBloom runs its double-precision reference for them.
  */
@@ -50,6 +57,7 @@
 #define vtkBloomFastChain_h
 
 #include "vtkSmartPointer.h" // For the recycled output array
+#include "vtkType.h"         // For vtkMTimeType
 
 class vtkBloomChain;
 
@@ -86,6 +94,10 @@ struct vtkBloomFastChainParameters
   bool SkipDisabled = true;
   /// Run the passes compiled for AVX2 when the CPU has it (same bits as the baseline build).
   bool UseAVX2 = true;
+  /// How the level blurs run: vtkImageBloom::CONVOLUTION_AUTOMATIC, _DIRECT or _FFT.
+  int ConvolutionMode = 0;
+  /// When Chain was built: the FFT convolutions of its blurs are kept until it changes.
+  vtkMTimeType ChainTime = 0;
 };
 
 /// What the last Execute did (for tests and the benchmark).
@@ -97,11 +109,26 @@ struct vtkBloomFastChainReport
   long long SamplesProcessed = 0; ///< level samples computed (all levels, all steps)
   size_t WorkspaceBytes = 0;      ///< bytes of intermediate buffers held
   bool UsedAVX2 = false;          ///< the passes compiled for AVX2 ran
+  int FFTBlurs = 0;               ///< level blur axes run through the FFT
 };
 
 class vtkBloomFastChain
 {
 public:
+  /// ConvolutionMode values, the same as vtkImageBloom's.
+  enum ConvolutionModes
+  {
+    CONVOLUTION_AUTOMATIC = 0,
+    CONVOLUTION_DIRECT = 1,
+    CONVOLUTION_FFT = 2
+  };
+
+  /**
+   * How many times less a tap of the fused direct blur costs than the unit of
+   * vtkBloomFFTConvolution's cost model (measured with scripts/benchmark.sh, docs/numerics.md).
+   */
+  static constexpr double DirectSpeedup = 4.0;
+
   vtkBloomFastChain();
   ~vtkBloomFastChain();
 

@@ -159,21 +159,61 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
       const Op finalY =
         MakeOp(chain.FinalIsIdentity ? vtkBloomLinearOperator::Identity(height) : chain.Final.Y);
       ws.Acc.resize(std::max<size_t>(ws.Acc.size(), levelsBuilt));
+      ws.UpdateBlurFFT(p);
       std::vector<Box> acc(levelsBuilt);
       std::vector<const Plane*> accPlane(levelsBuilt, nullptr);
       for (int i = levelsBuilt - 1; i >= 0; --i)
       {
         const Plane& level = levels[i];
         const float w = static_cast<float>(p.LevelWeights[i]);
-        const bool blurred = chain.Levels[i].Blur;
+        bool blurred = chain.Levels[i].Blur;
         Op bx, by;
         Box blurBox;
+        if (w != 0.0f && blurred)
+        {
+          bx = MakeOp(chain.Levels[i].BlurPass.X);
+          by = MakeOp(chain.Levels[i].BlurPass.Y);
+          const auto& fft = ws.BlurFFT[i];
+          if (fft[0] || fft[1])
+          {
+            // The wide axes through the FFT, in place over the whole level (the region's reach
+            // on those axes, exact zeros elsewhere); the fused pass below does the rest.
+            defineLevel(i, full(i));
+            if (i == 0)
+            {
+              // Every row of level 0 is written now (the FFT changes dark rows too).
+              std::fill(bright.Dark.begin(), bright.Dark.end(), char(0));
+            }
+            Plane& lv = levels[i];
+            const int size[3] = { lv.W, lv.H, 1 };
+            Box reach = boxes[i];
+            for (int a = 0; a < 2; ++a)
+            {
+              if (fft[a])
+              {
+                fft[a]->ApplyAxis(lv.D.data(), size, L, C, a);
+                report.FFTBlurs += 1;
+                const Box grown = ReachBox(bx, by, reach);
+                reach = a == 0 ? Box{ grown.X0, grown.X1, reach.Y0, reach.Y1 }
+                               : Box{ reach.X0, reach.X1, grown.Y0, grown.Y1 };
+              }
+            }
+            boxes[i] = reach;
+            if (fft[0])
+            {
+              bx = MakeOp(vtkBloomLinearOperator::Identity(lv.W));
+            }
+            if (fft[1])
+            {
+              by = MakeOp(vtkBloomLinearOperator::Identity(lv.H));
+            }
+            blurred = !(fft[0] && fft[1]);
+          }
+        }
         if (w != 0.0f)
         {
           if (blurred)
           {
-            bx = MakeOp(chain.Levels[i].BlurPass.X);
-            by = MakeOp(chain.Levels[i].BlurPass.Y);
             blurBox = ReachBox(bx, by, boxes[i]);
           }
           else

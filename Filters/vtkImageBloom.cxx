@@ -60,12 +60,14 @@ vtkImageBloom::vtkImageBloom()
   this->TrimPyramid = true;
   this->RestrictToBrightRegion = true;
   this->UseAVX2 = true;
+  this->ConvolutionMode = CONVOLUTION_AUTOMATIC;
   this->LastRunWasFast = false;
   this->LastBloomSkipped = false;
   this->LastPassedThrough = false;
   this->LastLevelsBuilt = 0;
   this->LastWorkspaceBytes = 0;
   this->LastRunUsedAVX2 = false;
+  this->LastFFTBlurs = 0;
   this->FastChain = new vtkBloomFastChain;
   this->Chain = new vtkBloomChain;
   this->ChainSize[0] = this->ChainSize[1] = -1;
@@ -276,6 +278,7 @@ int vtkImageBloom::RequestData(
   this->LastPassedThrough = false;
   this->LastLevelsBuilt = -1;
   this->LastRunUsedAVX2 = false;
+  this->LastFFTBlurs = 0;
   if (!this->CheckInput(input))
   {
     output->Initialize();
@@ -394,6 +397,8 @@ bool vtkImageBloom::ExecuteFast(
   p.RestrictToBrightRegion = this->RestrictToBrightRegion;
   p.SkipDisabled = this->SkipDisabledEffects;
   p.UseAVX2 = this->UseAVX2;
+  p.ConvolutionMode = this->ConvolutionMode;
+  p.ChainTime = this->ChainTime.GetMTime();
   if (!vtkBloomFastChain::Supports(p, input))
   {
     return false;
@@ -413,6 +418,7 @@ bool vtkImageBloom::ExecuteFast(
   this->LastLevelsBuilt = report.LevelsBuilt;
   this->LastWorkspaceBytes = static_cast<vtkIdType>(report.WorkspaceBytes);
   this->LastRunUsedAVX2 = report.UsedAVX2;
+  this->LastFFTBlurs = report.FFTBlurs;
   return true;
 }
 
@@ -518,6 +524,7 @@ void vtkImageBloom::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RestrictToBrightRegion: " << (this->RestrictToBrightRegion ? "On" : "Off")
      << "\n";
   os << indent << "UseAVX2: " << (this->UseAVX2 ? "On" : "Off") << "\n";
+  os << indent << "ConvolutionMode: " << this->ConvolutionMode << "\n";
   os << indent << "EnergyIn: " << this->EnergyIn << "\n";
   os << indent << "EnergyOut: " << this->EnergyOut << "\n";
   os << indent << "NumberOfBrightPixels: " << this->NumberOfBrightPixels << "\n";

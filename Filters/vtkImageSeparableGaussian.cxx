@@ -1,5 +1,6 @@
 #include "vtkImageSeparableGaussian.h"
 
+#include "vtkBloomFFTConvolution.h"
 #include "vtkBloomImageOps.h"
 #include "vtkBloomKernels.h"
 #include "vtkBloomLineFilters.h"
@@ -21,6 +22,16 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkImageSeparableGaussian);
+
+struct vtkImageSeparableGaussian::FFTAxis
+{
+  vtkBloomFFTConvolution Convolution;
+  vtkBloomLinearOperator Operator;
+  std::vector<double> Half; ///< what it was built for
+  int Border = -1;
+  bool Single = true;
+  bool Cheaper = false; ///< FFT cost below the direct cost
+};
 
 namespace
 {
@@ -187,6 +198,8 @@ vtkImageSeparableGaussian::vtkImageSeparableGaussian()
   this->KernelType = SAMPLED;
   this->BorderMode = CLAMP;
   this->Method = EXACT;
+  this->ConvolutionMode = CONVOLUTION_AUTOMATIC;
+  this->LastFFTAxes = 0;
   this->SanitizeNonFinite = true;
   this->CleanInput = nullptr;
 }
@@ -252,6 +265,48 @@ const char* vtkImageSeparableGaussian::GetMethodName(int method)
 }
 
 //------------------------------------------------------------------------------
+int vtkImageSeparableGaussian::ChooseFFTAxes(const int inWhole[6], bool single)
+{
+  int axes = 0;
+  if (this->Method != EXACT || this->ConvolutionMode == CONVOLUTION_DIRECT)
+  {
+    return axes;
+  }
+  for (int a = 0; a < 3; ++a)
+  {
+    const double sigma = this->StandardDeviations[a];
+    const int n = inWhole[2 * a + 1] - inWhole[2 * a] + 1;
+    if (!(sigma > 0.0) || !std::isfinite(sigma) || n < 2)
+    {
+      continue;
+    }
+    const std::vector<double> half = this->GetHalfKernel(a);
+    if (half.size() < 2)
+    {
+      continue;
+    }
+    std::unique_ptr<FFTAxis>& fft = this->FFT[a];
+    if (!fft || fft->Half != half || fft->Border != this->BorderMode || fft->Single != single ||
+      fft->Operator.InputSize != n)
+    {
+      fft.reset(new FFTAxis);
+      fft->Half = half;
+      fft->Border = this->BorderMode;
+      fft->Single = single;
+      fft->Operator = vtkBloomLinearOperator::Convolve(
+        n, vtkBloomKernels::SymmetricTaps(half, 1.0), this->BorderMode);
+      fft->Convolution.Build(fft->Operator, this->BorderMode, single);
+      fft->Cheaper = fft->Convolution.Cost() < vtkBloomFFTConvolution::DirectCost(fft->Operator);
+    }
+    if (fft->Convolution.IsReady() && (this->ConvolutionMode == CONVOLUTION_FFT || fft->Cheaper))
+    {
+      axes |= 1 << a;
+    }
+  }
+  return axes;
+}
+
+//------------------------------------------------------------------------------
 vtkBloomLinearOperator vtkImageSeparableGaussian::SupportOperator(int axis, int n)
 {
   const double sigma = this->StandardDeviations[axis];
@@ -285,15 +340,15 @@ vtkBloomLinearOperator vtkImageSeparableGaussian::SupportOperator(int axis, int 
 int vtkImageSeparableGaussian::RequestUpdateExtent(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  if (this->Method == EXACT)
-  {
-    return this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
-  }
-  // The fast methods read whole lines on every filtered axis.
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int inWhole[6], outExt[6];
   inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), inWhole);
+  if (this->Method == EXACT && this->ChooseFFTAxes(inWhole, true) == 0)
+  {
+    return this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
+  }
+  // The fast methods and the FFT read whole lines on every filtered axis.
   outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
   int inExt[6];
   for (int a = 0; a < 3; ++a)
@@ -380,7 +435,10 @@ int vtkImageSeparableGaussian::RequestData(
   }
 
   int result = 1;
-  if (this->Method == EXACT)
+  const int* inWhole = inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
+  const int fftAxes = this->ChooseFFTAxes(inWhole, isFloat);
+  this->LastFFTAxes = fftAxes;
+  if (this->Method == EXACT && fftAxes == 0)
   {
     // Every piece repeats the x pass over the rows its y support needs, so the default pieces of
     // 64 KiB (a few rows) would redo it about 2R / rows times: cut slabs, about four per thread.
@@ -405,7 +463,7 @@ int vtkImageSeparableGaussian::RequestData(
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
     this->AllocateOutputData(output, outInfo, outExt);
     this->CopyAttributeData(input, output, inputVector);
-    this->ExecuteFast(clean ? clean.Get() : input, output, outExt);
+    this->ExecuteLines(clean ? clean.Get() : input, output, outExt, fftAxes);
   }
   this->CleanInput = nullptr;
   if (!result || !output->GetPointData()->GetScalars())
@@ -487,8 +545,8 @@ void vtkImageSeparableGaussian::ThreadedRequestData(vtkInformation* request,
 }
 
 //------------------------------------------------------------------------------
-void vtkImageSeparableGaussian::ExecuteFast(
-  vtkImageData* input, vtkImageData* output, const int outExt[6])
+void vtkImageSeparableGaussian::ExecuteLines(
+  vtkImageData* input, vtkImageData* output, const int outExt[6], int fftAxes)
 {
   if (outExt[0] > outExt[1] || outExt[2] > outExt[3] || outExt[4] > outExt[5])
   {
@@ -526,6 +584,23 @@ void vtkImageSeparableGaussian::ExecuteFast(
       continue;
     }
     const int n = buffer.Size[axis];
+    if (this->Method == EXACT)
+    {
+      // EXACT on whole lines: through the FFT, or the operator itself on the axes left direct.
+      if (fftAxes & (1 << axis))
+      {
+        this->FFT[axis]->Convolution.ApplyAxis(buffer.Data.data(), buffer.Size, nc, nc, axis);
+      }
+      else
+      {
+        const vtkBloomLinearOperator op = this->SupportOperator(axis, n);
+        vtkBloomBuffer next;
+        vtkBloomApplyAxis(buffer, axis, op, 0, n, next, true);
+        buffer = std::move(next);
+      }
+      this->UpdateProgress(0.95 * (++done) / std::max(total, 1));
+      continue;
+    }
     // Lines along `axis`: every faster axis and the components are lanes, sample-major.
     size_t stride = static_cast<size_t>(nc);
     for (int b = 0; b < axis; ++b)
@@ -641,5 +716,7 @@ void vtkImageSeparableGaussian::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "KernelType: " << this->GetKernelTypeAsString() << "\n";
   os << indent << "BorderMode: " << this->GetBorderModeAsString() << "\n";
   os << indent << "Method: " << this->GetMethodAsString() << "\n";
+  os << indent << "ConvolutionMode: " << this->ConvolutionMode << "\n";
+  os << indent << "LastFFTAxes: " << this->LastFFTAxes << "\n";
   os << indent << "SanitizeNonFinite: " << (this->SanitizeNonFinite ? "On" : "Off") << "\n";
 }

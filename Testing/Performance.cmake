@@ -3,11 +3,12 @@
 # They assert agreement and exactness only, never timings (the timings are in Benchmarks/).
 set(vtkbloom_performance_tests
   TestBloomFastPath
-  TestBloomContentAware)
+  TestBloomContentAware
+  TestBloomFFTBlur)
 
 foreach (test IN LISTS vtkbloom_performance_tests)
   vtkbloom_add_gtest(${test}
     SOURCES "${CMAKE_CURRENT_LIST_DIR}/Performance/${test}.cxx"
-    LIBRARIES VTKBloom::FiltersBloom VTK::CommonDataModel VTK::CommonExecutionModel
+    LIBRARIES vtkbloom_reference VTKBloom::FiltersBloom VTK::CommonDataModel VTK::CommonExecutionModel
       VTK::CommonCore)
 endforeach ()

@@ -198,6 +198,17 @@ TEST(FiltersFFTConvolution, ExactZerosWhereNothingReaches)
     }
   }
   EXPECT_NEAR(y[700], 3.0 * half[0] + 1e-3 * half[60], 1e-6);
+  // Sparse lines (a bright run, the rest zero) against the direct convolution, at the ends too.
+  for (int start : { 0, 37, 700, 1400 })
+  {
+    std::vector<double> sparse(n, 0.0);
+    for (int i = start; i < std::min(n, start + 60); ++i)
+    {
+      sparse[i] = 5.0 + std::sin(0.3 * i);
+    }
+    EXPECT_LE(RelativeL2(ApplyFFT<float>(fft, sparse), Convolve(sparse, half, Reflect)), 1e-6)
+      << start;
+  }
 }
 
 TEST(FiltersFFTConvolution, ScalingByPowersOfTwoIsExactAndNeverOverflows)
