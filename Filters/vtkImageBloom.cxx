@@ -61,6 +61,16 @@ vtkImageBloom::vtkImageBloom()
   this->RestrictToBrightRegion = true;
   this->UseAVX2 = true;
   this->ConvolutionMode = CONVOLUTION_AUTOMATIC;
+  this->BloomMode = BLOOM_PYRAMID;
+  this->PSFType = PSF_AIRY;
+  this->AiryRadius = 3.0;
+  this->Wavelengths[0] = 610.0;
+  this->Wavelengths[1] = 550.0;
+  this->Wavelengths[2] = 465.0;
+  this->PSFGaussianSigmas = { 1.5, 6.0, 24.0 };
+  this->PSFGaussianWeights = { 0.6, 0.3, 0.1 };
+  this->PSFRadius = -1;
+  this->PSFBorderMode = 1;
   this->LastRunWasFast = false;
   this->LastBloomSkipped = false;
   this->LastPassedThrough = false;
@@ -113,7 +123,7 @@ bool vtkImageBloom::BloomIsDisabled(int colours, size_t levels) const
   {
     zeroWeights &= this->GetLevelWeight(static_cast<int>(i)) == 0.0;
   }
-  return zeroTerm || zeroWeights;
+  return zeroTerm || (levels > 0 && zeroWeights);
 }
 
 //------------------------------------------------------------------------------
@@ -283,6 +293,10 @@ int vtkImageBloom::RequestData(
   {
     output->Initialize();
     return 0;
+  }
+  if (this->BloomMode == BLOOM_PSF)
+  {
+    return this->ExecutePSF(input, outInfo, output);
   }
   int inExt[6];
   input->GetExtent(inExt);
@@ -525,6 +539,15 @@ void vtkImageBloom::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "UseAVX2: " << (this->UseAVX2 ? "On" : "Off") << "\n";
   os << indent << "ConvolutionMode: " << this->ConvolutionMode << "\n";
+  os << indent << "BloomMode: " << (this->BloomMode == BLOOM_PSF ? "PSF" : "Pyramid") << "\n";
+  os << indent << "PSFType: " << this->PSFType << "\n";
+  os << indent << "AiryRadius: " << this->AiryRadius << "\n";
+  os << indent << "Wavelengths: (" << this->Wavelengths[0] << ", " << this->Wavelengths[1] << ", "
+     << this->Wavelengths[2] << ")\n";
+  os << indent << "PSFGaussians: " << this->PSFGaussianSigmas.size() << "\n";
+  os << indent << "PSFImage: " << this->PSFImage.Get() << "\n";
+  os << indent << "PSFRadius: " << this->PSFRadius << "\n";
+  os << indent << "PSFBorderMode: " << this->PSFBorderMode << "\n";
   os << indent << "EnergyIn: " << this->EnergyIn << "\n";
   os << indent << "EnergyOut: " << this->EnergyOut << "\n";
   os << indent << "NumberOfBrightPixels: " << this->NumberOfBrightPixels << "\n";

@@ -28,6 +28,22 @@
  *    - LERP: out = (1 - S) I + S t bloom (energy-conserving when the weights sum to 1).
  *    Alpha is copied from the input unchanged.
  *
+ * PSF mode (BloomMode PSF) replaces steps 2 to 4 by one convolution with a point-spread
+ * function, as Unreal's convolution bloom and Blender's glare do: bloom = PSF * B_0, where B_0 is
+ * the bright pass at full resolution (StartLevel, the pyramid, blur and accumulation parameters
+ * are not used). The PSF (PSFType) is an Airy diffraction pattern (AiryRadius: the first dark
+ * ring's radius in pixels at the green wavelength; each colour channel's pattern is scaled by
+ * its wavelength over the green one, Wavelengths in nm), a sum of Gaussians
+ * (SetPSFGaussians) or a measured PSF image (SetPSFImage: odd square size, centred; one
+ * component for all channels, or one per channel). Each channel's PSF is truncated at
+ * PSFRadius (automatic by default: 12 first-ring radii of the reddest channel for Airy, 4 of the
+ * widest sigma for Gaussians) and normalized to sum 1. The convolution scatters each bright
+ * sample through the PSF and folds what leaves the image back in by half-sample reflection
+ * (PSFBorderMode REFLECT, the default) or drops it (ZERO). With REFLECT the bloom's energy in
+ * each channel equals the bright pass's (tested to 1e-6 relative), so the composite adds exactly
+ * Strength times the bright pass's energy. It runs through a two-dimensional FFT in single
+ * precision (vtkBloomPSF), in both execution modes, on 2-D images.
+ *
  * Presets (SetPreset) reproduce the seed systems exactly as ../shared/seeds/PRESETS.md reads
  * them, with the seeds' known defects fixed:
  * - "webgpu-market" (seed 000): SMOOTHSTEP_KNEE, T 0.8, knee 0.5, start level 1, 5 levels,
@@ -137,7 +153,8 @@
 
 #include "vtkFiltersBloomModule.h" // For export macro
 #include "vtkImageAlgorithm.h"
-#include "vtkTimeStamp.h" // For ChainTime
+#include "vtkSmartPointer.h" // For the PSF image
+#include "vtkTimeStamp.h"    // For ChainTime
 
 #include <string> // For preset names
 #include <vector> // For level weights
@@ -176,6 +193,62 @@ public:
     FAST = 0,
     REFERENCE = 1
   };
+
+  enum BloomModes
+  {
+    BLOOM_PYRAMID = 0,
+    BLOOM_PSF = 1
+  };
+
+  enum PSFTypes
+  {
+    PSF_AIRY = 0,
+    PSF_GAUSSIANS = 1,
+    PSF_IMAGE = 2
+  };
+
+  ///@{
+  /// BLOOM_PYRAMID (default: steps 1-5) or BLOOM_PSF (see "PSF mode" in the class description).
+  vtkSetClampMacro(BloomMode, int, BLOOM_PYRAMID, BLOOM_PSF);
+  vtkGetMacro(BloomMode, int);
+  void SetBloomModeToPyramid() { this->SetBloomMode(BLOOM_PYRAMID); }
+  void SetBloomModeToPSF() { this->SetBloomMode(BLOOM_PSF); }
+  ///@}
+
+  ///@{
+  /// PSF mode: the PSF's kind, PSF_AIRY (default), PSF_GAUSSIANS or PSF_IMAGE.
+  vtkSetClampMacro(PSFType, int, PSF_AIRY, PSF_IMAGE);
+  vtkGetMacro(PSFType, int);
+  /// Airy: radius of the first dark ring at the green wavelength, in pixels. Default 3.
+  vtkSetClampMacro(AiryRadius, double, 0.1, 1.0e3);
+  vtkGetMacro(AiryRadius, double);
+  /// Airy: the wavelengths of the red, green and blue channels in nm. Default (610, 550, 465).
+  vtkSetVector3Macro(Wavelengths, double);
+  vtkGetVector3Macro(Wavelengths, double);
+  /// Gaussians: standard deviations (pixels) and weights. Default (1.5, 6, 24) x (0.6, 0.3, 0.1).
+  void SetPSFGaussians(const std::vector<double>& sigmas, const std::vector<double>& weights);
+  const std::vector<double>& GetPSFGaussianSigmas() const { return this->PSFGaussianSigmas; }
+  const std::vector<double>& GetPSFGaussianWeights() const { return this->PSFGaussianWeights; }
+  /// Image: a measured PSF (float or double, odd square size, centred, non-negative).
+  void SetPSFImage(vtkImageData* image);
+  vtkImageData* GetPSFImage();
+  /// Truncation radius in pixels; -1 (default) chooses it (see the class description).
+  vtkSetClampMacro(PSFRadius, int, -1, 2048);
+  vtkGetMacro(PSFRadius, int);
+  /// REFLECT (1, default: energy-conserving) or ZERO (2), as vtkImageSeparableGaussian's modes.
+  vtkSetClampMacro(PSFBorderMode, int, 1, 2);
+  vtkGetMacro(PSFBorderMode, int);
+  ///@}
+
+  /**
+   * The normalized PSF of colour channel `channel` (0 red, 1 green, 2 blue) with the current
+   * parameters, (2 radius + 1)^2 values, row-major, centred; empty, with an error, when the
+   * parameters (or the PSF image) are invalid.
+   */
+  std::vector<double> ComputePSF(int channel, int& radius);
+
+  /// Include the PSF image's modification time.
+  vtkMTimeType GetMTime() override;
 
   /**
    * Configure every parameter to reproduce a seed system: "webgpu-market", "mip-atlas",
@@ -450,6 +523,19 @@ protected:
     std::vector<vtkBloomBuffer>& levels, int width, int height, vtkBloomBuffer& bloom);
   ///@}
 
+  ///@{
+  /**
+   * Shared by the REFERENCE chain and PSF mode: ImportColours copies the colours of the input
+   * (sanitized when SanitizeNonFinite is on) into `colours`; BrightPassInPlace maps non-finite
+   * samples and applies the bright pass to every sample.
+   */
+  void ImportColours(vtkImageData* input, vtkBloomBuffer& colours);
+  void BrightPassInPlace(vtkBloomBuffer& buffer);
+  ///@}
+
+  /// PSF mode: the bloom is the PSF convolution of the full-resolution bright pass.
+  int ExecutePSF(vtkImageData* input, vtkInformation* outInfo, vtkImageData* output);
+
   /// Step 5 over the output's extent; a null bloom means a black one.
   void Composite(vtkImageData* input, const vtkBloomBuffer* bloom, vtkImageData* output);
 
@@ -500,6 +586,15 @@ protected:
   bool LastRunUsedAVX2;
   int LastFFTBlurs;
   int ConvolutionMode;
+  int BloomMode;
+  int PSFType;
+  double AiryRadius;
+  double Wavelengths[3];
+  std::vector<double> PSFGaussianSigmas;
+  std::vector<double> PSFGaussianWeights;
+  vtkSmartPointer<vtkImageData> PSFImage;
+  int PSFRadius;
+  int PSFBorderMode;
   vtkBloomFastChain* FastChain;
   // The chain's operators, rebuilt only when a parameter or the input size changed.
   vtkBloomChain* Chain;

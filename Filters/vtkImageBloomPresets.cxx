@@ -29,6 +29,7 @@ bool vtkImageBloom::SetPreset(const char* name)
     return false;
   }
   // Shared defaults; each preset then states what it changes.
+  this->BloomMode = BLOOM_PYRAMID;
   this->ClampLuminance = VTK_FLOAT_MAX;
   this->Knee = 0.5;
   this->LimitLevelsToImageSize = false;

@@ -78,44 +78,23 @@ void Downsample(const vtkBloomBuffer& in, const vtkBloomChain::Level& level, vtk
 }
 
 //------------------------------------------------------------------------------
-bool vtkImageBloom::ThresholdStep(
-  vtkImageData* input, std::vector<vtkBloomBuffer>& levels, int& levelsUsed)
+void vtkImageBloom::ImportColours(vtkImageData* input, vtkBloomBuffer& colours)
 {
-  // Bilinear fetch to the start level first, threshold second.
   int inExt[6];
   input->GetExtent(inExt);
-  const int width = inExt[1] - inExt[0] + 1;
-  const int height = inExt[3] - inExt[2] + 1;
-  const int colours = input->GetNumberOfScalarComponents() >= 3 ? 3 : 1;
-  const vtkBloomChain& chain = *this->Chain;
-  vtkBloomBuffer source;
   const int wholeLo[3] = { inExt[0], inExt[2], inExt[4] };
-  vtkBloomImport(input, inExt, wholeLo, 0, colours, source);
+  vtkBloomImport(
+    input, inExt, wholeLo, 0, input->GetNumberOfScalarComponents() >= 3 ? 3 : 1, colours);
   if (this->SanitizeNonFinite)
   {
-    ReplaceNonFinite(source.Data, FiniteMaximum(input->GetScalarType()));
+    ReplaceNonFinite(colours.Data, FiniteMaximum(input->GetScalarType()));
   }
-  this->UpdateProgress(0.05);
-  const auto sizes = this->ComputeLevelSizes(width, height);
-  if (sizes.empty() || (this->SkipDisabledEffects && this->BloomIsDisabled(colours, sizes.size())))
-  {
-    // No level fits (LimitLevelsToImageSize with a start level beyond the mip chain), or the
-    // bloom term is zero: there is nothing to bloom, and the composite sees a black bloom.
-    this->LastBloomSkipped = !sizes.empty();
-    levelsUsed = 0;
-    return false;
-  }
-  levelsUsed = static_cast<int>(sizes.size());
-  levels.resize(chain.Levels.size());
-  if (chain.SourceIsIdentity)
-  {
-    levels[0] = std::move(source);
-  }
-  else
-  {
-    Resample2D(source, chain.Source.X, chain.Source.Y, levels[0]);
-  }
-  vtkBloomBuffer& bright = levels[0];
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::BrightPassInPlace(vtkBloomBuffer& bright)
+{
+  const int colours = bright.NumberOfComponents;
   const int mode = this->ThresholdMode;
   const double t = this->Threshold, knee = this->Knee, clampLum = this->ClampLuminance;
   // The chain maps non-finite colours in every mode, NONE included, so that nothing
@@ -139,6 +118,43 @@ bool vtkImageBloom::ThresholdStep(
         }
       }
     });
+}
+
+//------------------------------------------------------------------------------
+bool vtkImageBloom::ThresholdStep(
+  vtkImageData* input, std::vector<vtkBloomBuffer>& levels, int& levelsUsed)
+{
+  // Bilinear fetch to the start level first, threshold second.
+  int inExt[6];
+  input->GetExtent(inExt);
+  const int width = inExt[1] - inExt[0] + 1;
+  const int height = inExt[3] - inExt[2] + 1;
+  const int colours = input->GetNumberOfScalarComponents() >= 3 ? 3 : 1;
+  const vtkBloomChain& chain = *this->Chain;
+  vtkBloomBuffer source;
+  this->ImportColours(input, source);
+  this->UpdateProgress(0.05);
+  const auto sizes = this->ComputeLevelSizes(width, height);
+  if (sizes.empty() || (this->SkipDisabledEffects && this->BloomIsDisabled(colours, sizes.size())))
+  {
+    // No level fits (LimitLevelsToImageSize with a start level beyond the mip chain), or the
+    // bloom term is zero: there is nothing to bloom, and the composite sees a black bloom.
+    this->LastBloomSkipped = !sizes.empty();
+    levelsUsed = 0;
+    return false;
+  }
+  levelsUsed = static_cast<int>(sizes.size());
+  levels.resize(chain.Levels.size());
+  if (chain.SourceIsIdentity)
+  {
+    levels[0] = std::move(source);
+  }
+  else
+  {
+    Resample2D(source, chain.Source.X, chain.Source.Y, levels[0]);
+  }
+  vtkBloomBuffer& bright = levels[0];
+  this->BrightPassInPlace(bright);
   if (this->SkipEmptyBloom &&
     std::all_of(bright.Data.begin(), bright.Data.end(), [](double v) { return v == 0.0; }))
   {

@@ -34,7 +34,8 @@ set(vtkbloom_filters_tests
   TestBloomStreaming
   TestBloomErrors
   TestBloomLinearOperator
-  TestBloomFFTConvolution)
+  TestBloomFFTConvolution
+  TestImageBloomPSF)
 
 foreach (test IN LISTS vtkbloom_filters_tests)
   set(extra)

@@ -1,0 +1,333 @@
+#include "vtkBloomPSF.h"
+
+#include "vtkBloomImageOps.h"
+#include "vtkBloomLinearOperator.h"
+#include "vtkDataArray.h"
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+#include "vtkSMPTools.h"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <mutex>
+
+namespace
+{
+// FFTW's planner is not thread-safe (vtkBloomFFTConvolution takes the same kind of lock; the two
+// never plan at the same time from one filter, and FFTW serializes nothing itself).
+std::mutex& PlannerMutex()
+{
+  static std::mutex mutex;
+  return mutex;
+}
+
+int GoodSize(int n)
+{
+  for (int m = std::max(n, 2);; ++m)
+  {
+    int r = m;
+    for (int p : { 2, 3 })
+    {
+      while (r % p == 0)
+      {
+        r /= p;
+      }
+    }
+    if (r == 1)
+    {
+      return m;
+    }
+  }
+}
+
+// The real 2-D transforms of an ny x nx array (row-major) and back, threaded by FFTW.
+struct Transform2D
+{
+  int NX = 0, NY = 0;
+  float* Real = nullptr;
+  fftwf_complex* Spectrum = nullptr;
+  fftwf_plan Forward = nullptr;
+  fftwf_plan Inverse = nullptr;
+
+  Transform2D(int nx, int ny)
+    : NX(nx)
+    , NY(ny)
+  {
+    std::lock_guard<std::mutex> lock(PlannerMutex());
+    static const bool threads = fftwf_init_threads() != 0;
+    this->Real = fftwf_alloc_real(static_cast<size_t>(nx) * ny);
+    this->Spectrum = fftwf_alloc_complex(static_cast<size_t>(nx / 2 + 1) * ny);
+    if (threads)
+    {
+      fftwf_plan_with_nthreads(std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads()));
+    }
+    this->Forward = fftwf_plan_dft_r2c_2d(ny, nx, this->Real, this->Spectrum, FFTW_ESTIMATE);
+    this->Inverse = fftwf_plan_dft_c2r_2d(ny, nx, this->Spectrum, this->Real, FFTW_ESTIMATE);
+    if (threads)
+    {
+      fftwf_plan_with_nthreads(1);
+    }
+  }
+  ~Transform2D()
+  {
+    std::lock_guard<std::mutex> lock(PlannerMutex());
+    fftwf_destroy_plan(this->Forward);
+    fftwf_destroy_plan(this->Inverse);
+    fftwf_free(this->Real);
+    fftwf_free(this->Spectrum);
+  }
+  Transform2D(const Transform2D&) = delete;
+  Transform2D& operator=(const Transform2D&) = delete;
+  size_t SpectrumSize() const { return static_cast<size_t>(this->NX / 2 + 1) * this->NY; }
+};
+
+// The Airy intensity (2 J1(v) / v)^2 at radius r for first dark ring r0.
+double AiryIntensity(double r, double r0)
+{
+  const double v = 3.8317059702075125 * r / r0;
+  if (v < 1e-8)
+  {
+    return 1.0;
+  }
+  const double j = 2.0 * std::cyl_bessel_j(1.0, v) / v;
+  return j * j;
+}
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPSF::Normalize(vtkBloomPSFKernel& kernel)
+{
+  double sum = 0.0;
+  for (double v : kernel.Values)
+  {
+    sum += v;
+  }
+  if (!(sum > 0.0) || !std::isfinite(sum))
+  {
+    return false;
+  }
+  for (double& v : kernel.Values)
+  {
+    v /= sum;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+vtkBloomPSFKernel vtkBloomPSF::Airy(double firstZero, int radius)
+{
+  vtkBloomPSFKernel k;
+  k.Radius = std::max(radius, 0);
+  const int n = 2 * k.Radius + 1;
+  k.Values.assign(static_cast<size_t>(n) * n, 0.0);
+  const int sub = 5;
+  for (int y = 0; y < n; ++y)
+  {
+    for (int x = 0; x < n; ++x)
+    {
+      double sum = 0.0;
+      for (int sy = 0; sy < sub; ++sy)
+      {
+        for (int sx = 0; sx < sub; ++sx)
+        {
+          const double dx = x - k.Radius + (sx + 0.5) / sub - 0.5;
+          const double dy = y - k.Radius + (sy + 0.5) / sub - 0.5;
+          sum += AiryIntensity(std::sqrt(dx * dx + dy * dy), firstZero);
+        }
+      }
+      k.Values[static_cast<size_t>(y) * n + x] = sum / (sub * sub);
+    }
+  }
+  vtkBloomPSF::Normalize(k);
+  return k;
+}
+
+//------------------------------------------------------------------------------
+vtkBloomPSFKernel vtkBloomPSF::Gaussians(
+  const std::vector<double>& sigmas, const std::vector<double>& weights, int radius)
+{
+  vtkBloomPSFKernel k;
+  k.Radius = std::max(radius, 0);
+  const int n = 2 * k.Radius + 1;
+  k.Values.assign(static_cast<size_t>(n) * n, 0.0);
+  for (size_t g = 0; g < std::min(sigmas.size(), weights.size()); ++g)
+  {
+    const double s = sigmas[g];
+    const double norm = weights[g] / (2.0 * 3.14159265358979323846 * s * s);
+    for (int y = 0; y < n; ++y)
+    {
+      for (int x = 0; x < n; ++x)
+      {
+        const double r2 = static_cast<double>(x - k.Radius) * (x - k.Radius) +
+          static_cast<double>(y - k.Radius) * (y - k.Radius);
+        k.Values[static_cast<size_t>(y) * n + x] += norm * std::exp(-0.5 * r2 / (s * s));
+      }
+    }
+  }
+  vtkBloomPSF::Normalize(k);
+  return k;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPSF::FromImage(
+  vtkImageData* image, int component, int maxRadius, vtkBloomPSFKernel& kernel, std::string& error)
+{
+  vtkDataArray* scalars = image ? image->GetPointData()->GetScalars() : nullptr;
+  if (!scalars || (scalars->GetDataType() != VTK_FLOAT && scalars->GetDataType() != VTK_DOUBLE))
+  {
+    error = "the PSF image needs float or double point scalars";
+    return false;
+  }
+  int dims[3];
+  image->GetDimensions(dims);
+  if (dims[2] != 1 || dims[0] % 2 == 0 || dims[1] % 2 == 0 || dims[0] != dims[1])
+  {
+    error = "the PSF image must be square and 2-D with an odd size (its centre pixel is the "
+            "centre); got " +
+      std::to_string(dims[0]) + " x " + std::to_string(dims[1]) + " x " + std::to_string(dims[2]);
+    return false;
+  }
+  if (dims[0] > 2 * maxRadius + 1)
+  {
+    error = "the PSF image is wider than " + std::to_string(2 * maxRadius + 1) + " pixels";
+    return false;
+  }
+  const int nc = scalars->GetNumberOfComponents();
+  const int c = std::min(std::max(component, 0), nc - 1);
+  kernel.Radius = dims[0] / 2;
+  kernel.Values.resize(static_cast<size_t>(dims[0]) * dims[1]);
+  for (vtkIdType t = 0; t < scalars->GetNumberOfTuples(); ++t)
+  {
+    const double v = scalars->GetComponent(t, c);
+    if (!std::isfinite(v) || v < 0.0)
+    {
+      error = "the PSF image holds a negative or non-finite value";
+      return false;
+    }
+    kernel.Values[t] = v;
+  }
+  if (!vtkBloomPSF::Normalize(kernel))
+  {
+    error = "the PSF image sums to zero (or to more than the largest double)";
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPSF::Convolve(const vtkBloomBuffer& in,
+  const std::vector<const vtkBloomPSFKernel*>& kernels, bool reflect, vtkBloomBuffer& out)
+{
+  const int w = in.Size[0], h = in.Size[1], nc = in.NumberOfComponents;
+  out.Allocate(in.Lo, in.Size, nc);
+  std::fill(out.Data.begin(), out.Data.end(), 0.0);
+  const vtkBloomPSFKernel* previous = nullptr;
+  std::vector<float> kernelSpectrum; // re, im interleaved
+  int radius = -1;
+  std::unique_ptr<Transform2D> fft;
+  for (int c = 0; c < nc; ++c)
+  {
+    const vtkBloomPSFKernel* kernel = kernels[std::min<size_t>(c, kernels.size() - 1)];
+    const int r = kernel->Radius;
+    const int kn = 2 * r + 1;
+    if (r != radius)
+    {
+      fft.reset(new Transform2D(GoodSize(w + 2 * r), GoodSize(h + 2 * r)));
+      radius = r;
+      previous = nullptr;
+    }
+    const int nx = fft->NX, ny = fft->NY;
+    const size_t total = static_cast<size_t>(nx) * ny;
+    float* real = fft->Real;
+    if (kernel != previous)
+    {
+      // The kernel's spectrum, scaled by 1 / (nx ny) for the unnormalized inverse.
+      std::fill(real, real + total, 0.0f);
+      for (int y = 0; y < kn; ++y)
+      {
+        for (int x = 0; x < kn; ++x)
+        {
+          real[static_cast<size_t>(y) * nx + x] =
+            static_cast<float>(kernel->Values[static_cast<size_t>(y) * kn + x]);
+        }
+      }
+      fftwf_execute(fft->Forward);
+      const float scale = 1.0f / static_cast<float>(total);
+      kernelSpectrum.resize(2 * fft->SpectrumSize());
+      for (size_t q = 0; q < fft->SpectrumSize(); ++q)
+      {
+        kernelSpectrum[2 * q] = fft->Spectrum[q][0] * scale;
+        kernelSpectrum[2 * q + 1] = fft->Spectrum[q][1] * scale;
+      }
+      previous = kernel;
+    }
+    // The channel, scaled by a power of two so that its largest magnitude is below 1.
+    double largest = 0.0;
+    for (int y = 0; y < h; ++y)
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        largest = std::max(largest, std::abs(in.Data[(static_cast<size_t>(y) * w + x) * nc + c]));
+      }
+    }
+    if (largest == 0.0)
+    {
+      continue;
+    }
+    int exponent = 0;
+    std::frexp(largest, &exponent);
+    const double scale = std::ldexp(1.0, -exponent);
+    std::fill(real, real + total, 0.0f);
+    for (int y = 0; y < h; ++y)
+    {
+      for (int x = 0; x < w; ++x)
+      {
+        real[static_cast<size_t>(y) * nx + x] =
+          static_cast<float>(in.Data[(static_cast<size_t>(y) * w + x) * nc + c] * scale);
+      }
+    }
+    fftwf_execute(fft->Forward);
+    fftwf_complex* s = fft->Spectrum;
+    for (size_t q = 0; q < fft->SpectrumSize(); ++q)
+    {
+      const float kr = kernelSpectrum[2 * q], ki = kernelSpectrum[2 * q + 1];
+      const float re = s[q][0] * kr - s[q][1] * ki;
+      const float im = s[q][0] * ki + s[q][1] * kr;
+      s[q][0] = re;
+      s[q][1] = im;
+    }
+    fftwf_execute(fft->Inverse);
+    // The full convolution, centred (index x - r), folded back into the image.
+    const double unscale = std::ldexp(1.0, exponent);
+    const int border =
+      reflect ? vtkBloomLinearOperator::BORDER_REFLECT : vtkBloomLinearOperator::BORDER_ZERO;
+    std::vector<int> foldX(w + 2 * r), foldY(h + 2 * r);
+    for (int x = 0; x < w + 2 * r; ++x)
+    {
+      foldX[x] = vtkBloomLinearOperator::FoldIndex(x - r, w, border);
+    }
+    for (int y = 0; y < h + 2 * r; ++y)
+    {
+      foldY[y] = vtkBloomLinearOperator::FoldIndex(y - r, h, border);
+    }
+    for (int y = 0; y < h + 2 * r; ++y)
+    {
+      if (foldY[y] < 0)
+      {
+        continue;
+      }
+      const float* row = real + static_cast<size_t>(y) * nx;
+      double* target = out.Data.data() + static_cast<size_t>(foldY[y]) * w * nc + c;
+      for (int x = 0; x < w + 2 * r; ++x)
+      {
+        if (foldX[x] >= 0)
+        {
+          target[static_cast<size_t>(foldX[x]) * nc] += static_cast<double>(row[x]) * unscale;
+        }
+      }
+    }
+  }
+}

@@ -1,0 +1,178 @@
+// vtkImageBloom's PSF mode: its parameters, the point-spread function of each colour channel and
+// the execution (bright pass, convolution with the PSF, composite). The convolution itself is
+// vtkBloomPSF's; the pyramid chain is in vtkImageBloom.cxx and vtkImageBloomReferenceChain.cxx.
+#include "vtkImageBloom.h"
+
+#include "vtkBloomImageOps.h"
+#include "vtkBloomPSF.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+// The largest PSF radius an automatic choice or an image may have.
+constexpr int MaximumPSFRadius = 2048;
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::SetPSFGaussians(
+  const std::vector<double>& sigmas, const std::vector<double>& weights)
+{
+  if (sigmas != this->PSFGaussianSigmas || weights != this->PSFGaussianWeights)
+  {
+    this->PSFGaussianSigmas = sigmas;
+    this->PSFGaussianWeights = weights;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkImageBloom::SetPSFImage(vtkImageData* image)
+{
+  if (this->PSFImage != image)
+  {
+    this->PSFImage = image;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+vtkImageData* vtkImageBloom::GetPSFImage()
+{
+  return this->PSFImage;
+}
+
+//------------------------------------------------------------------------------
+vtkMTimeType vtkImageBloom::GetMTime()
+{
+  vtkMTimeType time = this->Superclass::GetMTime();
+  if (this->PSFImage)
+  {
+    time = std::max(time, this->PSFImage->GetMTime());
+  }
+  return time;
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkImageBloom::ComputePSF(int channel, int& radius)
+{
+  radius = 0;
+  const int c = std::min(std::max(channel, 0), 2);
+  vtkBloomPSFKernel kernel;
+  switch (this->PSFType)
+  {
+    case PSF_GAUSSIANS:
+    {
+      const auto& s = this->PSFGaussianSigmas;
+      const auto& w = this->PSFGaussianWeights;
+      double widest = 0.0, total = 0.0;
+      bool valid = !s.empty() && s.size() == w.size();
+      for (size_t g = 0; valid && g < s.size(); ++g)
+      {
+        valid = std::isfinite(s[g]) && s[g] > 0.0 && std::isfinite(w[g]) && w[g] >= 0.0;
+        widest = std::max(widest, s[g]);
+        total += w[g];
+      }
+      if (!valid || !(total > 0.0))
+      {
+        vtkErrorMacro(<< "PSF Gaussians need as many weights as sigmas, sigmas > 0 and finite, "
+                         "weights >= 0 and finite with a positive sum.");
+        return {};
+      }
+      const int r = this->PSFRadius >= 0
+        ? this->PSFRadius
+        : static_cast<int>(std::min<double>(MaximumPSFRadius, std::ceil(4.0 * widest)));
+      kernel = vtkBloomPSF::Gaussians(s, w, r);
+      break;
+    }
+    case PSF_IMAGE:
+    {
+      std::string error;
+      const int limit = this->PSFRadius >= 0 ? this->PSFRadius : MaximumPSFRadius;
+      if (!this->PSFImage)
+      {
+        vtkErrorMacro(<< "PSF mode with PSF_IMAGE needs SetPSFImage.");
+        return {};
+      }
+      if (!vtkBloomPSF::FromImage(this->PSFImage, c, limit, kernel, error))
+      {
+        vtkErrorMacro(<< "Invalid PSF image: " << error << ".");
+        return {};
+      }
+      break;
+    }
+    case PSF_AIRY:
+    default:
+    {
+      const double* l = this->Wavelengths;
+      if (!(l[0] > 0.0 && l[1] > 0.0 && l[2] > 0.0) ||
+        !(std::isfinite(l[0]) && std::isfinite(l[1]) && std::isfinite(l[2])))
+      {
+        vtkErrorMacro(<< "Wavelengths must be finite and > 0; got (" << l[0] << ", " << l[1] << ", "
+                      << l[2] << ").");
+        return {};
+      }
+      const double longest = std::max(std::max(l[0], l[1]), l[2]);
+      const int r = this->PSFRadius >= 0 ? this->PSFRadius
+                                         : static_cast<int>(std::min<double>(MaximumPSFRadius,
+                                             std::ceil(12.0 * this->AiryRadius * longest / l[1])));
+      kernel = vtkBloomPSF::Airy(this->AiryRadius * l[c] / l[1], r);
+      break;
+    }
+  }
+  radius = kernel.Radius;
+  return kernel.Values;
+}
+
+//------------------------------------------------------------------------------
+int vtkImageBloom::ExecutePSF(vtkImageData* input, vtkInformation* outInfo, vtkImageData* output)
+{
+  int inExt[6];
+  input->GetExtent(inExt);
+  if (inExt[4] != inExt[5])
+  {
+    vtkErrorMacro(<< "PSF mode needs a 2-D image; the input has " << inExt[5] - inExt[4] + 1
+                  << " slices.");
+    output->Initialize();
+    return 0;
+  }
+  const int colours = input->GetNumberOfScalarComponents() >= 3 ? 3 : 1;
+  // One PSF per colour channel; a single-colour image uses the green one.
+  std::vector<vtkBloomPSFKernel> kernels(colours);
+  std::vector<const vtkBloomPSFKernel*> pointers;
+  for (int c = 0; c < colours; ++c)
+  {
+    kernels[c].Values = this->ComputePSF(colours == 3 ? c : 1, kernels[c].Radius);
+    if (kernels[c].Values.empty())
+    {
+      output->Initialize();
+      return 0;
+    }
+    pointers.push_back(&kernels[c]);
+  }
+  this->AllocateOutputData(output, outInfo);
+  vtkBloomBuffer bright;
+  this->ImportColours(input, bright);
+  bool skip = this->SkipDisabledEffects && this->BloomIsDisabled(colours, 1);
+  if (!skip)
+  {
+    this->BrightPassInPlace(bright);
+    skip = this->SkipEmptyBloom &&
+      std::all_of(bright.Data.begin(), bright.Data.end(), [](double v) { return v == 0.0; });
+  }
+  this->LastBloomSkipped = skip;
+  this->UpdateProgress(0.2);
+  vtkBloomBuffer bloom;
+  if (!skip)
+  {
+    vtkBloomPSF::Convolve(bright, pointers, this->PSFBorderMode == 1, bloom);
+  }
+  this->UpdateProgress(0.8);
+  this->Composite(input, skip ? nullptr : &bloom, output);
+  this->ComputeOutputStatistics(input, output, 0);
+  this->UpdateProgress(1.0);
+  return 1;
+}
