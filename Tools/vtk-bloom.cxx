@@ -11,12 +11,13 @@
 // error. An input is never overwritten, and a batch never overwrites any existing file.
 //
 // The pieces: vtkBloomToolSupport (errors, arguments, progress), vtkBloomToolImageIO (read and
-// write), vtkBloomToolBatch (planning a batch, per-file reports, --stats JSON), and this file (the
-// commands).
+// write), vtkBloomToolOptions (the bloom options), vtkBloomToolBatch (planning a batch, per-file
+// reports, --stats JSON), and this file (the commands).
 
 #include "vtkBloomKernels.h"
 #include "vtkBloomToolBatch.h"
 #include "vtkBloomToolImageIO.h"
+#include "vtkBloomToolOptions.h"
 #include "vtkBloomToolSupport.h"
 #include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
@@ -84,6 +85,14 @@ image: HDR bloom (vtkImageBloom). A preset is applied first; options then overri
   --blur-spacing D       distance between blur taps, in level pixels
   --blur-iterations N    repeat the per-level blur N times
   --level-weights W,...  per-level weights, first level first
+  --convolution C        auto (default) | direct | fft: how wide level blurs are applied
+  --psf P                PSF bloom instead of the pyramid: airy | gaussians | FILE.exr (an odd,
+                         square, centred PSF image; one channel, or one per colour)
+  --psf-radius R         truncation radius in pixels (default: automatic)
+  --airy-radius PX       airy: first dark ring radius at the green wavelength (default 3)
+  --wavelengths R,G,B    airy: channel wavelengths in nm (default 610,550,465)
+  --psf-gaussians S:W,.. gaussians: sigma:weight pairs (default 1.5:0.6,6:0.3,24:0.1)
+  --psf-border B         reflect (default: conserves energy) | zero
   A frame with nothing above the threshold is written unchanged, without bloom work.
 
 blur: separable Gaussian (vtkImageSeparableGaussian), seed 004 semantics.
@@ -91,6 +100,7 @@ blur: separable Gaussian (vtkImageSeparableGaussian), seed 004 semantics.
   --sigma S              standard deviation in pixels (default R/2; 0 is an exact copy)
   --border B             clamp (default) | reflect | zero
   --kernel K             sampled (default) | integrated | discrete
+  --convolution C        auto (default) | direct | fft
 
 batch (image and blur): many inputs, one output directory.
   -o OUTDIR              write OUTDIR/NAME.exr (or .png) for each input IN/NAME.exr; OUTDIR is
@@ -141,11 +151,8 @@ Exit status: 0 success, 1 failure, 2 usage error. An input file is never overwri
 // command (ApplyImageOptions, TakeCommon, TakeRenderOptions).
 const std::vector<std::string> CommonOptionNames = { "--exposure", "--max-pixels", "-o", "--format",
   "--stats" };
-const std::vector<std::string> BloomOptionNames = { "--preset", "--threshold", "--knee", "--mode",
-  "--clamp-luminance", "--strength", "--composite", "--tint", "--levels", "--start-level", "--down",
-  "--up", "--accumulate", "--blur-sigma", "--blur-radius", "--blur-spacing", "--blur-iterations",
-  "--level-weights" };
-const std::vector<std::string> BlurOptionNames = { "--radius", "--sigma", "--border", "--kernel" };
+const std::vector<std::string> BlurOptionNames = { "--radius", "--sigma", "--border", "--kernel",
+  "--convolution" };
 const std::vector<std::string> RenderOptionNames = { "--size", "--precision", "--color-by",
   "--range", "--emit-range", "--contour", "--background", "--colormap", "--representation",
   "--view", "--emit-gain", "--azimuth", "--elevation", "--zoom", "--snapshot", "--play-events" };
@@ -208,126 +215,6 @@ void TakeCommon(Arguments& args, CommonOptions& common)
       throw UsageError{ "--stats expects a file name ending in .json, got '" + value + "'" };
     }
     common.StatisticsFile = value;
-  }
-}
-
-void ApplyImageOptions(Arguments& args, vtkImageBloom* bloom)
-{
-  std::string v;
-  if (args.Take("--preset", v) && !bloom->SetPreset(v.c_str()))
-  {
-    throw UsageError{ "unknown preset '" + v +
-      "'; expected webgpu-market, mip-atlas, ping-pong or crt-halfres" };
-  }
-  if (args.Take("--threshold", v))
-  {
-    bloom->SetThreshold(ParseDouble("--threshold", v));
-  }
-  if (args.Take("--knee", v))
-  {
-    const double knee = ParseDouble("--knee", v);
-    if (knee < 0.0 || knee > 1.0)
-    {
-      throw UsageError{ "--knee must be in [0, 1]" };
-    }
-    bloom->SetKnee(knee);
-  }
-  if (args.Take("--mode", v))
-  {
-    bloom->SetThresholdMode(ParseChoice("--mode", v,
-      { { "smoothstep", vtkImageBloomThreshold::SMOOTHSTEP_KNEE },
-        { "quadratic", vtkImageBloomThreshold::QUADRATIC_KNEE },
-        { "hard", vtkImageBloomThreshold::HARD_LUMINANCE },
-        { "per-channel", vtkImageBloomThreshold::PER_CHANNEL },
-        { "none", vtkImageBloomThreshold::NONE } }));
-  }
-  if (args.Take("--clamp-luminance", v))
-  {
-    const double clamp = ParseDouble("--clamp-luminance", v);
-    if (clamp < 0.0)
-    {
-      throw UsageError{ "--clamp-luminance must be >= 0" };
-    }
-    bloom->SetClampLuminance(clamp);
-  }
-  if (args.Take("--strength", v))
-  {
-    bloom->SetStrength(ParseDouble("--strength", v));
-  }
-  if (args.Take("--composite", v))
-  {
-    bloom->SetCompositeMode(ParseChoice("--composite", v,
-      { { "additive", vtkImageBloom::ADDITIVE }, { "lerp", vtkImageBloom::LERP } }));
-  }
-  if (args.Take("--tint", v))
-  {
-    const auto tint = ParseList("--tint", v);
-    if (tint.size() != 3)
-    {
-      throw UsageError{ "--tint expects R,G,B" };
-    }
-    bloom->SetTint(tint[0], tint[1], tint[2]);
-  }
-  if (args.Take("--levels", v))
-  {
-    bloom->SetNumberOfLevels(ParseInt("--levels", v, 1, 32));
-  }
-  if (args.Take("--start-level", v))
-  {
-    bloom->SetStartLevel(ParseInt("--start-level", v, 0, 16));
-  }
-  if (args.Take("--down", v))
-  {
-    bloom->SetDownsampleKernel(ParseChoice("--down", v,
-      { { "jimenez13", vtkImagePyramidDown::JIMENEZ13 }, { "box", vtkImagePyramidDown::BOX },
-        { "binomial", vtkImagePyramidDown::BINOMIAL } }));
-  }
-  if (args.Take("--karis", v))
-  {
-    bloom->KarisAverageOn();
-  }
-  if (args.Take("--up", v))
-  {
-    bloom->SetUpsampleKernel(ParseChoice("--up", v,
-      { { "tent", vtkImagePyramidUp::TENT }, { "bilinear", vtkImagePyramidUp::BILINEAR } }));
-  }
-  if (args.Take("--accumulate", v))
-  {
-    bloom->SetAccumulateMode(ParseChoice("--accumulate", v,
-      { { "cascade", vtkImageBloom::CASCADE }, { "direct", vtkImageBloom::DIRECT } }));
-  }
-  if (args.Take("--blur-sigma", v))
-  {
-    const double sigma = ParseDouble("--blur-sigma", v);
-    if (sigma < 0.0)
-    {
-      throw UsageError{ "--blur-sigma must be >= 0" };
-    }
-    bloom->SetBlurKernel(vtkImageBloom::BLUR_GAUSSIAN);
-    bloom->SetBlurStandardDeviation(sigma);
-    bloom->SetBlurRadius(-1);
-  }
-  if (args.Take("--blur-radius", v))
-  {
-    bloom->SetBlurKernel(vtkImageBloom::BLUR_GAUSSIAN);
-    bloom->SetBlurRadius(ParseInt("--blur-radius", v, 0, 4096));
-  }
-  if (args.Take("--blur-spacing", v))
-  {
-    const double spacing = ParseDouble("--blur-spacing", v);
-    if (spacing < 0.0)
-    {
-      throw UsageError{ "--blur-spacing must be >= 0" };
-    }
-    bloom->SetBlurTapSpacing(spacing);
-  }
-  if (args.Take("--blur-iterations", v))
-  {
-    bloom->SetBlurIterations(ParseInt("--blur-iterations", v, 0, 1024));
-  }
-  if (args.Take("--level-weights", v))
-  {
-    bloom->SetLevelWeights(ParseList("--level-weights", v));
   }
 }
 
@@ -528,6 +415,13 @@ int RunBlur(int argc, char* argv[])
         { "integrated", vtkImageSeparableGaussian::INTEGRATED },
         { "discrete", vtkImageSeparableGaussian::DISCRETE } }));
   }
+  if (args.Take("--convolution", v))
+  {
+    blur->SetConvolutionMode(ParseChoice("--convolution", v,
+      { { "auto", vtkImageSeparableGaussian::CONVOLUTION_AUTOMATIC },
+        { "direct", vtkImageSeparableGaussian::CONVOLUTION_DIRECT },
+        { "fft", vtkImageSeparableGaussian::CONVOLUTION_FFT } }));
+  }
   blur->SetStandardDeviations(sigma, sigma, 0.0);
   blur->SetRadius(radius, radius, 0);
   // Blur all four channels, alpha included, as seed 004 does.
@@ -629,6 +523,10 @@ RenderOptions TakeRenderOptions(Arguments& args, const CommonOptions& common)
   vtkNew<vtkImageBloom> parsed;
   const std::map<std::string, std::string> bloomOptions = args.Options;
   ApplyImageOptions(args, parsed);
+  if (parsed->GetBloomMode() == vtkImageBloom::BLOOM_PSF)
+  {
+    throw UsageError{ "--psf applies to image: the render pass has no PSF mode" };
+  }
   options.ConfigureBloom = [bloomOptions](vtkBloomPass* pass)
   {
     Arguments again(bloomOptions);

@@ -7,6 +7,7 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
+#include <ImfOutputFile.h>
 
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -82,6 +83,82 @@ TEST(CommandLine, OptionsOverrideThePreset)
   const Pixels in = ReadEXR(input), p1 = ReadEXR(a), p0 = ReadEXR(b);
   EXPECT_EQ(RelativeL2(p0, in), 0.0);
   EXPECT_GT(RelativeL2(p1, in), 1e-3);
+}
+
+// Sum of colour channel c of an image.
+double ChannelSum(const Pixels& p, int c)
+{
+  double sum = 0.0;
+  for (size_t i = c; i < p.Rgba.size(); i += 4)
+  {
+    sum += p.Rgba[i];
+  }
+  return sum;
+}
+
+TEST(CommandLine, PSFBloomConservesEnergy)
+{
+  VTKBLOOM_REQUIRE_DATA(input, "presets/example_161x91.exr");
+  const Pixels in = ReadEXR(input);
+  // With no threshold the bright pass is the image, so reflect borders make the output's sum
+  // (1 + strength) times the input's, per channel, whatever the PSF.
+  const std::string psfFile = vtkBloomTest::OutputPath("cli-psf-5x5.exr");
+  {
+    // An asymmetric measured PSF, written as float RGBA.
+    std::vector<float> rgba(5 * 5 * 4);
+    for (int i = 0; i < 25; ++i)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        rgba[4 * i + c] = 0.1f + 0.05f * static_cast<float>((i * (c + 2)) % 7);
+      }
+      rgba[4 * i + 3] = 1.0f;
+    }
+    Imf::Header header(5, 5);
+    Imf::FrameBuffer fb;
+    const char* names[4] = { "R", "G", "B", "A" };
+    for (int c = 0; c < 4; ++c)
+    {
+      header.channels().insert(names[c], Imf::Channel(Imf::FLOAT));
+      fb.insert(
+        names[c], Imf::Slice(Imf::FLOAT, reinterpret_cast<char*>(rgba.data() + c), 16, 16 * 5));
+    }
+    fs::remove(psfFile);
+    Imf::OutputFile file(psfFile.c_str(), header);
+    file.setFrameBuffer(fb);
+    file.writePixels(5);
+  }
+  for (const std::string& psf : std::vector<std::string>{ "airy", "gaussians", Quote(psfFile) })
+  {
+    const std::string out = vtkBloomTest::OutputPath("cli-psf.exr");
+    fs::remove(out);
+    ASSERT_EQ(RunTool("image --psf " + psf + " --mode none --strength 0.5 " + Quote(input) + " " +
+                Quote(out)),
+      0)
+      << psf;
+    const Pixels bloomed = ReadEXR(out);
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(ChannelSum(bloomed, c) / ChannelSum(in, c), 1.5, 1e-5) << psf << " " << c;
+    }
+    EXPECT_GT(RelativeL2(bloomed, in), 1e-3) << psf;
+  }
+  const std::string out = Quote(vtkBloomTest::OutputPath("cli-psf-bad.exr"));
+  std::string errors;
+  EXPECT_EQ(RunTool("image --psf bessel " + Quote(input) + " " + out), 2);
+  EXPECT_EQ(RunTool("image --psf-radius 4 " + Quote(input) + " " + out, &errors), 2);
+  EXPECT_NE(errors.find("--psf"), std::string::npos) << errors;
+  EXPECT_EQ(
+    RunTool("image --psf gaussians --psf-gaussians 2:1,0:1 " + Quote(input) + " " + out), 2);
+  EXPECT_EQ(RunTool("image --psf airy --wavelengths 600,500 " + Quote(input) + " " + out), 2);
+  EXPECT_EQ(RunTool("image --psf missing-psf.exr " + Quote(input) + " " + out), 1);
+  // An even-sized PSF image: the filter refuses it and the tool fails cleanly.
+  EXPECT_EQ(RunTool("image --psf " + Quote(input) + " " + Quote(input) + " " + out, &errors), 1);
+  EXPECT_NE(errors.find("odd"), std::string::npos) << errors;
+  EXPECT_FALSE(fs::exists(vtkBloomTest::OutputPath("cli-psf-bad.exr")));
+#ifdef VTKBLOOM_HAS_RENDERING
+  EXPECT_EQ(RunTool("render --psf airy lit-spheres " + out), 2);
+#endif
 }
 
 TEST(CommandLine, PngOutputIsToneMapped8Bit)
