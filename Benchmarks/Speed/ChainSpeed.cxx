@@ -220,6 +220,20 @@ void Configure(vtkImageBloom* bloom, const std::string& config)
     bloom->SetBlurTapSpacing(1.0);
     bloom->SetStrength(0.5);
   }
+  else if (config == "ping-pong.direct")
+  {
+    // The ping-pong preset with its 385-tap blur summed tap by tap (before the FFT path).
+    bloom->SetPreset("ping-pong");
+    bloom->SetConvolutionModeToDirect();
+  }
+  else if (config == "psf.airy" || config == "psf.gaussians")
+  {
+    // PSF mode with the default Airy pattern or sum of Gaussians, at the default threshold.
+    bloom->SetPreset("webgpu-market");
+    bloom->SetBloomModeToPSF();
+    bloom->SetPSFType(
+      config == "psf.airy" ? vtkImageBloom::PSF_AIRY : vtkImageBloom::PSF_GAUSSIANS);
+  }
   else
   {
     bloom->SetPreset(config.c_str());
@@ -556,6 +570,12 @@ int main(int argc, char** argv)
       vtkImageBloom::FAST, true);
     // Wide blurs at full resolution: the preset that found the ring's recomputed support rows.
     reg("bloom.ping-pong", BM_Bloom, std::string("ping-pong"), s, -1.0, true, false,
+      vtkImageBloom::FAST, true);
+    reg("bloom.ping-pong.direct", BM_Bloom, std::string("ping-pong.direct"), s, -1.0, true, false,
+      vtkImageBloom::FAST, true);
+    reg("bloom.psf.airy", BM_Bloom, std::string("psf.airy"), s, -1.0, true, false,
+      vtkImageBloom::FAST, true);
+    reg("bloom.psf.gaussians", BM_Bloom, std::string("psf.gaussians"), s, -1.0, true, false,
       vtkImageBloom::FAST, true);
     reg("bloom.webgpu-market.statistics", BM_Bloom, std::string("webgpu-market"), s, -1.0, true,
       true, vtkImageBloom::FAST, true);
