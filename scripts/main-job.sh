@@ -28,6 +28,12 @@ fi
 echo "main-job: wrote $out/emissive-before.png and $out/emissive-bloom.png"
 /usr/bin/python3 "$root/scripts/side-by-side.py" "$out/emissive-comparison.png" \
   "$out/emissive-before.png" "$out/emissive-bloom.png"
+# The same scene with PSF bloom (the bright pass convolved with a point-spread function) instead
+# of the pyramid: the pyramid (left), an Airy diffraction pattern (centre), a sum of Gaussians.
+"$tool" image --psf airy --airy-radius 10 "$out/emissive-before.exr" "$out/emissive-psf-airy.png"
+"$tool" image --psf gaussians "$out/emissive-before.exr" "$out/emissive-psf-gaussians.png"
+/usr/bin/python3 "$root/scripts/side-by-side.py" --scale 0.5 "$out/psf-comparison.png" \
+  "$out/emissive-bloom.png" "$out/emissive-psf-airy.png" "$out/emissive-psf-gaussians.png"
 if [ -f "$candle" ]; then
   /usr/bin/python3 "$root/scripts/side-by-side.py" --scale 0.5 "$out/candle-glass-comparison.png" \
     "$out/candle-glass-before.png" "$out/candle-glass-bloom.png"
