@@ -50,6 +50,7 @@
 #include "vtkFiltersBloomModule.h"  // For export macro
 
 #include <cstddef>
+#include <mutex> // For the planner lock
 #include <vector>
 
 class VTKFILTERSBLOOM_EXPORT vtkBloomFFTConvolution
@@ -72,6 +73,15 @@ public:
    * stays unusable, when the operator has no translation-invariant interior.
    */
   bool Build(const vtkBloomLinearOperator& op, int border, bool singlePrecision);
+
+  /**
+   * The one lock around FFTW's planner, which is global and not thread-safe: every plan made or
+   * destroyed in this module (vtkBloomPSF's too) is made under it.
+   */
+  static std::mutex& PlannerMutex();
+
+  /// The smallest m >= n whose only prime factors are 2 and 3 (of FFTW's sizes, the fastest).
+  static int GoodTransformSize(int n);
 
   /// Whether Build succeeded.
   bool IsReady() const { return this->Ready; }

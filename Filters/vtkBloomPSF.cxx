@@ -1,5 +1,6 @@
 #include "vtkBloomPSF.h"
 
+#include "vtkBloomFFTConvolution.h"
 #include "vtkBloomImageOps.h"
 #include "vtkBloomLinearOperator.h"
 #include "vtkDataArray.h"
@@ -16,33 +17,6 @@
 
 namespace
 {
-// FFTW's planner is not thread-safe (vtkBloomFFTConvolution takes the same kind of lock; the two
-// never plan at the same time from one filter, and FFTW serializes nothing itself).
-std::mutex& PlannerMutex()
-{
-  static std::mutex mutex;
-  return mutex;
-}
-
-int GoodSize(int n)
-{
-  for (int m = std::max(n, 2);; ++m)
-  {
-    int r = m;
-    for (int p : { 2, 3 })
-    {
-      while (r % p == 0)
-      {
-        r /= p;
-      }
-    }
-    if (r == 1)
-    {
-      return m;
-    }
-  }
-}
-
 // The real 2-D transforms of an ny x nx array (row-major) and back, threaded by FFTW.
 struct Transform2D
 {
@@ -56,7 +30,7 @@ struct Transform2D
     : NX(nx)
     , NY(ny)
   {
-    std::lock_guard<std::mutex> lock(PlannerMutex());
+    std::lock_guard<std::mutex> lock(vtkBloomFFTConvolution::PlannerMutex());
     static const bool threads = fftwf_init_threads() != 0;
     this->Real = fftwf_alloc_real(static_cast<size_t>(nx) * ny);
     this->Spectrum = fftwf_alloc_complex(static_cast<size_t>(nx / 2 + 1) * ny);
@@ -73,7 +47,7 @@ struct Transform2D
   }
   ~Transform2D()
   {
-    std::lock_guard<std::mutex> lock(PlannerMutex());
+    std::lock_guard<std::mutex> lock(vtkBloomFFTConvolution::PlannerMutex());
     fftwf_destroy_plan(this->Forward);
     fftwf_destroy_plan(this->Inverse);
     fftwf_free(this->Real);
@@ -235,7 +209,8 @@ void vtkBloomPSF::Convolve(const vtkBloomBuffer& in,
     const int kn = 2 * r + 1;
     if (r != radius)
     {
-      fft.reset(new Transform2D(GoodSize(w + 2 * r), GoodSize(h + 2 * r)));
+      fft.reset(new Transform2D(vtkBloomFFTConvolution::GoodTransformSize(w + 2 * r),
+        vtkBloomFFTConvolution::GoodTransformSize(h + 2 * r)));
       radius = r;
       previous = nullptr;
     }

@@ -13,6 +13,7 @@
 #include <cmath>
 #include <random>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace
@@ -282,4 +283,44 @@ TEST(FiltersFFTConvolution, OperatorsWithoutAnInvariantInteriorAreRefused)
   EXPECT_FALSE(fft.Build(op, Reflect, true));
   EXPECT_FALSE(fft.IsReady());
   EXPECT_EQ(fft.Cost(), HUGE_VAL);
+}
+
+TEST(FiltersFFTConvolution, PlansFromManyThreadsAtOnce)
+{
+  // FFTW's planner is global and not thread-safe; every plan is made under one lock, so
+  // convolutions built, applied and destroyed on four threads at once give the serial bits.
+  const auto half = GaussianHalf(9.0);
+  std::vector<vtkBloomLinearOperator> ops;
+  std::vector<std::vector<double>> expected;
+  for (int n : { 300, 301, 500, 777 })
+  {
+    ops.push_back(Operator(n, half, Reflect, 1));
+    vtkBloomFFTConvolution fft;
+    EXPECT_TRUE(fft.Build(ops.back(), Reflect, true));
+    expected.push_back(ApplyFFT<float>(fft, RandomLine(n, 3u)));
+  }
+  std::vector<int> mismatches(4, 0);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 4; ++t)
+  {
+    threads.emplace_back(
+      [&, t]()
+      {
+        for (int round = 0; round < 25; ++round)
+        {
+          const size_t k = static_cast<size_t>(t + round) % ops.size();
+          vtkBloomFFTConvolution fft;
+          fft.Build(ops[k], Reflect, true);
+          mismatches[t] += ApplyFFT<float>(fft, RandomLine(ops[k].InputSize, 3u)) != expected[k];
+        }
+      });
+  }
+  for (auto& thread : threads)
+  {
+    thread.join();
+  }
+  for (int t = 0; t < 4; ++t)
+  {
+    EXPECT_EQ(mismatches[t], 0) << "thread " << t;
+  }
 }
