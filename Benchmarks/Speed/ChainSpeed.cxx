@@ -226,6 +226,13 @@ void Configure(vtkImageBloom* bloom, const std::string& config)
     bloom->SetPreset("ping-pong");
     bloom->SetConvolutionModeToDirect();
   }
+  else if (config == "ping-pong.noblur")
+  {
+    // The ping-pong chain without its blur: the full-resolution bright pass, accumulation and
+    // composite that any blur of this preset comes on top of.
+    bloom->SetPreset("ping-pong");
+    bloom->SetBlurIterations(0);
+  }
   else if (config == "psf.airy" || config == "psf.gaussians")
   {
     // PSF mode with the default Airy pattern or sum of Gaussians, at the default threshold.
@@ -572,6 +579,8 @@ int main(int argc, char** argv)
     reg("bloom.ping-pong", BM_Bloom, std::string("ping-pong"), s, -1.0, true, false,
       vtkImageBloom::FAST, true);
     reg("bloom.ping-pong.direct", BM_Bloom, std::string("ping-pong.direct"), s, -1.0, true, false,
+      vtkImageBloom::FAST, true);
+    reg("bloom.ping-pong.noblur", BM_Bloom, std::string("ping-pong.noblur"), s, -1.0, true, false,
       vtkImageBloom::FAST, true);
     reg("bloom.psf.airy", BM_Bloom, std::string("psf.airy"), s, -1.0, true, false,
       vtkImageBloom::FAST, true);
