@@ -7,7 +7,7 @@ import tempfile
 import unittest
 
 import numpy as np
-from vtkmodules.vtkCommonCore import vtkCommand
+from vtkmodules.vtkCommonCore import reference, vtkCommand
 from vtkmodules.vtkCommonDataModel import vtkImageData
 from vtkmodules.vtkImagingCore import vtkImageCast, vtkRTAnalyticSource
 from vtkmodules.util import numpy_support
@@ -231,6 +231,43 @@ class Statistics(unittest.TestCase):
         bloom = self.bloom(scene, "crt-halfres")
         lum_in = scene[..., :3].astype(np.float64) @ REC709
         self.assertAlmostEqual(bloom.GetEnergyIn() / lum_in.sum(), 1.0, delta=1e-9)
+
+    def test_psf_mode_conserves_energy(self):
+        # No threshold: the bright pass is the scene, so with reflect borders the output sums to
+        # (1 + strength) times the input, per channel, for a PSF given from Python.
+        rng = np.random.default_rng(5)
+        scene = rng.uniform(0.0, 2.0, size=(48, 64, 3))
+        scene[40:48, 0:6] = 50.0  # a bright patch in a corner
+        bloom = vtkbloom.vtkImageBloom()
+        bloom.SetBloomModeToPSF()
+        bloom.SetPSFType(vtkbloom.vtkImageBloom.PSF_GAUSSIANS)
+        bloom.SetPSFGaussians([1.0, 4.0], [0.5, 0.5])
+        bloom.SetThresholdMode(4)  # NONE
+        bloom.SetStrength(0.25)
+        bloom.SetInputData(image_from_array(scene))
+        bloom.Update()
+        out = array_from_image(bloom.GetOutput())
+        for c in range(3):
+            self.assertAlmostEqual(out[..., c].sum() / scene[..., c].sum(), 1.25, delta=1e-6)
+        radius = reference(0)
+        psf = bloom.ComputePSF(1, radius)
+        self.assertEqual(len(psf), (2 * radius.get() + 1) ** 2)
+        self.assertAlmostEqual(sum(psf), 1.0, delta=1e-12)
+
+    def test_fft_blur_matches_direct(self):
+        scene = np.random.default_rng(6).uniform(0.0, 1.0, size=(120, 160, 1))
+        results = []
+        for mode in (vtkbloom.vtkImageSeparableGaussian.CONVOLUTION_DIRECT,
+                     vtkbloom.vtkImageSeparableGaussian.CONVOLUTION_FFT):
+            blur = vtkbloom.vtkImageSeparableGaussian()
+            blur.SetStandardDeviations(12.0, 12.0, 0.0)
+            blur.SetConvolutionMode(mode)
+            blur.SetInputData(image_from_array(scene))
+            blur.Update()
+            self.assertEqual(blur.GetLastFFTAxes(), 3 if mode == 2 else 0)
+            results.append(array_from_image(blur.GetOutput()))
+        error = np.linalg.norm(results[1] - results[0]) / np.linalg.norm(results[0])
+        self.assertLess(error, 1e-12)  # double input: the FFT runs in double
 
 
 if __name__ == "__main__":
