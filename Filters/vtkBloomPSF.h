@@ -37,6 +37,14 @@ struct vtkBloomPSFKernel
   std::vector<double> Values; ///< (2 Radius + 1)^2, row-major, sum 1
 };
 
+/// vtkImageBloom's PSFs, kept between updates until a parameter (or the PSF image) changes.
+struct vtkBloomPSFKernels
+{
+  std::vector<vtkBloomPSFKernel> Kernels; ///< one per colour channel
+  unsigned long long Time = 0;            ///< the filter's MTime they were built at
+  int Colours = 0;
+};
+
 namespace vtkBloomPSF
 {
 /// Airy pattern with first dark ring at `firstZero` pixels, truncated at `radius`.

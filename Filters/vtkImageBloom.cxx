@@ -4,6 +4,7 @@
 #include "vtkBloomFastChain.h"
 #include "vtkBloomImageOps.h"
 #include "vtkBloomKernels.h"
+#include "vtkBloomPSF.h"
 #include "vtkBloomStatistics.h"
 #include "vtkDoubleArray.h"
 #include "vtkFieldData.h"
@@ -79,6 +80,7 @@ vtkImageBloom::vtkImageBloom()
   this->LastRunUsedAVX2 = false;
   this->LastFFTBlurs = 0;
   this->FastChain = new vtkBloomFastChain;
+  this->PSFKernels = new vtkBloomPSFKernels;
   this->Chain = new vtkBloomChain;
   this->ChainSize[0] = this->ChainSize[1] = -1;
   this->ResetStatistics();
@@ -88,6 +90,7 @@ vtkImageBloom::vtkImageBloom()
 vtkImageBloom::~vtkImageBloom()
 {
   delete this->FastChain;
+  delete this->PSFKernels;
   delete this->Chain;
 }
 

@@ -160,6 +160,7 @@
 #include <vector> // For level weights
 
 struct vtkBloomBuffer;
+struct vtkBloomPSFKernels;
 class vtkBloomChain;
 class vtkBloomFastChain;
 
@@ -595,6 +596,7 @@ protected:
   vtkSmartPointer<vtkImageData> PSFImage;
   int PSFRadius;
   int PSFBorderMode;
+  vtkBloomPSFKernels* PSFKernels; ///< the PSF of each channel, rebuilt when a parameter changes
   vtkBloomFastChain* FastChain;
   // The chain's operators, rebuilt only when a parameter or the input size changed.
   vtkBloomChain* Chain;

@@ -140,18 +140,31 @@ int vtkImageBloom::ExecutePSF(vtkImageData* input, vtkInformation* outInfo, vtkI
     return 0;
   }
   const int colours = input->GetNumberOfScalarComponents() >= 3 ? 3 : 1;
-  // One PSF per colour channel; a single-colour image uses the green one.
-  std::vector<vtkBloomPSFKernel> kernels(colours);
-  std::vector<const vtkBloomPSFKernel*> pointers;
-  for (int c = 0; c < colours; ++c)
+  // One PSF per colour channel (a single-colour image uses the green one), built again only
+  // when a parameter or the PSF image changed: an Airy pattern takes longer than its FFT.
+  vtkBloomPSFKernels& cache = *this->PSFKernels;
+  const vtkMTimeType time = this->GetMTime();
+  if (cache.Time != time || cache.Colours != colours)
   {
-    kernels[c].Values = this->ComputePSF(colours == 3 ? c : 1, kernels[c].Radius);
-    if (kernels[c].Values.empty())
+    cache.Kernels.assign(colours, vtkBloomPSFKernel());
+    cache.Time = 0;
+    for (int c = 0; c < colours; ++c)
     {
-      output->Initialize();
-      return 0;
+      vtkBloomPSFKernel& kernel = cache.Kernels[c];
+      kernel.Values = this->ComputePSF(colours == 3 ? c : 1, kernel.Radius);
+      if (kernel.Values.empty())
+      {
+        output->Initialize();
+        return 0;
+      }
     }
-    pointers.push_back(&kernels[c]);
+    cache.Time = time;
+    cache.Colours = colours;
+  }
+  std::vector<const vtkBloomPSFKernel*> pointers;
+  for (const vtkBloomPSFKernel& kernel : cache.Kernels)
+  {
+    pointers.push_back(&kernel);
   }
   this->AllocateOutputData(output, outInfo);
   vtkBloomBuffer bright;
