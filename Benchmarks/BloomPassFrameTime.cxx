@@ -6,6 +6,7 @@
 //
 //   BloomPassFrameTime [SCENE [WIDTH HEIGHT [FRAMES [PRESET]]]]
 //   BloomPassFrameTime --profile [SCENE [WIDTH HEIGHT [FRAMES [PRESET]]]]
+//   BloomPassFrameTime --info      the window class and the OpenGL vendor, renderer and version
 //
 // SCENE is a name of vtkBloomExampleSceneNames() or "all" (default lit-spheres); PRESET is
 // "scene" (the scene's own parameters, the default), "default" (vtkImageBloom's defaults), a
@@ -149,6 +150,24 @@ bool ProfilePasses(
 
 int main(int argc, char* argv[])
 {
+  if (argc > 1 && std::strcmp(argv[1], "--info") == 0)
+  {
+    vtkBloomFrameTimer timer;
+    timer.Setup("lit-spheres", 64, 64);
+    timer.Frame(vtkBloomFrameTimer::PLAIN);
+    std::printf("window: %s\n", timer.Window->GetClassName());
+    const std::string caps = timer.Window->ReportCapabilities();
+    for (const char* key :
+      { "OpenGL vendor string:", "OpenGL renderer string:", "OpenGL version string:" })
+    {
+      const size_t at = caps.find(key);
+      if (at != std::string::npos)
+      {
+        std::printf("%s\n", caps.substr(at, caps.find('\n', at) - at).c_str());
+      }
+    }
+    return 0;
+  }
   const bool profile = argc > 1 && std::strcmp(argv[1], "--profile") == 0;
   if (profile)
   {
