@@ -4,8 +4,9 @@
 # then needs no compiler and no VTK, only the GL loaders (glvnd) and its own driver's EGL vendor;
 # scripts/gpu-run.sh runs everything there.
 #
-#   bash scripts/gpu-pack.sh [DEST]     writes DEST/vtk-bloom-gpu.tar.xz (default DEST: .gpupack
-#                                       in the checkout; ignore it in git)
+#   bash scripts/gpu-pack.sh [DEST]     writes DEST/vtk-bloom-gpu.tar.xz and a copy of
+#                                       gpu-run.sh (default DEST: .gpupack in the checkout;
+#                                       ignore it in git)
 #
 # The project is built in build-egl/ (the build of `bash scripts/test.sh --egl`). The tarball
 # holds, at their absolute paths on this machine, the four executables, the CTest files of the
@@ -67,4 +68,5 @@ VTKBLOOM_GPU_VTK=$prefix
 ENV
 mkdir -p "$dest"
 tar -C "$stage" -cJf "$dest/vtk-bloom-gpu.tar.xz" .
+cp "$root/scripts/gpu-run.sh" "$dest/"
 log "wrote $dest/vtk-bloom-gpu.tar.xz ($(du -h "$dest/vtk-bloom-gpu.tar.xz" | cut -f1))"

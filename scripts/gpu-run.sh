@@ -29,6 +29,7 @@ tar -C / -xJf .gpupack/vtk-bloom-gpu.tar.xz || exit 1
 . /opt/vtk-bloom-gpu/env
 export LD_LIBRARY_PATH=/opt/vtk-bloom-gpu/lib
 bin=$VTKBLOOM_GPU_BUILD/bin
+mkdir -p "$VTKBLOOM_GPU_BUILD/Testing/Temporary"
 # glvnd finds the NVIDIA EGL vendor in its default folders; where the driver is mounted
 # elsewhere, name its file.
 if ! ls /usr/share/glvnd/egl_vendor.d/*nvidia* >/dev/null 2>&1; then
