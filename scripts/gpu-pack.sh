@@ -67,6 +67,6 @@ VTKBLOOM_GPU_COMMIT=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo 
 VTKBLOOM_GPU_VTK=$prefix
 ENV
 mkdir -p "$dest"
-tar -C "$stage" -cJf "$dest/vtk-bloom-gpu.tar.xz" .
+(cd "$stage" && tar -cJf "$dest/vtk-bloom-gpu.tar.xz" -- *)
 cp "$root/scripts/gpu-run.sh" "$dest/"
 log "wrote $dest/vtk-bloom-gpu.tar.xz ($(du -h "$dest/vtk-bloom-gpu.tar.xz" | cut -f1))"
