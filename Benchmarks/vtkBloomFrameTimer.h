@@ -3,6 +3,12 @@
 // the window: VTK's own vtkFramebufferPass, at the precision of the bloom pass's scene target),
 // for the benchmark executables (BloomPassFrameTime and the GPU rows of BloomChainSpeed). The
 // caller interleaves the kinds of frame, so machine noise hits them alike.
+//
+// Each frame is timed twice: by the wall clock from the start of Render() to the end of
+// glFinish (Frame's return value), and by a GL_TIME_ELAPSED query around Render()
+// (LastGPUSeconds), the GPU's own time for the frame's commands, which excludes the CPU work
+// of submitting them and the wait for the driver. The query needs a context, so the first
+// frame of a timer has no GPU time (NaN).
 #ifndef vtkBloomFrameTimer_h
 #define vtkBloomFrameTimer_h
 
@@ -11,13 +17,17 @@
 #include "vtkBloomPass.h"
 #include "vtkCamera.h"
 #include "vtkFramebufferPass.h"
+#include "vtkImageBloom.h"
 #include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
+#include "vtk_glew.h"
 
 #include <chrono>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -50,21 +60,76 @@ public:
     return true;
   }
 
+  /**
+   * Replace the scene's bloom parameters by a preset's ("default": vtkImageBloom's defaults),
+   * keeping the scene's bright pass (threshold mode, threshold, knee) so that the same pixels
+   * bloom. "scene" keeps the scene's own parameters. False for an unknown preset.
+   */
+  bool UsePreset(const std::string& preset)
+  {
+    if (preset == "scene")
+    {
+      return true;
+    }
+    vtkNew<vtkImageBloom> parameters;
+    if (preset != "default" && !parameters->SetPreset(preset.c_str()))
+    {
+      return false;
+    }
+    vtkImageBloom* scene = this->Bloom->GetParameters();
+    parameters->SetThresholdMode(scene->GetThresholdMode());
+    parameters->SetThreshold(scene->GetThreshold());
+    parameters->SetKnee(scene->GetKnee());
+    this->Bloom->SetParameters(parameters);
+    return true;
+  }
+
   /// Render one new frame (the camera moves a little, so nothing is cached) and wait for it;
-  /// seconds.
+  /// wall-clock seconds. LastGPUSeconds is the frame's GPU time.
   double Frame(Kind kind)
   {
     vtkRenderPass* passes[] = { this->Steps, this->FloatCopy, this->Bloom };
     this->Renderer->SetPass(passes[kind]);
     this->Renderer->GetActiveCamera()->Azimuth(0.5);
+    const bool timed = this->Query != 0;
+    if (timed)
+    {
+      this->Window->MakeCurrent();
+    }
     const auto start = std::chrono::steady_clock::now();
+    if (timed)
+    {
+      glBeginQuery(GL_TIME_ELAPSED, this->Query);
+    }
     this->Window->Render();
+    if (timed)
+    {
+      glEndQuery(GL_TIME_ELAPSED);
+    }
     this->Window->WaitForCompletion();
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    this->LastGPUSeconds = std::numeric_limits<double>::quiet_NaN();
+    if (timed)
+    {
+      GLuint64 ns = 0;
+      glGetQueryObjectui64v(this->Query, GL_QUERY_RESULT, &ns);
+      this->LastGPUSeconds = 1e-9 * static_cast<double>(ns);
+    }
+    else
+    {
+      glGenQueries(1, &this->Query); // the context exists now
+    }
+    return wall;
   }
 
   ~vtkBloomFrameTimer()
   {
+    if (this->Query)
+    {
+      this->Window->MakeCurrent();
+      glDeleteQueries(1, &this->Query);
+    }
     // The passes not set on the renderer last are not reached through the window.
     this->FloatCopy->ReleaseGraphicsResources(this->Window);
     this->Bloom->ReleaseGraphicsResources(this->Window);
@@ -76,6 +141,10 @@ public:
   vtkNew<vtkBloomPass> Bloom;
   vtkNew<vtkRenderStepsPass> Steps;
   vtkNew<vtkFramebufferPass> FloatCopy;
+  double LastGPUSeconds = std::numeric_limits<double>::quiet_NaN();
+
+private:
+  GLuint Query = 0; // GL_TIME_ELAPSED
 };
 
 #endif

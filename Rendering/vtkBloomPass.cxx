@@ -71,6 +71,8 @@ bool vtkBloomPass::vtkInternals::Prepare(
     res.Format = format;
   }
   this->Runner.Passes = 0;
+  this->Runner.Profiling = self->ProfilePasses;
+  this->Runner.Profile.clear();
   res.AllocateScene(w, h, self->EmissionSource == EMISSION_EMITTERS);
   if (res.ChainIsStale(self->Parameters, w, h))
   {
@@ -142,6 +144,7 @@ vtkBloomPass::vtkBloomPass()
   , CaptureResult(false)
   , NumberOfPasses(0)
   , LastBloomSkipped(false)
+  , ProfilePasses(false)
   , Internals(new vtkInternals(this))
 {
 }
@@ -306,7 +309,17 @@ void vtkBloomPass::Render(const vtkRenderState* s)
 
   // 1. The scene, and the emitters on their own, in float.
   state->PushFramebufferBindings();
+  // The delegate writes the float colour and a 32-bit depth once (the profile's lower bound).
+  const double sceneBytes = (res.Format == GL_RGBA32F ? 20.0 : 12.0) * w * h;
+  if (this->ProfilePasses)
+  {
+    in.Runner.BeginProfiledSpan();
+  }
   in.RenderDelegate(this, s, res.Scene, s->GetPropArray(), s->GetPropArrayCount(), false);
+  if (this->ProfilePasses)
+  {
+    in.Runner.EndProfiledSpan("scene", w, h, sceneBytes);
+  }
   const bool selective = this->EmissionSource == EMISSION_EMITTERS;
   if (selective)
   {
@@ -320,8 +333,16 @@ void vtkBloomPass::Render(const vtkRenderState* s)
         emitters.push_back(prop);
       }
     }
+    if (this->ProfilePasses)
+    {
+      in.Runner.BeginProfiledSpan();
+    }
     in.RenderDelegate(
       this, s, res.Emitter, emitters.data(), static_cast<int>(emitters.size()), true);
+    if (this->ProfilePasses)
+    {
+      in.Runner.EndProfiledSpan("emitters", w, h, sceneBytes);
+    }
   }
 
   // 2. The chain, then 3. the composite into the framebuffer the pass was called with.
@@ -344,6 +365,10 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     in.Runner.Composite(nullptr, origin, bloom);
   }
   this->NumberOfPasses = in.Runner.Passes;
+  if (this->ProfilePasses)
+  {
+    in.Runner.ResolveProfile();
+  }
   vtkOpenGLCheckErrorMacro("failed after vtkBloomPass::Render");
 }
 
@@ -407,6 +432,10 @@ bool vtkBloomPass::ApplyToImage(
   in.Runner.Composite(&res.Result, zero, bloom);
   state->PopFramebufferBindings();
   this->NumberOfPasses = in.Runner.Passes;
+  if (this->ProfilePasses)
+  {
+    in.Runner.ResolveProfile();
+  }
 
   const bool ok = this->ReadResultImage(output);
   if (ok)
@@ -453,6 +482,42 @@ void vtkBloomPass::ReleaseGraphicsResources(vtkWindow* w)
 }
 
 //------------------------------------------------------------------------------
+int vtkBloomPass::GetNumberOfProfiledPasses()
+{
+  return static_cast<int>(this->Internals->Runner.Profile.size());
+}
+
+//------------------------------------------------------------------------------
+std::string vtkBloomPass::GetProfiledPassName(int i)
+{
+  const auto& profile = this->Internals->Runner.Profile;
+  return i >= 0 && i < static_cast<int>(profile.size()) ? profile[i].Name : std::string();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::GetProfiledPassSize(int i, int size[2])
+{
+  const auto& profile = this->Internals->Runner.Profile;
+  const bool in = i >= 0 && i < static_cast<int>(profile.size());
+  size[0] = in ? profile[i].Size[0] : 0;
+  size[1] = in ? profile[i].Size[1] : 0;
+}
+
+//------------------------------------------------------------------------------
+double vtkBloomPass::GetProfiledPassMilliseconds(int i)
+{
+  const auto& profile = this->Internals->Runner.Profile;
+  return i >= 0 && i < static_cast<int>(profile.size()) ? profile[i].Milliseconds : 0.0;
+}
+
+//------------------------------------------------------------------------------
+double vtkBloomPass::GetProfiledPassBytes(int i)
+{
+  const auto& profile = this->Internals->Runner.Profile;
+  return i >= 0 && i < static_cast<int>(profile.size()) ? profile[i].Bytes : 0.0;
+}
+
+//------------------------------------------------------------------------------
 void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
@@ -464,6 +529,7 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "CaptureResult: " << (this->CaptureResult ? "On" : "Off") << "\n";
   os << indent << "NumberOfPasses: " << this->NumberOfPasses << "\n";
   os << indent << "LastBloomSkipped: " << (this->LastBloomSkipped ? "On" : "Off") << "\n";
+  os << indent << "ProfilePasses: " << (this->ProfilePasses ? "On" : "Off") << "\n";
   os << indent << "Parameters:\n";
   this->Parameters->PrintSelf(os, indent.GetNextIndent());
 }

@@ -49,6 +49,7 @@
 #include "vtkSmartPointer.h"         // For the parameters
 
 #include <memory> // For the internal state
+#include <string> // For the profile's pass names
 
 class vtkActor;
 class vtkImageData;
@@ -168,6 +169,38 @@ public:
    */
   vtkGetMacro(LastBloomSkipped, bool);
 
+  ///@{
+  /**
+   * Per-pass GPU profile, for benchmarks (off by default). With ProfilePasses on, every GPU
+   * pass of a render (the delegate's scene, the emitters, each pass of the chain and the
+   * composite) is bracketed by two GL timestamp queries (glQueryCounter with GL_TIMESTAMP,
+   * OpenGL 3.3 or ARB_timer_query), and the end of Render() waits for the GPU to read them, so
+   * a profiled frame is slower than an unprofiled one: profile in frames that are not timed
+   * otherwise. Timestamps rather than GL_TIME_ELAPSED, so that a caller may still time the
+   * whole frame with a GL_TIME_ELAPSED query. Off, it costs one test per pass. The profile
+   * holds the entries of the last render; it is empty when profiling is off.
+   */
+  vtkSetMacro(ProfilePasses, bool);
+  vtkGetMacro(ProfilePasses, bool);
+  vtkBooleanMacro(ProfilePasses, bool);
+  ///@}
+
+  ///@{
+  /**
+   * The entries of the last profiled render, in the order the GPU ran them: a name such as
+   * "scene", "bright L0", "blur-x L3" or "composite"; the size in pixels the entry wrote; its
+   * GPU time in milliseconds; and its compulsory memory traffic in bytes (every texture it
+   * reads read once, its target written once and read again when it blends; for "scene" and
+   * "emitters", the float colour and the 32-bit depth written once). An index out of range
+   * gives an empty name and zeros.
+   */
+  int GetNumberOfProfiledPasses();
+  std::string GetProfiledPassName(int i);
+  void GetProfiledPassSize(int i, int size[2]);
+  double GetProfiledPassMilliseconds(int i);
+  double GetProfiledPassBytes(int i);
+  ///@}
+
 protected:
   vtkBloomPass();
   ~vtkBloomPass() override;
@@ -179,6 +212,7 @@ protected:
   bool CaptureResult;
   int NumberOfPasses;
   bool LastBloomSkipped;
+  bool ProfilePasses;
 
 private:
   vtkBloomPass(const vtkBloomPass&) = delete;

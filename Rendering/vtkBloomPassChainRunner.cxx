@@ -78,6 +78,86 @@ void vtkBloomPassChainRunner::ReleaseGraphicsResources(vtkWindow* w)
     glDeleteQueries(1, &this->Query);
     this->Query = 0;
   }
+  if (!this->TimestampQueries.empty())
+  {
+    glDeleteQueries(
+      static_cast<GLsizei>(this->TimestampQueries.size()), this->TimestampQueries.data());
+    this->TimestampQueries.clear();
+  }
+  this->Profile.clear();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::BeginProfiledSpan()
+{
+  // Timestamps rather than GL_TIME_ELAPSED, which cannot nest: a caller may time the whole
+  // frame with a GL_TIME_ELAPSED query around the pass.
+  const size_t first = 2 * this->Profile.size();
+  if (this->TimestampQueries.size() < first + 2)
+  {
+    const size_t old = this->TimestampQueries.size();
+    this->TimestampQueries.resize(first + 2);
+    glGenQueries(static_cast<GLsizei>(first + 2 - old), this->TimestampQueries.data() + old);
+  }
+  glQueryCounter(this->TimestampQueries[first], GL_TIMESTAMP);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::EndProfiledSpan(
+  const std::string& name, int width, int height, double bytes)
+{
+  glQueryCounter(this->TimestampQueries[2 * this->Profile.size() + 1], GL_TIMESTAMP);
+  ProfiledPass entry;
+  entry.Name = name;
+  entry.Size[0] = width;
+  entry.Size[1] = height;
+  entry.Bytes = bytes;
+  this->Profile.push_back(entry);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::EndProfiledPass(const PassSpec& spec)
+{
+  // Bytes per texel of the chain's targets; the window's framebuffer (the composite's target
+  // when it is null) is counted at the same rate.
+  const double texel = this->Resources.Format == GL_RGBA32F ? 16.0 : 8.0;
+  const double w = spec.X ? spec.X->OutputSize : spec.SourceSize[0];
+  const double h = spec.Y ? spec.Y->OutputSize : spec.SourceSize[1];
+  double bytes = texel * spec.SourceSize[0] * spec.SourceSize[1] + texel * w * h;
+  if (spec.Blend)
+  {
+    bytes += texel * w * h;
+  }
+  if (spec.Addend)
+  {
+    bytes += texel * w * h;
+  }
+  if (spec.Step == STEP_COMPOSITE)
+  {
+    bytes += texel * this->Resources.Chain.Width * this->Resources.Chain.Height;
+  }
+  if (spec.ReadsSource && this->MaskSource)
+  {
+    bytes += 2.0 * 4.0 * spec.SourceSize[0] * spec.SourceSize[1]; // the two depth textures
+  }
+  std::string name = spec.Name;
+  if (spec.Level >= 0)
+  {
+    name += " L" + std::to_string(spec.Level);
+  }
+  this->EndProfiledSpan(name, static_cast<int>(w), static_cast<int>(h), bytes);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::ResolveProfile()
+{
+  for (size_t i = 0; i < this->Profile.size(); ++i)
+  {
+    GLuint64 start = 0, end = 0;
+    glGetQueryObjectui64v(this->TimestampQueries[2 * i], GL_QUERY_RESULT, &start);
+    glGetQueryObjectui64v(this->TimestampQueries[2 * i + 1], GL_QUERY_RESULT, &end);
+    this->Profile[i].Milliseconds = end >= start ? 1e-6 * static_cast<double>(end - start) : 0.0;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -304,6 +384,10 @@ void vtkBloomPassChainRunner::Pass(
   vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec)
 {
   vtkOpenGLState* state = this->Resources.Context->GetState();
+  if (this->Profiling)
+  {
+    this->BeginProfiledSpan();
+  }
   if (target)
   {
     target->FBO->Bind();
@@ -400,6 +484,10 @@ void vtkBloomPassChainRunner::Pass(
     {
       texture->Deactivate();
     }
+  }
+  if (this->Profiling)
+  {
+    this->EndProfiledPass(spec);
   }
   ++this->Passes;
 }
@@ -506,6 +594,8 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
   bright.Step = STEP_THRESHOLD;
   bright.ReadsSource = true;
   bright.DiscardZero = skipEmpty;
+  bright.Name = "bright";
+  bright.Level = 0;
   if (skipEmpty)
   {
     this->Clear(res.Levels[0]);
@@ -544,6 +634,8 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
       down.Step = level.Karis ? STEP_KARIS_TERM : STEP_SCALE;
       down.Weight = term.Weight;
       down.Blend = t > 0;
+      down.Name = "down";
+      down.Level = static_cast<int>(i);
       const int rows[2] = { level.Size[0], res.Levels[i - 1].Size[1] };
       if (!TwoDimensional(term))
       {
@@ -552,10 +644,13 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
         x.Source = down.Source;
         x.SourceSize = down.SourceSize;
         x.X = &term.X;
+        x.Name = "down-x";
+        x.Level = static_cast<int>(i);
         this->Pass(&res.Temp, zero, x);
         down.Source = res.Temp.Color;
         down.SourceSize = rows;
         down.X = nullptr;
+        down.Name = "down-y";
       }
       this->Pass(&dst, zero, down);
     }
@@ -565,6 +660,8 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
       normalize.Source = res.Work[i].Color;
       normalize.SourceSize = level.Size;
       normalize.Step = STEP_KARIS_NORMALIZE;
+      normalize.Name = "karis-normalize";
+      normalize.Level = static_cast<int>(i);
       this->Pass(&res.Levels[i], zero, normalize);
     }
   }
@@ -587,11 +684,15 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     x.Source = res.Levels[i].Color;
     x.SourceSize = level.Size;
     x.X = &level.BlurPass.X;
+    x.Name = "blur-x";
+    x.Level = static_cast<int>(i);
     this->Pass(&res.Temp, zero, x);
     PassSpec y;
     y.Source = res.Temp.Color;
     y.SourceSize = level.Size;
     y.Y = &level.BlurPass.Y;
+    y.Name = "blur-y";
+    y.Level = static_cast<int>(i);
     if (cascade && i == last)
     {
       y.Weight = level.Weight;
@@ -621,6 +722,8 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
         up.Y = &level.Full.Y;
         up.Weight = level.Weight;
         up.Blend = !first;
+        up.Name = "accumulate";
+        up.Level = static_cast<int>(i);
         this->Pass(&res.Full, zero, up);
         first = false;
       }
@@ -637,6 +740,8 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     scale.Source = blurred[last]->Color;
     scale.SourceSize = c.Levels[last].Size;
     scale.Weight = c.Levels[last].Weight;
+    scale.Name = "scale";
+    scale.Level = static_cast<int>(last);
     this->Pass(&res.Accum[last], zero, scale);
   }
   for (size_t i = last; i-- > 0;)
@@ -646,12 +751,16 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     x.Source = res.Accum[i + 1].Color;
     x.SourceSize = res.Accum[i + 1].Size;
     x.X = &level.Up.X;
+    x.Name = "up-x";
+    x.Level = static_cast<int>(i);
     this->Pass(&res.Temp, zero, x);
     PassSpec y;
     y.Source = res.Temp.Color;
     const int size[2] = { level.Size[0], res.Accum[i + 1].Size[1] };
     y.SourceSize = size;
     y.Y = &level.Up.Y;
+    y.Name = "up-y";
+    y.Level = static_cast<int>(i);
     if (level.Weight != 0.0)
     {
       y.Step = STEP_ADD;
@@ -675,6 +784,7 @@ void vtkBloomPassChainRunner::Composite(vtkBloomPassTarget* target, const int or
   composite.Source = res.Scene.Color;
   composite.SourceSize = full;
   composite.CompositeBloom = bloom;
+  composite.Name = "composite";
   if (bloom && c.AccumulateMode == vtkImageBloom::DIRECT)
   {
     composite.Source = res.Full.Color;
@@ -699,5 +809,6 @@ void vtkBloomPassChainRunner::Copy(
   PassSpec copy;
   copy.Source = source.Color;
   copy.SourceSize = source.Size;
+  copy.Name = "copy";
   this->Pass(target, origin, copy);
 }

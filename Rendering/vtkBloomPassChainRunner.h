@@ -65,6 +65,30 @@ public:
 
   int Passes = 0; ///< passes drawn since it was last set to 0, the composite included
 
+  /**
+   * One profiled pass (vtkBloomPass::ProfilePasses): its name, the size it wrote, its
+   * compulsory memory traffic (every texture it reads read once, its target written once, and
+   * read once more when it blends) and its GPU time from two GL timestamp queries.
+   */
+  struct ProfiledPass
+  {
+    std::string Name;
+    int Size[2] = { 0, 0 };
+    double Bytes = 0.0;
+    double Milliseconds = 0.0;
+  };
+
+  /**
+   * With Profiling on, every pass, and every span between BeginProfiledSpan and
+   * EndProfiledSpan, is bracketed by timestamp queries and appended to Profile; ResolveProfile
+   * then waits for the GPU and fills in the times. Off, Pass() pays one test.
+   */
+  bool Profiling = false;
+  std::vector<ProfiledPass> Profile;
+  void BeginProfiledSpan();
+  void EndProfiledSpan(const std::string& name, int width, int height, double bytes);
+  void ResolveProfile();
+
 private:
   // Values shared with vtkBloomPassFS.glsl, emitted into the shader as #defines.
   enum
@@ -129,6 +153,8 @@ private:
     bool DiscardZero = false; ///< leave zero results unwritten (counted by the query)
     bool CompositeBloom = true;
     vtkTextureObject* Addend = nullptr; ///< STEP_ADD
+    const char* Name = "pass";          ///< for the profile
+    int Level = -1;                     ///< the pyramid level it writes, for the profile
   };
 
   vtkTextureObject* OperatorTexture(const vtkBloomLinearOperator& op);
@@ -158,6 +184,13 @@ private:
 
   // One program per variant (operator modes, interior weights, step, flags), made on first use.
   std::map<std::string, std::unique_ptr<vtkOpenGLQuadHelper>> Programs;
+
+  /// The profile entry of one pass: its name, output size and compulsory traffic.
+  void EndProfiledPass(const PassSpec& spec);
+
+  // Timestamp queries of the profile: entry i starts at 2 i and ends at 2 i + 1; made on first
+  // use and reused from frame to frame.
+  std::vector<unsigned int> TimestampQueries;
 
   // Occlusion query that counts the non-zero samples of the bright pass (SkipEmptyBloom).
   unsigned int Query = 0;

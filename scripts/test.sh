@@ -6,6 +6,11 @@
 #                                  build-osmesa/, run with no display at all
 #   bash scripts/test.sh --x11     only the system-VTK leg
 #   bash scripts/test.sh --osmesa  only the OSMesa leg
+#   bash scripts/test.sh --egl     the EGL VTK (built from Debian's source on first use, see
+#                                  scripts/build-egl-vtk.sh) in build-egl/, run with no display
+#                                  through whichever EGL driver the machine has: Mesa's
+#                                  (llvmpipe) on a machine with no GPU. Not part of the default
+#                                  run.
 #   bash scripts/test.sh --asan    AddressSanitizer + UndefinedBehaviorSanitizer build in
 #                                  build-asan/ (system VTK, under Xvfb)
 #   bash scripts/test.sh --fuzz [S] the OpenEXR reader's libFuzzer target for S seconds
@@ -37,6 +42,18 @@ run_osmesa() {
     -j"$(nproc)"
 }
 
+run_egl() {
+  local prefix
+  prefix=$(bash "$root/scripts/build-egl-vtk.sh" | tail -n 1)
+  # As the OSMesa leg: no Python wrapping (the X11 leg covers Python).
+  bash "$root/scripts/configure.sh" "$root/build-egl" -DCMAKE_BUILD_TYPE=Release \
+    -DVTKBLOOM_WARNINGS_AS_ERRORS=ON -DVTKBLOOM_WRAP_PYTHON=OFF \
+    -DVTK_DIR="$prefix/lib/cmake/vtk-9.1"
+  echo "test: running the suite against the EGL VTK (no DISPLAY, no X server)"
+  env -u DISPLAY -u WAYLAND_DISPLAY ctest --test-dir "$root/build-egl" --output-on-failure \
+    -j"$(nproc)"
+}
+
 case "$mode" in
   all)
     run_x11 "$root/build" -DCMAKE_BUILD_TYPE=Release -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
@@ -48,6 +65,9 @@ case "$mode" in
   --osmesa)
     run_osmesa
     ;;
+  --egl)
+    run_egl
+    ;;
   --asan)
     export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
     export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
@@ -58,7 +78,7 @@ case "$mode" in
     bash "$root/scripts/fuzz.sh" "${2:-120}"
     ;;
   *)
-    echo "usage: bash scripts/test.sh [--x11 | --osmesa | --asan | --fuzz [SECONDS]]" >&2
+    echo "usage: bash scripts/test.sh [--x11 | --osmesa | --egl | --asan | --fuzz [SECONDS]]" >&2
     exit 2
     ;;
 esac

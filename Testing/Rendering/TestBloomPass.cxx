@@ -394,6 +394,71 @@ TEST(RenderingBloomPass, NoErrorsOrGrowthOverManyFramesWithResizes)
 }
 
 //------------------------------------------------------------------------------
+// ProfilePasses lists every GPU pass of the render (the delegate's scene and emitters, the
+// chain, the composite and the captured copy) with its size, traffic and GPU time, and changes
+// nothing in the image; off, the profile is empty.
+TEST(RenderingBloomPass, ProfilesEveryPassWithoutChangingTheImage)
+{
+  for (const char* scene : { "lit-spheres", "scalar-field" })
+  {
+    BloomWindow w(200, 120);
+    ASSERT_TRUE(vtkBloomBuildExampleScene(scene, w.Renderer, w.Bloom));
+    w.Bloom->SetFloatPrecisionTo32Bit();
+    w.Bloom->CaptureResultOn();
+    const bool selective = w.Bloom->GetEmissionSource() == vtkBloomPass::EMISSION_EMITTERS;
+    vtkNew<vtkImageData> plain, profiled;
+    w.Window->Render();
+    ASSERT_TRUE(w.Bloom->ReadResultImage(plain));
+    EXPECT_EQ(w.Bloom->GetNumberOfProfiledPasses(), 0);
+
+    w.Bloom->ProfilePassesOn();
+    w.Window->Render();
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << scene;
+    ASSERT_TRUE(w.Bloom->ReadResultImage(profiled));
+    ASSERT_EQ(plain->GetNumberOfPoints(), profiled->GetNumberOfPoints());
+    EXPECT_EQ(std::memcmp(plain->GetScalarPointer(), profiled->GetScalarPointer(),
+                sizeof(float) * 4 * plain->GetNumberOfPoints()),
+      0)
+      << scene;
+
+    const int n = w.Bloom->GetNumberOfProfiledPasses();
+    ASSERT_EQ(n, w.Bloom->GetNumberOfPasses() + (selective ? 2 : 1)) << scene;
+    EXPECT_GT(w.Bloom->GetNumberOfPasses(), 10) << scene;
+    EXPECT_EQ(w.Bloom->GetProfiledPassName(0), "scene");
+    EXPECT_EQ(w.Bloom->GetProfiledPassName(1), selective ? "emitters" : "bright L0");
+    EXPECT_EQ(w.Bloom->GetProfiledPassName(n - 2), "composite");
+    EXPECT_EQ(w.Bloom->GetProfiledPassName(n - 1), "copy");
+    double total = 0.0;
+    for (int i = 0; i < n; ++i)
+    {
+      int size[2];
+      w.Bloom->GetProfiledPassSize(i, size);
+      EXPECT_FALSE(w.Bloom->GetProfiledPassName(i).empty()) << i;
+      EXPECT_GT(size[0], 0) << i;
+      EXPECT_GT(size[1], 0) << i;
+      EXPECT_LE(size[0], 200) << i;
+      EXPECT_LE(size[1], 120) << i;
+      // At least the target written once, in RGBA32F.
+      EXPECT_GE(w.Bloom->GetProfiledPassBytes(i), 16.0 * size[0] * size[1]) << i;
+      const double ms = w.Bloom->GetProfiledPassMilliseconds(i);
+      EXPECT_TRUE(std::isfinite(ms) && ms >= 0.0 && ms < 1e4) << i << " " << ms;
+      total += ms;
+    }
+    EXPECT_GT(total, 0.0) << scene;
+    int size[2];
+    w.Bloom->GetProfiledPassSize(n, size);
+    EXPECT_EQ(w.Bloom->GetProfiledPassName(n), "");
+    EXPECT_EQ(size[0], 0);
+    EXPECT_EQ(w.Bloom->GetProfiledPassMilliseconds(-1), 0.0);
+
+    w.Bloom->ProfilePassesOff();
+    w.Window->Render();
+    EXPECT_EQ(w.Bloom->GetNumberOfProfiledPasses(), 0);
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << scene;
+  }
+}
+
+//------------------------------------------------------------------------------
 // Regression images of the three example scenes (8-bit, through vtkTesting's comparison).
 TEST(RenderingBloomPass, RegressionImages)
 {

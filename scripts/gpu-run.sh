@@ -1,0 +1,85 @@
+#!/usr/bin/env bash
+# Run vtk-bloom's rendering tests, the frame-time benchmark and the vtk-bloom tool on a GPU
+# machine, from the pack of scripts/gpu-pack.sh. Run it as root from a directory that holds
+# .gl/ (the glvnd loader packages: libglvnd0 libopengl0 libegl1 libgl1 libglx0 libgles2, from
+# `apt-get download`) and .gpupack/vtk-bloom-gpu.tar.xz; results go to $OUT (default: a new
+# temporary directory):
+#
+#   gpu.txt          the GPU, its driver and the OpenGL renderer the pass ran on
+#   ctest.log        ctest -R '^Rendering' (every rendering test), and ctest.xml (JUnit)
+#   frametime.md     BloomPassFrameTime: every scene and preset at 1920x1080 and 3840x2160,
+#                    GPU timer and wall clock, median of $FRAMES (default 50) frames
+#   profile.md       the per-pass GPU profile of the default preset at 3840x2160, every scene
+#   render.png       `vtk-bloom render` of lit-spheres at 3840x2160
+#   run.log          everything printed
+#
+# The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
+# CUDA image) and the pack at the absolute paths it was built with.
+set -uo pipefail
+cd "${VTKBLOOM_GPU_ROOT:-$PWD}" || exit 1
+OUT=${OUT:-$(mktemp -d)}
+mkdir -p "$OUT"
+FRAMES=${FRAMES:-50}
+exec > >(tee "$OUT/run.log") 2>&1
+
+for f in .gl/*.deb; do dpkg -x "$f" /; done
+ldconfig
+tar -C / --no-overwrite-dir -xJf .gpupack/vtk-bloom-gpu.tar.xz || exit 1
+# shellcheck disable=SC1091
+. /opt/vtk-bloom-gpu/env
+export LD_LIBRARY_PATH=/opt/vtk-bloom-gpu/lib
+bin=$VTKBLOOM_GPU_BUILD/bin
+mkdir -p "$VTKBLOOM_GPU_BUILD/Testing/Temporary"
+# glvnd finds the NVIDIA EGL vendor in its default folders; where the driver is mounted
+# elsewhere, name its file.
+if ! ls /usr/share/glvnd/egl_vendor.d/*nvidia* >/dev/null 2>&1; then
+  for j in /usr/local/nvidia/share/glvnd/egl_vendor.d/10_nvidia.json \
+    /usr/local/share/glvnd/egl_vendor.d/10_nvidia.json; do
+    [ -f "$j" ] && export __EGL_VENDOR_LIBRARY_FILENAMES=$j && break
+  done
+fi
+missing=$(ldd "$bin"/* | grep 'not found' | sort -u)
+[ -z "$missing" ] || echo "gpu-run: missing libraries: $missing"
+
+{
+  echo "pack: commit $VTKBLOOM_GPU_COMMIT, VTK $VTKBLOOM_GPU_VTK"
+  nvidia-smi --query-gpu=name,driver_version,memory.total,clocks.sm,clocks.max.sm \
+    --format=csv
+  "$bin/BloomPassFrameTime" --info
+} | tee "$OUT/gpu.txt"
+
+echo "== rendering tests"
+export CI=true # a test whose data is missing fails instead of skipping
+if command -v ctest >/dev/null 2>&1; then
+  ctest --test-dir "$VTKBLOOM_GPU_BUILD" -R '^Rendering' --output-on-failure --timeout 600 \
+    --output-junit "$OUT/ctest.xml" 2>&1 | tee "$OUT/ctest.log"
+  status=${PIPESTATUS[0]}
+else
+  # No CMake there: the test executables themselves, in their CTest working directory.
+  status=0
+  for t in TestBloomPass TestBloomPassHardCases; do
+    (cd "$VTKBLOOM_GPU_BUILD/Testing" && timeout 600 "$bin/$t") 2>&1 | tee -a "$OUT/ctest.log"
+    [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
+  done
+fi
+
+echo "== frame time"
+{
+  echo "GPU timer (GL_TIME_ELAPSED) and wall clock (Render, glFinish), median of $FRAMES frames"
+  echo
+  for size in "1920 1080" "3840 2160"; do
+    # shellcheck disable=SC2086
+    timeout 300 "$bin/BloomPassFrameTime" all $size "$FRAMES" all
+    echo
+  done
+} | tee "$OUT/frametime.md"
+
+echo "== per-pass profile"
+timeout 300 "$bin/BloomPassFrameTime" --profile all 3840 2160 "$FRAMES" default |
+  tee "$OUT/profile.md"
+
+echo "== vtk-bloom render"
+timeout 120 "$bin/vtk-bloom" render --size 3840x2160 lit-spheres "$OUT/render.png" &&
+  ls -la "$OUT/render.png"
+echo "gpu-run: ctest status $status"
+exit "$status"
