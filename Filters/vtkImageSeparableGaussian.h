@@ -52,7 +52,7 @@
  * (vtkBloomFFTConvolution: the line is extended by the border mode, transformed, multiplied by
  * the kernel's spectrum and transformed back), about log2 of the line length per sample
  * whatever sigma is; AUTOMATIC (the default) takes, per axis, whichever the cost model of
- * vtkBloomFFTConvolution says is cheaper, which is the FFT from about sigma 12 at 1080p. The FFT
+ * vtkBloomFFTConvolution says is cheaper, which is the FFT from about sigma 4 at 1080p. The FFT
  * runs in single precision for float images and in double for double images; it agrees with
  * DIRECT to about 1e-7 relative L2 in single precision (<= 1e-6 tested for sigma 8 to 64) and
  * 1e-15 in double (docs/numerics.md). GetLastFFTAxes() says which axes the last update ran
