@@ -265,7 +265,7 @@ const char* vtkImageSeparableGaussian::GetMethodName(int method)
 }
 
 //------------------------------------------------------------------------------
-int vtkImageSeparableGaussian::ChooseFFTAxes(const int inWhole[6], bool single)
+int vtkImageSeparableGaussian::ChooseFFTAxes(const int inWhole[6], int precision)
 {
   int axes = 0;
   if (this->Method != EXACT || this->ConvolutionMode == CONVOLUTION_DIRECT)
@@ -285,9 +285,13 @@ int vtkImageSeparableGaussian::ChooseFFTAxes(const int inWhole[6], bool single)
     {
       continue;
     }
+    // The choice does not depend on the precision, so a convolution built for the other one
+    // answers ANY_PRECISION (RequestUpdateExtent, before the scalar type is known) and is
+    // rebuilt only when RequestData needs the other precision.
     std::unique_ptr<FFTAxis>& fft = this->FFT[a];
-    if (!fft || fft->Half != half || fft->Border != this->BorderMode || fft->Single != single ||
-      fft->Operator.InputSize != n)
+    const bool single = precision != DOUBLE_PRECISION;
+    if (!fft || fft->Half != half || fft->Border != this->BorderMode ||
+      (precision != ANY_PRECISION && fft->Single != single) || fft->Operator.InputSize != n)
     {
       fft.reset(new FFTAxis);
       fft->Half = half;
@@ -344,7 +348,7 @@ int vtkImageSeparableGaussian::RequestUpdateExtent(
   vtkInformation* outInfo = outputVector->GetInformationObject(0);
   int inWhole[6], outExt[6];
   inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), inWhole);
-  if (this->Method == EXACT && this->ChooseFFTAxes(inWhole, true) == 0)
+  if (this->Method == EXACT && this->ChooseFFTAxes(inWhole, ANY_PRECISION) == 0)
   {
     return this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
   }
@@ -436,7 +440,7 @@ int vtkImageSeparableGaussian::RequestData(
 
   int result = 1;
   const int* inWhole = inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
-  const int fftAxes = this->ChooseFFTAxes(inWhole, isFloat);
+  const int fftAxes = this->ChooseFFTAxes(inWhole, isFloat ? SINGLE_PRECISION : DOUBLE_PRECISION);
   this->LastFFTAxes = fftAxes;
   if (this->Method == EXACT && fftAxes == 0)
   {

@@ -221,11 +221,19 @@ protected:
    */
   void ExecuteLines(vtkImageData* input, vtkImageData* output, const int outExt[6], int fftAxes);
 
+  enum Precisions
+  {
+    SINGLE_PRECISION,
+    DOUBLE_PRECISION,
+    ANY_PRECISION
+  };
+
   /**
    * For EXACT, the axes to convolve through the FFT for an input of whole extent `inWhole`
-   * (bit a for axis a), with this->FFT[a] built for them in single or double precision.
+   * (bit a for axis a), with this->FFT[a] built for them in `precision` (ANY_PRECISION: the
+   * choice only, keeping a convolution of either precision).
    */
-  int ChooseFFTAxes(const int inWhole[6], bool single);
+  int ChooseFFTAxes(const int inWhole[6], int precision);
 
   /// The one-dimensional operator whose non-zero pattern is the support on `axis`.
   vtkBloomLinearOperator SupportOperator(int axis, int n);
