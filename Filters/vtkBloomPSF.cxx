@@ -191,62 +191,114 @@ bool vtkBloomPSF::FromImage(
   return true;
 }
 
-//------------------------------------------------------------------------------
-void vtkBloomPSF::Convolve(const vtkBloomBuffer& in,
-  const std::vector<const vtkBloomPSFKernel*>& kernels, bool reflect, vtkBloomBuffer& out)
+struct vtkBloomPSFConvolution::Internals
 {
+  // One 2-D transform (plans and buffers) per distinct kernel radius, and one spectrum per
+  // distinct kernel; channel c uses Transforms[Transform[c]] and Spectra[Spectrum[c]].
+  std::vector<std::unique_ptr<Transform2D>> Transforms;
+  std::vector<int> Radii;
+  std::vector<std::vector<float>> Spectra; ///< re, im interleaved, scaled by 1 / (nx ny)
+  std::vector<int> Transform, Spectrum;
+  int Size[2] = { 0, 0 };
+};
+
+//------------------------------------------------------------------------------
+vtkBloomPSFConvolution::vtkBloomPSFConvolution()
+  : Impl(new Internals)
+{
+}
+
+//------------------------------------------------------------------------------
+vtkBloomPSFConvolution::~vtkBloomPSFConvolution() = default;
+
+//------------------------------------------------------------------------------
+void vtkBloomPSFConvolution::Prepare(
+  int width, int height, const std::vector<vtkBloomPSFKernel>& kernels)
+{
+  this->Impl.reset(new Internals);
+  Internals& impl = *this->Impl;
+  impl.Size[0] = width;
+  impl.Size[1] = height;
+  for (size_t c = 0; c < kernels.size(); ++c)
+  {
+    const vtkBloomPSFKernel& kernel = kernels[c];
+    const int r = kernel.Radius;
+    auto radius = std::find(impl.Radii.begin(), impl.Radii.end(), r);
+    if (radius == impl.Radii.end())
+    {
+      impl.Radii.push_back(r);
+      impl.Transforms.emplace_back(
+        new Transform2D(vtkBloomFFTConvolution::GoodTransformSize(width + 2 * r),
+          vtkBloomFFTConvolution::GoodTransformSize(height + 2 * r)));
+      radius = impl.Radii.end() - 1;
+    }
+    impl.Transform.push_back(static_cast<int>(radius - impl.Radii.begin()));
+    // A kernel equal to an earlier channel's shares its spectrum.
+    size_t same = 0;
+    while (same < c && kernels[same].Values != kernel.Values)
+    {
+      ++same;
+    }
+    if (same < c)
+    {
+      impl.Spectrum.push_back(impl.Spectrum[same]);
+      continue;
+    }
+    Transform2D& fft = *impl.Transforms[impl.Transform.back()];
+    const int kn = 2 * r + 1;
+    const size_t total = static_cast<size_t>(fft.NX) * fft.NY;
+    std::fill(fft.Real, fft.Real + total, 0.0f);
+    for (int y = 0; y < kn; ++y)
+    {
+      for (int x = 0; x < kn; ++x)
+      {
+        fft.Real[static_cast<size_t>(y) * fft.NX + x] =
+          static_cast<float>(kernel.Values[static_cast<size_t>(y) * kn + x]);
+      }
+    }
+    fftwf_execute(fft.Forward);
+    const float scale = 1.0f / static_cast<float>(total);
+    std::vector<float> spectrum(2 * fft.SpectrumSize());
+    for (size_t q = 0; q < fft.SpectrumSize(); ++q)
+    {
+      spectrum[2 * q] = fft.Spectrum[q][0] * scale;
+      spectrum[2 * q + 1] = fft.Spectrum[q][1] * scale;
+    }
+    impl.Spectrum.push_back(static_cast<int>(impl.Spectra.size()));
+    impl.Spectra.push_back(std::move(spectrum));
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPSFConvolution::IsPreparedFor(int width, int height) const
+{
+  return !this->Impl->Transform.empty() && this->Impl->Size[0] == width &&
+    this->Impl->Size[1] == height;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPSFConvolution::Convolve(const vtkBloomBuffer& in, bool reflect, vtkBloomBuffer& out)
+{
+  const Internals& impl = *this->Impl;
   const int w = in.Size[0], h = in.Size[1], nc = in.NumberOfComponents;
   out.Allocate(in.Lo, in.Size, nc);
   std::fill(out.Data.begin(), out.Data.end(), 0.0);
-  const vtkBloomPSFKernel* previous = nullptr;
-  std::vector<float> kernelSpectrum; // re, im interleaved
-  int radius = -1;
-  std::unique_ptr<Transform2D> fft;
+  const int border =
+    reflect ? vtkBloomLinearOperator::BORDER_REFLECT : vtkBloomLinearOperator::BORDER_ZERO;
   for (int c = 0; c < nc; ++c)
   {
-    const vtkBloomPSFKernel* kernel = kernels[std::min<size_t>(c, kernels.size() - 1)];
-    const int r = kernel->Radius;
-    const int kn = 2 * r + 1;
-    if (r != radius)
-    {
-      fft.reset(new Transform2D(vtkBloomFFTConvolution::GoodTransformSize(w + 2 * r),
-        vtkBloomFFTConvolution::GoodTransformSize(h + 2 * r)));
-      radius = r;
-      previous = nullptr;
-    }
-    const int nx = fft->NX, ny = fft->NY;
-    const size_t total = static_cast<size_t>(nx) * ny;
-    float* real = fft->Real;
-    if (kernel != previous)
-    {
-      // The kernel's spectrum, scaled by 1 / (nx ny) for the unnormalized inverse.
-      std::fill(real, real + total, 0.0f);
-      for (int y = 0; y < kn; ++y)
-      {
-        for (int x = 0; x < kn; ++x)
-        {
-          real[static_cast<size_t>(y) * nx + x] =
-            static_cast<float>(kernel->Values[static_cast<size_t>(y) * kn + x]);
-        }
-      }
-      fftwf_execute(fft->Forward);
-      const float scale = 1.0f / static_cast<float>(total);
-      kernelSpectrum.resize(2 * fft->SpectrumSize());
-      for (size_t q = 0; q < fft->SpectrumSize(); ++q)
-      {
-        kernelSpectrum[2 * q] = fft->Spectrum[q][0] * scale;
-        kernelSpectrum[2 * q + 1] = fft->Spectrum[q][1] * scale;
-      }
-      previous = kernel;
-    }
+    const size_t k = std::min<size_t>(c, impl.Transform.size() - 1);
+    Transform2D& fft = *impl.Transforms[impl.Transform[k]];
+    const std::vector<float>& kernelSpectrum = impl.Spectra[impl.Spectrum[k]];
+    const int r = impl.Radii[impl.Transform[k]];
+    const int nx = fft.NX;
+    const size_t total = static_cast<size_t>(nx) * fft.NY;
+    float* real = fft.Real;
     // The channel, scaled by a power of two so that its largest magnitude is below 1.
     double largest = 0.0;
-    for (int y = 0; y < h; ++y)
+    for (size_t i = c; i < in.Data.size(); i += nc)
     {
-      for (int x = 0; x < w; ++x)
-      {
-        largest = std::max(largest, std::abs(in.Data[(static_cast<size_t>(y) * w + x) * nc + c]));
-      }
+      largest = std::max(largest, std::abs(in.Data[i]));
     }
     if (largest == 0.0)
     {
@@ -264,9 +316,9 @@ void vtkBloomPSF::Convolve(const vtkBloomBuffer& in,
           static_cast<float>(in.Data[(static_cast<size_t>(y) * w + x) * nc + c] * scale);
       }
     }
-    fftwf_execute(fft->Forward);
-    fftwf_complex* s = fft->Spectrum;
-    for (size_t q = 0; q < fft->SpectrumSize(); ++q)
+    fftwf_execute(fft.Forward);
+    fftwf_complex* s = fft.Spectrum;
+    for (size_t q = 0; q < fft.SpectrumSize(); ++q)
     {
       const float kr = kernelSpectrum[2 * q], ki = kernelSpectrum[2 * q + 1];
       const float re = s[q][0] * kr - s[q][1] * ki;
@@ -274,11 +326,9 @@ void vtkBloomPSF::Convolve(const vtkBloomBuffer& in,
       s[q][0] = re;
       s[q][1] = im;
     }
-    fftwf_execute(fft->Inverse);
+    fftwf_execute(fft.Inverse);
     // The full convolution, centred (index x - r), folded back into the image.
     const double unscale = std::ldexp(1.0, exponent);
-    const int border =
-      reflect ? vtkBloomLinearOperator::BORDER_REFLECT : vtkBloomLinearOperator::BORDER_ZERO;
     std::vector<int> foldX(w + 2 * r), foldY(h + 2 * r);
     for (int x = 0; x < w + 2 * r; ++x)
     {

@@ -25,6 +25,7 @@
 #ifndef vtkBloomPSF_h
 #define vtkBloomPSF_h
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,12 +38,46 @@ struct vtkBloomPSFKernel
   std::vector<double> Values; ///< (2 Radius + 1)^2, row-major, sum 1
 };
 
-/// vtkImageBloom's PSFs, kept between updates until a parameter (or the PSF image) changes.
+/**
+ * The convolution of an image size with a set of kernels, prepared once: FFTW's plans and
+ * buffers (one two-dimensional transform per distinct kernel radius) and each distinct kernel's
+ * spectrum. Convolve then costs one forward and one inverse transform per channel.
+ */
+class vtkBloomPSFConvolution
+{
+public:
+  vtkBloomPSFConvolution();
+  ~vtkBloomPSFConvolution();
+  vtkBloomPSFConvolution(const vtkBloomPSFConvolution&) = delete;
+  vtkBloomPSFConvolution& operator=(const vtkBloomPSFConvolution&) = delete;
+
+  /// Plan for width x height images and one kernel per channel (the last serves the rest).
+  void Prepare(int width, int height, const std::vector<vtkBloomPSFKernel>& kernels);
+
+  /// Whether Prepare was called for this size.
+  bool IsPreparedFor(int width, int height) const;
+
+  /**
+   * out = each component c of `in` (a 2-D block of the prepared size) scattered through its
+   * kernel, with REFLECT (`reflect`) or ZERO borders. `out` takes the shape of `in`.
+   */
+  void Convolve(const vtkBloomBuffer& in, bool reflect, vtkBloomBuffer& out);
+
+private:
+  struct Internals;
+  std::unique_ptr<Internals> Impl;
+};
+
+/**
+ * vtkImageBloom's PSFs and their prepared convolution, kept between updates until a parameter
+ * (or the PSF image) or the image size changes.
+ */
 struct vtkBloomPSFKernels
 {
   std::vector<vtkBloomPSFKernel> Kernels; ///< one per colour channel
   unsigned long long Time = 0;            ///< the filter's MTime they were built at
   int Colours = 0;
+  vtkBloomPSFConvolution Convolution;
 };
 
 namespace vtkBloomPSF
@@ -64,13 +99,6 @@ bool FromImage(
 
 /// Scale the values so that they sum to 1 (false when the sum is not positive and finite).
 bool Normalize(vtkBloomPSFKernel& kernel);
-
-/**
- * out = each component c of `in` (a 2-D block) scattered through kernels[c], with REFLECT
- * (`reflect`) or ZERO borders. `out` takes the shape of `in`.
- */
-void Convolve(const vtkBloomBuffer& in, const std::vector<const vtkBloomPSFKernel*>& kernels,
-  bool reflect, vtkBloomBuffer& out);
 }
 
 #endif

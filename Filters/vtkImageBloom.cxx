@@ -104,6 +104,8 @@ bool vtkImageBloom::IsAVX2Available()
 void vtkImageBloom::ReleaseWorkspace()
 {
   this->FastChain->ReleaseWorkspace();
+  delete this->PSFKernels;
+  this->PSFKernels = new vtkBloomPSFKernels;
   this->LastWorkspaceBytes = 0;
 }
 

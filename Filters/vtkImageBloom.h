@@ -42,7 +42,8 @@
  * (PSFBorderMode REFLECT, the default) or drops it (ZERO). With REFLECT the bloom's energy in
  * each channel equals the bright pass's (tested to 1e-6 relative), so the composite adds exactly
  * Strength times the bright pass's energy. It runs through a two-dimensional FFT in single
- * precision (vtkBloomPSF), in both execution modes, on 2-D images.
+ * precision (vtkBloomPSF), in both execution modes, on 2-D images. The PSFs, FFTW's plans and
+ * the PSFs' spectra are kept until a parameter, the PSF image or the image size changes.
  *
  * Presets (SetPreset) reproduce the seed systems exactly as ../shared/seeds/PRESETS.md reads
  * them, with the seeds' known defects fixed:
@@ -442,7 +443,10 @@ public:
   vtkGetMacro(LastFFTBlurs, int);
   ///@}
 
-  /// Free the fast chain's intermediate buffers (they are kept between updates otherwise).
+  /**
+   * Free the fast chain's intermediate buffers and PSF mode's kernels, plans and spectra (both
+   * are kept between updates otherwise).
+   */
   void ReleaseWorkspace();
 
   ///@{

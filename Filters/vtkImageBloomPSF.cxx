@@ -140,11 +140,14 @@ int vtkImageBloom::ExecutePSF(vtkImageData* input, vtkInformation* outInfo, vtkI
     return 0;
   }
   const int colours = input->GetNumberOfScalarComponents() >= 3 ? 3 : 1;
-  // One PSF per colour channel (a single-colour image uses the green one), built again only
-  // when a parameter or the PSF image changed: an Airy pattern takes longer than its FFT.
+  // One PSF per colour channel (a single-colour image uses the green one) and their prepared
+  // convolution (plans, buffers, the kernels' spectra), built again only when a parameter, the
+  // PSF image or the image size changed: an Airy pattern takes longer than its FFT.
   vtkBloomPSFKernels& cache = *this->PSFKernels;
   const vtkMTimeType time = this->GetMTime();
-  if (cache.Time != time || cache.Colours != colours)
+  const int width = inExt[1] - inExt[0] + 1, height = inExt[3] - inExt[2] + 1;
+  const bool rebuild = cache.Time != time || cache.Colours != colours;
+  if (rebuild)
   {
     cache.Kernels.assign(colours, vtkBloomPSFKernel());
     cache.Time = 0;
@@ -161,15 +164,15 @@ int vtkImageBloom::ExecutePSF(vtkImageData* input, vtkInformation* outInfo, vtkI
     cache.Time = time;
     cache.Colours = colours;
   }
-  std::vector<const vtkBloomPSFKernel*> pointers;
-  for (const vtkBloomPSFKernel& kernel : cache.Kernels)
+  if (rebuild || !cache.Convolution.IsPreparedFor(width, height))
   {
-    pointers.push_back(&kernel);
+    cache.Convolution.Prepare(width, height, cache.Kernels);
   }
   this->AllocateOutputData(output, outInfo);
   vtkBloomBuffer bright;
   this->ImportColours(input, bright);
-  bool skip = this->SkipDisabledEffects && this->BloomIsDisabled(colours, 1);
+  // Strength and tint only: PSF mode has no level weights.
+  bool skip = this->SkipDisabledEffects && this->BloomIsDisabled(colours, 0);
   if (!skip)
   {
     this->BrightPassInPlace(bright);
@@ -181,7 +184,7 @@ int vtkImageBloom::ExecutePSF(vtkImageData* input, vtkInformation* outInfo, vtkI
   vtkBloomBuffer bloom;
   if (!skip)
   {
-    vtkBloomPSF::Convolve(bright, pointers, this->PSFBorderMode == 1, bloom);
+    cache.Convolution.Convolve(bright, this->PSFBorderMode == 1, bloom);
   }
   this->UpdateProgress(0.8);
   this->Composite(input, skip ? nullptr : &bloom, output);
