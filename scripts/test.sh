@@ -30,43 +30,32 @@ run_x11() {
   bash "$root/scripts/with-xvfb.sh" ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
 }
 
-run_osmesa() {
-  local prefix
-  prefix=$(bash "$root/scripts/build-osmesa-vtk.sh" | tail -n 1)
-  # No Python wrapping: the OSMesa VTK is built without it (the X11 leg covers Python).
-  bash "$root/scripts/configure.sh" "$root/build-osmesa" -DCMAKE_BUILD_TYPE=Release \
+# The headless legs: the suite against Debian's VTK built for osmesa or egl (no X at all).
+run_headless() {
+  local backend=$1 prefix
+  prefix=$(bash "$root/scripts/build-$backend-vtk.sh" | tail -n 1)
+  # No Python wrapping: these VTKs are built without it (the X11 leg covers Python).
+  bash "$root/scripts/configure.sh" "$root/build-$backend" -DCMAKE_BUILD_TYPE=Release \
     -DVTKBLOOM_WARNINGS_AS_ERRORS=ON -DVTKBLOOM_WRAP_PYTHON=OFF \
     -DVTK_DIR="$prefix/lib/cmake/vtk-9.1"
-  echo "test: running the suite against the OSMesa VTK (no DISPLAY, no X server)"
-  env -u DISPLAY -u WAYLAND_DISPLAY ctest --test-dir "$root/build-osmesa" --output-on-failure \
-    -j"$(nproc)"
-}
-
-run_egl() {
-  local prefix
-  prefix=$(bash "$root/scripts/build-egl-vtk.sh" | tail -n 1)
-  # As the OSMesa leg: no Python wrapping (the X11 leg covers Python).
-  bash "$root/scripts/configure.sh" "$root/build-egl" -DCMAKE_BUILD_TYPE=Release \
-    -DVTKBLOOM_WARNINGS_AS_ERRORS=ON -DVTKBLOOM_WRAP_PYTHON=OFF \
-    -DVTK_DIR="$prefix/lib/cmake/vtk-9.1"
-  echo "test: running the suite against the EGL VTK (no DISPLAY, no X server)"
-  env -u DISPLAY -u WAYLAND_DISPLAY ctest --test-dir "$root/build-egl" --output-on-failure \
+  echo "test: running the suite against the ${backend^^} VTK (no DISPLAY, no X server)"
+  env -u DISPLAY -u WAYLAND_DISPLAY ctest --test-dir "$root/build-$backend" --output-on-failure \
     -j"$(nproc)"
 }
 
 case "$mode" in
   all)
     run_x11 "$root/build" -DCMAKE_BUILD_TYPE=Release -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
-    run_osmesa
+    run_headless osmesa
     ;;
   --x11)
     run_x11 "$root/build" -DCMAKE_BUILD_TYPE=Release -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
     ;;
   --osmesa)
-    run_osmesa
+    run_headless osmesa
     ;;
   --egl)
-    run_egl
+    run_headless egl
     ;;
   --asan)
     export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
