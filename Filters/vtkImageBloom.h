@@ -262,6 +262,14 @@ public:
   /// The names SetPreset accepts.
   static std::vector<std::string> GetPresetNames();
 
+  /**
+   * Copy every parameter of `source` into this filter: the bright pass, pyramid, blur,
+   * composite, PSF (the PSF image is shared, not copied) and execution options, everything a
+   * preset or a setter can change, but not the input, the outputs or the statistics. Modified()
+   * is called only when a value changes, so copying equal parameters does not re-execute.
+   */
+  void CopyParameters(vtkImageBloom* source);
+
   ///@{
   /// Bright pass (see vtkImageBloomThreshold). Defaults: SMOOTHSTEP_KNEE, 1, 0.5, off.
   vtkSetClampMacro(ThresholdMode, int, 0, 4);

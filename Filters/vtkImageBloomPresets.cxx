@@ -4,6 +4,7 @@
 #include "vtkImageBloom.h"
 
 #include "vtkImageBloomThreshold.h"
+#include "vtkImageData.h"
 #include "vtkImagePyramidDown.h"
 #include "vtkImagePyramidUp.h"
 
@@ -107,4 +108,79 @@ bool vtkImageBloom::SetPreset(const char* name)
   }
   this->Modified();
   return true;
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+template <typename T>
+void CopyIfDifferent(T& to, const T& from, bool& changed)
+{
+  if (!(to == from))
+  {
+    to = from;
+    changed = true;
+  }
+}
+
+void CopyIfDifferent(double (&to)[3], const double (&from)[3], bool& changed)
+{
+  for (int i = 0; i < 3; ++i)
+  {
+    CopyIfDifferent(to[i], from[i], changed);
+  }
+}
+}
+
+void vtkImageBloom::CopyParameters(vtkImageBloom* source)
+{
+  if (!source || source == this)
+  {
+    return;
+  }
+  bool changed = false;
+  CopyIfDifferent(this->ThresholdMode, source->ThresholdMode, changed);
+  CopyIfDifferent(this->Threshold, source->Threshold, changed);
+  CopyIfDifferent(this->Knee, source->Knee, changed);
+  CopyIfDifferent(this->ClampLuminance, source->ClampLuminance, changed);
+  CopyIfDifferent(this->StartLevel, source->StartLevel, changed);
+  CopyIfDifferent(this->NumberOfLevels, source->NumberOfLevels, changed);
+  CopyIfDifferent(this->LimitLevelsToImageSize, source->LimitLevelsToImageSize, changed);
+  CopyIfDifferent(this->DownsampleKernel, source->DownsampleKernel, changed);
+  CopyIfDifferent(this->KarisAverage, source->KarisAverage, changed);
+  CopyIfDifferent(this->BlurKernel, source->BlurKernel, changed);
+  CopyIfDifferent(this->BlurStandardDeviation, source->BlurStandardDeviation, changed);
+  CopyIfDifferent(this->BlurRadius, source->BlurRadius, changed);
+  CopyIfDifferent(this->BlurGaussianKind, source->BlurGaussianKind, changed);
+  CopyIfDifferent(this->BlurHalfKernel, source->BlurHalfKernel, changed);
+  CopyIfDifferent(this->BlurTapSpacing, source->BlurTapSpacing, changed);
+  CopyIfDifferent(this->BlurIterations, source->BlurIterations, changed);
+  CopyIfDifferent(this->UpsampleKernel, source->UpsampleKernel, changed);
+  CopyIfDifferent(this->AccumulateMode, source->AccumulateMode, changed);
+  CopyIfDifferent(this->LevelWeights, source->LevelWeights, changed);
+  CopyIfDifferent(this->CompositeMode, source->CompositeMode, changed);
+  CopyIfDifferent(this->Strength, source->Strength, changed);
+  CopyIfDifferent(this->Tint, source->Tint, changed);
+  CopyIfDifferent(this->ComputeStatistics, source->ComputeStatistics, changed);
+  CopyIfDifferent(this->SanitizeNonFinite, source->SanitizeNonFinite, changed);
+  CopyIfDifferent(this->ExecutionMode, source->ExecutionMode, changed);
+  CopyIfDifferent(this->SkipEmptyBloom, source->SkipEmptyBloom, changed);
+  CopyIfDifferent(this->SkipDisabledEffects, source->SkipDisabledEffects, changed);
+  CopyIfDifferent(this->TrimPyramid, source->TrimPyramid, changed);
+  CopyIfDifferent(this->RestrictToBrightRegion, source->RestrictToBrightRegion, changed);
+  CopyIfDifferent(this->UseAVX2, source->UseAVX2, changed);
+  CopyIfDifferent(this->ConvolutionMode, source->ConvolutionMode, changed);
+  CopyIfDifferent(this->BloomMode, source->BloomMode, changed);
+  CopyIfDifferent(this->PSFType, source->PSFType, changed);
+  CopyIfDifferent(this->AiryRadius, source->AiryRadius, changed);
+  CopyIfDifferent(this->Wavelengths, source->Wavelengths, changed);
+  CopyIfDifferent(this->PSFGaussianSigmas, source->PSFGaussianSigmas, changed);
+  CopyIfDifferent(this->PSFGaussianWeights, source->PSFGaussianWeights, changed);
+  CopyIfDifferent(this->PSFImage, source->PSFImage, changed);
+  CopyIfDifferent(this->PSFRadius, source->PSFRadius, changed);
+  CopyIfDifferent(this->PSFBorderMode, source->PSFBorderMode, changed);
+  if (changed)
+  {
+    this->Modified();
+  }
 }
