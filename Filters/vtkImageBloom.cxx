@@ -1,5 +1,7 @@
 #include "vtkImageBloom.h"
 
+#include "vtkBloomPieces.h"
+
 #include "vtkBloomChain.h"
 #include "vtkBloomFastChain.h"
 #include "vtkBloomImageOps.h"
@@ -270,13 +272,17 @@ bool vtkImageBloom::CheckParameters()
 
 //------------------------------------------------------------------------------
 int vtkImageBloom::RequestUpdateExtent(
-  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector*)
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
-  // The pyramid reaches across the whole image, so every piece needs all of the input.
+  // Under MPI each rank computes its own piece of the output...
+  int piece[6]; // unused: the call marks the output as producing sub-extents
+  vtkBloomExecutionExtent(outputVector->GetInformationObject(0), piece);
+  // ... but the pyramid reaches across the whole image, so every piece needs all of the input.
   vtkInformation* inInfo = inputVector[0]->GetInformationObject(0);
   int whole[6];
   inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), whole);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), whole, 6);
+  // As one piece: under MPI each rank's producer would otherwise give only its own piece.
+  vtkBloomRequestExactExtent(inInfo, whole);
   return 1;
 }
 

@@ -1,5 +1,7 @@
 #include "vtkImageBloomThreshold.h"
 
+#include "vtkBloomPieces.h"
+
 #include "vtkBloomBrightPass.h"
 #include "vtkImageData.h"
 #include "vtkImageSeparableAlgorithm.h"
@@ -116,6 +118,16 @@ void vtkImageBloomThreshold::BrightPass(
       vtkBloomBrightPass<4>(colour, mode, threshold, knee, clampLuminance);
       break;
   }
+}
+
+//------------------------------------------------------------------------------
+int vtkImageBloomThreshold::RequestUpdateExtent(
+  vtkInformation*, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
+{
+  int extent[6];
+  vtkBloomExecutionExtent(outputVector->GetInformationObject(0), extent);
+  vtkBloomRequestExactExtent(inputVector[0]->GetInformationObject(0), extent);
+  return 1;
 }
 
 //------------------------------------------------------------------------------

@@ -90,6 +90,8 @@ protected:
   vtkImageBloomThreshold();
   ~vtkImageBloomThreshold() override;
 
+  /// Asks for exactly the extent it computes (its piece under MPI).
+  int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   void ThreadedRequestData(vtkInformation* request, vtkInformationVector** inputVector,
     vtkInformationVector* outputVector, vtkImageData*** inData, vtkImageData** outData,

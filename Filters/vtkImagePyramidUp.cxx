@@ -1,5 +1,7 @@
 #include "vtkImagePyramidUp.h"
 
+#include "vtkBloomPieces.h"
+
 #include "vtkBloomImageOps.h"
 #include "vtkBloomKernels.h"
 #include "vtkImageData.h"
@@ -60,10 +62,11 @@ int vtkImagePyramidUp::RequestUpdateExtent(
   this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
   // The finer level is read pixel for pixel where it is added.
   int outExt[6];
-  outputVector->GetInformationObject(0)->Get(
-    vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
-  inputVector[1]->GetInformationObject(0)->Set(
-    vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt, 6);
+  vtkBloomExecutionExtent(outputVector->GetInformationObject(0), outExt);
+  if (vtkInformation* fineInfo = inputVector[1]->GetInformationObject(0))
+  {
+    vtkBloomRequestExactExtent(fineInfo, outExt);
+  }
   return 1;
 }
 

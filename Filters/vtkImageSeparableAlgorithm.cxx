@@ -1,5 +1,7 @@
 #include "vtkImageSeparableAlgorithm.h"
 
+#include "vtkBloomPieces.h"
+
 #include "vtkBloomImageOps.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
@@ -61,19 +63,20 @@ int vtkImageSeparableAlgorithm::RequestUpdateExtent(
   int inWhole[6], outWhole[6], outExt[6];
   inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), inWhole);
   outInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), outWhole);
-  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
+  // The extent this filter will compute (one rank's piece under MPI), grown by the support.
+  vtkBloomExecutionExtent(outInfo, outExt);
 
   std::vector<Term> terms;
   if (!this->BuildTerms(inWhole, outWhole, terms) || outExt[0] > outExt[1] ||
     outExt[2] > outExt[3] || outExt[4] > outExt[5])
   {
-    inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), inWhole, 6);
+    vtkBloomRequestExactExtent(inInfo, inWhole);
     return 1;
   }
 
   int inExt[6];
   vtkImageSeparableAlgorithm::ComputeInputExtent(terms, inWhole, outWhole, outExt, inExt);
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), inExt, 6);
+  vtkBloomRequestExactExtent(inInfo, inExt);
   return 1;
 }
 

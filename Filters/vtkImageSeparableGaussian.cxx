@@ -1,5 +1,7 @@
 #include "vtkImageSeparableGaussian.h"
 
+#include "vtkBloomPieces.h"
+
 #include "vtkBloomFFTConvolution.h"
 #include "vtkBloomImageOps.h"
 #include "vtkBloomKernels.h"
@@ -353,7 +355,7 @@ int vtkImageSeparableGaussian::RequestUpdateExtent(
     return this->Superclass::RequestUpdateExtent(request, inputVector, outputVector);
   }
   // The fast methods and the FFT read whole lines on every filtered axis.
-  outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
+  vtkBloomExecutionExtent(outInfo, outExt);
   int inExt[6];
   for (int a = 0; a < 3; ++a)
   {
@@ -367,7 +369,7 @@ int vtkImageSeparableGaussian::RequestUpdateExtent(
       break;
     }
   }
-  inInfo->Set(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), inExt, 6);
+  vtkBloomRequestExactExtent(inInfo, inExt);
   return 1;
 }
 

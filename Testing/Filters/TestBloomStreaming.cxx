@@ -6,6 +6,7 @@
 #include "vtkBloomReference.h"
 #include "vtkBloomTestSupport.h"
 
+#include <vtkExtentTranslator.h>
 #include <vtkImageAlgorithm.h>
 #include <vtkImageBloom.h>
 #include <vtkImageBloomThreshold.h>
@@ -16,7 +17,9 @@
 #include <vtkImagePyramidUp.h>
 #include <vtkImageSeparableGaussian.h>
 #include <vtkInformation.h>
+#include <vtkInformationVector.h>
 #include <vtkNew.h>
+#include <vtkObjectFactory.h>
 #include <vtkSMPTools.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
 #include <vtkThreadedImageAlgorithm.h>
@@ -170,13 +173,32 @@ Inputs MakeInputs(int type)
   return in;
 }
 
+// vtkImageClip that, like ParaView's Wavelet and the XML image readers, says it can produce
+// sub-extents, so that its executive splits a request for several pieces into its own piece.
+class PieceClip : public vtkImageClip
+{
+public:
+  static PieceClip* New();
+  vtkTypeMacro(PieceClip, vtkImageClip);
+
+protected:
+  int RequestInformation(vtkInformation* request, vtkInformationVector** inputVector,
+    vtkInformationVector* outputVector) override
+  {
+    const int ok = this->Superclass::RequestInformation(request, inputVector, outputVector);
+    outputVector->GetInformationObject(0)->Set(vtkAlgorithm::CAN_PRODUCE_SUB_EXTENT(), 1);
+    return ok;
+  }
+};
+vtkStandardNewMacro(PieceClip);
+
 // A fresh pipeline: clip(ClipData on) -> filter (-> its output port), returned with the clips
 // so they stay alive.
 struct Pipeline
 {
   vtkSmartPointer<vtkImageAlgorithm> Filter;
-  vtkNew<vtkImageClip> Clip0;
-  vtkNew<vtkImageClip> Clip1;
+  vtkNew<PieceClip> Clip0;
+  vtkNew<PieceClip> Clip1;
 };
 
 void Build(Pipeline& p, const Case& c, const Inputs& in)
@@ -309,6 +331,40 @@ TEST_P(FiltersStreaming, UpdateExtentPiecesMatchWhole)
       EXPECT_TRUE(RegionIdentical(out, whole, piece.data(), why))
         << c.Name << " piece [" << piece[0] << ", " << piece[1] << "] x [" << piece[2] << ", "
         << piece[3] << "]: " << why;
+    }
+  }
+}
+
+// Requests by piece, as every rank makes them under MPI (ParaView's pvbatch): the output of
+// piece p of N covers the block vtkExtentTranslator gives and equals the whole result there bit
+// for bit. The executive keeps UPDATE_EXTENT as the extent of all pieces and splits it only when
+// an algorithm executes, so a filter must grow its own piece and ask the input for that extent
+// as one piece: otherwise the upstream clip splits the request again and hands over a piece
+// without the kernel's support.
+TEST_P(FiltersStreaming, PieceRequestsMatchWhole)
+{
+  const Inputs in = MakeInputs(GetParam());
+  for (const Case& c : Cases())
+  {
+    auto whole = Whole(c, in);
+    int w[6];
+    whole->GetExtent(w);
+    for (int pieces : { 2, 3, 4 })
+    {
+      for (int piece = 0; piece < pieces; ++piece)
+      {
+        Pipeline p;
+        Build(p, c, in);
+        ASSERT_TRUE(p.Filter->UpdatePiece(piece, pieces, 0)) << c.Name;
+        vtkImageData* out = vtkImageData::SafeDownCast(p.Filter->GetOutputDataObject(0));
+        int expected[6];
+        vtkNew<vtkExtentTranslator> translator;
+        translator->PieceToExtentThreadSafe(
+          piece, pieces, 0, w, expected, vtkExtentTranslator::BLOCK_MODE, 0);
+        std::string why;
+        EXPECT_TRUE(RegionIdentical(out, whole, expected, why))
+          << c.Name << " piece " << piece << " of " << pieces << ": " << why;
+      }
     }
   }
 }

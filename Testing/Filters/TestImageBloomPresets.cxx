@@ -194,29 +194,33 @@ TEST(FiltersPresetsClosedForm, Names)
 TEST(FiltersPresetsClosedForm, CopyParameters)
 {
   const int extent[6] = { 0, 40, 0, 23, 0, 0 };
-  auto image = vtkBloomTest::MakeImage(extent, 4, VTK_FLOAT, [](int i, int j, int, int ch) {
-    return (i * 7 + j * 3) % 11 == 0 ? 4.0 + ch : 0.05 * ((i + j + ch) % 5);
-  });
+  auto image = vtkBloomTest::MakeImage(extent, 4, VTK_FLOAT,
+    [](int i, int j, int, int ch)
+    { return (i * 7 + j * 3) % 11 == 0 ? 4.0 + ch : 0.05 * ((i + j + ch) % 5); });
   std::vector<std::function<void(vtkImageBloom*)>> configurations;
   for (const std::string& name : vtkImageBloom::GetPresetNames())
   {
     configurations.emplace_back([name](vtkImageBloom* b) { b->SetPreset(name.c_str()); });
   }
-  configurations.emplace_back([](vtkImageBloom* b) {
-    b->SetThreshold(0.3);
-    b->SetKnee(0.0);
-    b->SetNumberOfLevels(3);
-    b->SetBlurStandardDeviation(2.5);
-    b->SetLevelWeights({ 0.5, 1.0, 2.0 });
-    b->SetTint(1.0, 0.5, 0.25);
-    b->SetStrength(0.7);
-    b->SetCompositeMode(vtkImageBloom::LERP);
-  });
-  configurations.emplace_back([](vtkImageBloom* b) {
-    b->SetBloomModeToPSF();
-    b->SetPSFGaussians({ 1.0, 3.0 }, { 0.75, 0.25 });
-    b->SetExecutionModeToReference();
-  });
+  configurations.emplace_back(
+    [](vtkImageBloom* b)
+    {
+      b->SetThreshold(0.3);
+      b->SetKnee(0.0);
+      b->SetNumberOfLevels(3);
+      b->SetBlurStandardDeviation(2.5);
+      b->SetLevelWeights({ 0.5, 1.0, 2.0 });
+      b->SetTint(1.0, 0.5, 0.25);
+      b->SetStrength(0.7);
+      b->SetCompositeMode(vtkImageBloom::LERP);
+    });
+  configurations.emplace_back(
+    [](vtkImageBloom* b)
+    {
+      b->SetBloomModeToPSF();
+      b->SetPSFGaussians({ 1.0, 3.0 }, { 0.75, 0.25 });
+      b->SetExecutionModeToReference();
+    });
   for (size_t k = 0; k < configurations.size(); ++k)
   {
     vtkNew<vtkImageBloom> original;

@@ -1,0 +1,89 @@
+/**
+ * @class   vtkPVBloomRenderView
+ * @brief   ParaView's render view with vtkBloomPass applied to the composited image.
+ *
+ * The view puts vtkBloomPass in the image-processing slot of its vtkPVSynchronizedRenderer,
+ * the slot ParaView's own tone mapping and vtkPVRenderViewWithEDL use. Where that slot sits
+ * is what makes the bloom correct in parallel:
+ *
+ * - Serial (builtin, pvpython, pvbatch with one rank): the pass's delegate is the camera pass,
+ *   so the scene renders straight into the pass's float target and HDR values above 1 bloom.
+ * - Parallel (pvbatch or pvserver with N > 1 ranks, through vtkIceTSynchronizedRenderers):
+ *   the pass's delegate is the camera pass around vtkIceTCompositePass, which renders each
+ *   rank's geometry, composites all ranks, and pastes the composited image into the pass's
+ *   target. The bloom therefore runs on the whole composited image, never on one rank's
+ *   partial image, so there are no seams at the ranks' boundaries. It runs on the rank that
+ *   displays the image (rank 0; every rank in tile-display mode, where each tile blooms
+ *   alone). IceT composites 8-bit colour, so in parallel the pass sees the image clamped to
+ *   [0, 1]: use a threshold below 1 there.
+ *
+ * With ParaView's tone mapping on (UseToneMapping), the tone mapping pass stays outermost and
+ * bloom becomes its delegate: bloom in linear HDR, then tone mapping. During a selection
+ * render the view leaves the slot empty, as ParaView does.
+ *
+ * The bloom's parameters are a vtkPVImageBloom: SetBloomPreset ("custom" or a preset name)
+ * over the hand-set parameters of SetBloomCustomParameters.
+ */
+
+#ifndef vtkPVBloomRenderView_h
+#define vtkPVBloomRenderView_h
+
+#include "vtkNew.h" // For the pass and its parameters
+#include "vtkPVRenderView.h"
+#include "vtkParaViewBloomModule.h" // For export macro
+
+class vtkBloomPass;
+class vtkImageBloom;
+class vtkPVImageBloom;
+
+class VTKPARAVIEWBLOOM_EXPORT vtkPVBloomRenderView : public vtkPVRenderView
+{
+public:
+  static vtkPVBloomRenderView* New();
+  vtkTypeMacro(vtkPVBloomRenderView, vtkPVRenderView);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  ///@{
+  /// Bloom on (default) or off; off, the view renders as ParaView's render view.
+  void SetUseBloom(bool use);
+  vtkGetMacro(UseBloom, bool);
+  ///@}
+
+  ///@{
+  /// "custom" (default) or a name of vtkImageBloom::GetPresetNames().
+  void SetBloomPreset(const char* name);
+  const char* GetBloomPreset();
+  ///@}
+
+  /// The hand-set parameters (the plugin's BloomParameters sub-proxy).
+  void SetBloomCustomParameters(vtkImageBloom* parameters);
+
+  ///@{
+  /// Precision of the pass's targets: 16 (half floats, default) or 32 (floats).
+  void SetBloomFloatPrecision(int bits);
+  int GetBloomFloatPrecision();
+  ///@}
+
+  /// The pass, for tests and scripts that read its statistics.
+  vtkBloomPass* GetBloomPass() { return this->BloomPass; }
+
+protected:
+  vtkPVBloomRenderView();
+  ~vtkPVBloomRenderView() override;
+
+  /// Insert or remove the pass before each render on a process that renders.
+  void AboutToRenderOnLocalProcess(bool interactive) override;
+
+  /// Whether this process shows the image that the bloom must process.
+  bool LocalProcessDisplaysImage();
+
+  bool UseBloom = true;
+  vtkNew<vtkBloomPass> BloomPass;
+  vtkNew<vtkPVImageBloom> BloomParameters;
+
+private:
+  vtkPVBloomRenderView(const vtkPVBloomRenderView&) = delete;
+  void operator=(const vtkPVBloomRenderView&) = delete;
+};
+
+#endif
