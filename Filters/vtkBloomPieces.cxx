@@ -1,10 +1,13 @@
 #include "vtkBloomPieces.h"
 
 #include "vtkAlgorithm.h"
+#include "vtkDataObject.h"
 #include "vtkExtentTranslator.h"
+#include "vtkImageData.h"
 #include "vtkInformation.h"
 #include "vtkInformationIntegerRequestKey.h"
 #include "vtkNew.h"
+#include "vtkPointData.h"
 #include "vtkStreamingDemandDrivenPipeline.h"
 
 //------------------------------------------------------------------------------
@@ -40,4 +43,14 @@ void vtkBloomRequestExactExtent(vtkInformation* inInfo, const int extent[6])
   inInfo->Set(SDDP::UPDATE_PIECE_NUMBER(), 0);
   inInfo->Set(SDDP::UPDATE_NUMBER_OF_PIECES(), 1);
   inInfo->Set(SDDP::UPDATE_NUMBER_OF_GHOST_LEVELS(), 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomMatchOutputScalars(vtkInformation* outInfo, vtkImageData* input)
+{
+  if (input && input->GetPointData()->GetScalars())
+  {
+    vtkDataObject::SetPointDataActiveScalarInfo(
+      outInfo, input->GetScalarType(), input->GetNumberOfScalarComponents());
+  }
 }

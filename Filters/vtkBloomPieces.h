@@ -15,6 +15,7 @@
 #ifndef vtkBloomPieces_h
 #define vtkBloomPieces_h
 
+class vtkImageData;
 class vtkInformation;
 
 /**
@@ -28,5 +29,13 @@ void vtkBloomExecutionExtent(vtkInformation* outInfo, int extent[6]);
 
 /// Ask the input for exactly `extent`, as piece 0 of 1, so that nothing upstream splits it.
 void vtkBloomRequestExactExtent(vtkInformation* inInfo, const int extent[6]);
+
+/**
+ * Make `outInfo`'s active-scalar information (which AllocateOutputData allocates by) match the
+ * scalars `input` really holds. The information pass copies the input's advertised active
+ * scalars, which need not be the array that arrives: ParaView's array selection, for one,
+ * hands a filter another array than the one its source advertised.
+ */
+void vtkBloomMatchOutputScalars(vtkInformation* outInfo, vtkImageData* input);
 
 #endif

@@ -305,6 +305,7 @@ int vtkImageBloom::RequestData(
     output->Initialize();
     return 0;
   }
+  vtkBloomMatchOutputScalars(outInfo, input);
   if (this->BloomMode == BLOOM_PSF)
   {
     return this->ExecutePSF(input, outInfo, output);

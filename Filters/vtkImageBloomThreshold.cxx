@@ -154,6 +154,7 @@ int vtkImageBloomThreshold::RequestData(
     output->Initialize();
     return 0;
   }
+  vtkBloomMatchOutputScalars(outputVector->GetInformationObject(0), input);
   return this->Superclass::RequestData(request, inputVector, outputVector);
 }
 

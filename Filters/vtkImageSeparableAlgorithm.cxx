@@ -103,6 +103,7 @@ int vtkImageSeparableAlgorithm::RequestData(
     output->Initialize();
     return 0;
   }
+  vtkBloomMatchOutputScalars(outInfo, input);
   inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->InputWholeExtent);
   outInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->OutputWholeExtent);
   this->Terms.clear();

@@ -467,6 +467,7 @@ int vtkImageSeparableGaussian::RequestData(
     outInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), this->OutputWholeExtent);
     int outExt[6];
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), outExt);
+    vtkBloomMatchOutputScalars(outInfo, input);
     this->AllocateOutputData(output, outInfo, outExt);
     this->CopyAttributeData(input, output, inputVector);
     this->ExecuteLines(clean ? clean.Get() : input, output, outExt, fftAxes);

@@ -7,6 +7,7 @@
 #include "vtkFloatArray.h"
 #include "vtkImageData.h"
 #include "vtkInformation.h"
+#include "vtkInformationVector.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenEXRThreadPool.h"
 #include "vtkPointData.h"
@@ -268,7 +269,20 @@ void vtkOpenEXRWriter::WriteData()
     fail(vtkErrorCode::UnknownError, message.str());
     return;
   }
+  // The array chosen with SetInputArrayToProcess(0, ...), else the active point scalars.
   vtkDataArray* scalars = input->GetPointData()->GetScalars();
+  vtkInformationVector* chosen = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
+  if (chosen && chosen->GetNumberOfInformationObjects() > 0)
+  {
+    int association = vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    vtkDataArray* array = this->GetInputArrayToProcess(0, input, association);
+    if (!array || association != vtkDataObject::FIELD_ASSOCIATION_POINTS)
+    {
+      fail(vtkErrorCode::UnknownError, "the chosen array is not a point array of the input");
+      return;
+    }
+    scalars = array;
+  }
   const vtkIdType width = static_cast<vtkIdType>(extent[1]) - extent[0] + 1;
   const vtkIdType height = static_cast<vtkIdType>(extent[3]) - extent[2] + 1;
   if (width > VTK_INT_MAX || height > VTK_INT_MAX)

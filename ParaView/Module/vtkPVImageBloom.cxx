@@ -84,7 +84,10 @@ int vtkPVImageBloom::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector)
 {
   vtkImageData* input = vtkImageData::GetData(inputVector[0]);
-  vtkDataArray* chosen = input ? this->GetInputArrayToProcess(0, inputVector) : nullptr;
+  vtkInformationVector* arrays = this->GetInformation()->Get(INPUT_ARRAYS_TO_PROCESS());
+  vtkDataArray* chosen = input && arrays && arrays->GetNumberOfInformationObjects() > 0
+    ? this->GetInputArrayToProcess(0, inputVector)
+    : nullptr;
   if (!chosen || chosen == input->GetPointData()->GetScalars())
   {
     return this->Superclass::RequestData(request, inputVector, outputVector);

@@ -22,8 +22,10 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <limits>
@@ -322,6 +324,60 @@ TEST(OpenEXRWriter, DoubleIsRoundedToFloat)
       Bits(vtkOpenEXRTest::FloatAt(read.Image, static_cast<int>(i), 0, 0)), Bits(expected[i]))
       << values[i];
   }
+}
+
+//------------------------------------------------------------------------------
+// SetInputArrayToProcess(0, ...) picks the array written (ParaView's "Scalars"); without it the
+// active scalars are written; a name that is not a point array is an error and writes nothing.
+TEST(OpenEXRWriter, WritesTheChosenArray)
+{
+  auto image = vtkBloomTest::MakeImage(
+    TestExtent, 1, VTK_FLOAT, [](int i, int j, int, int) { return 0.25 * i - 0.5 * j; });
+  vtkNew<vtkFloatArray> rgb;
+  rgb->SetName("rgb");
+  rgb->SetNumberOfComponents(3);
+  rgb->SetNumberOfTuples(image->GetNumberOfPoints());
+  for (vtkIdType p = 0; p < image->GetNumberOfPoints(); ++p)
+  {
+    rgb->SetTuple3(p, p * 1.5, -p * 0.25, 7.0);
+  }
+  image->GetPointData()->AddArray(rgb);
+
+  const std::string chosenPath = vtkBloomTest::OutputPath("ChosenArray.exr");
+  const WriteResult chosen = Write(image, chosenPath,
+    [](vtkOpenEXRWriter* w)
+    { w->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "rgb"); });
+  ASSERT_EQ(chosen.Returned, 1) << chosen.Message;
+  const auto read = vtkOpenEXRTest::Read(chosenPath);
+  ASSERT_EQ(read.Errors, 0) << read.Message;
+  ASSERT_EQ(read.Image->GetNumberOfScalarComponents(), 3);
+  int extent[6];
+  image->GetExtent(extent);
+  for (int j = extent[2]; j <= extent[3]; ++j)
+  {
+    for (int i = extent[0]; i <= extent[1]; ++i)
+    {
+      const vtkIdType p = image->ComputePointId(std::array<int, 3>{ i, j, extent[4] }.data());
+      for (int c = 0; c < 3; ++c)
+      {
+        EXPECT_EQ(vtkOpenEXRTest::FloatAt(read.Image, i, j, c),
+          static_cast<float>(rgb->GetComponent(p, c)));
+      }
+    }
+  }
+
+  const std::string activePath = vtkBloomTest::OutputPath("ActiveArray.exr");
+  ASSERT_EQ(Write(image, activePath).Returned, 1);
+  EXPECT_EQ(vtkOpenEXRTest::Read(activePath).Image->GetNumberOfScalarComponents(), 1);
+
+  const std::string missingPath = vtkBloomTest::OutputPath("MissingArray.exr");
+  std::remove(missingPath.c_str());
+  const WriteResult missing = Write(image, missingPath,
+    [](vtkOpenEXRWriter* w)
+    { w->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, "nope"); });
+  EXPECT_GT(missing.Errors, 0);
+  EXPECT_NE(missing.Message.find("chosen array"), std::string::npos) << missing.Message;
+  EXPECT_FALSE(std::filesystem::exists(missingPath));
 }
 
 //------------------------------------------------------------------------------

@@ -1,0 +1,199 @@
+"""The ParaView plugin's tests: pvbatch runs with 1 to 4 ranks, checked here.
+
+    /usr/bin/python3 ParaView/Testing/run_tests.py BUILD OUTDIR
+
+BUILD is the project's own build (VTK 9.1): its vtk-bloom tool and vtkbloom Python package are
+the independent side of the comparisons. Each check prints one line; the exit status is the
+number of failed checks. Run by scripts/test.sh (the ParaView leg).
+
+1. Distributed filters: ParaView/Testing/bloom_pieces.py with 1, 2, 3 and 4 ranks (uneven
+   pieces of a 101 x 71 image); every result is bit-identical to the serial one.
+2. Presets: each Bloom preset equals `vtk-bloom image --preset NAME` on the same input within
+   1e-5 relative L2; the custom Bloom, the Gaussians, the bright pass and the pyramid steps
+   equal the same filters run from VTK 9.1's Python within 1e-6.
+3. Errors: bloom_errors.py reports each bad parameter or input with its message, and exits 0.
+4. The bloom view: 1 and 3 ranks render the same image (IceT composites 8-bit colour: at most
+   2 levels apart, relative L2 below 1e-2), which differs clearly from the view with bloom off
+   and matches the baseline image Data/bloom-view.png the same way.
+"""
+import os
+import signal
+import subprocess
+import sys
+
+import numpy as np
+
+build, out = os.path.abspath(sys.argv[1]), os.path.abspath(sys.argv[2])
+here = os.path.dirname(os.path.abspath(__file__))
+root = os.path.dirname(os.path.dirname(here))
+sys.path.insert(0, os.path.join(build, 'lib', 'python3', 'dist-packages'))
+import vtkbloom  # noqa: E402
+from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
+from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+
+failures = 0
+
+
+def check(ok, what):
+    global failures
+    print(('PASS ' if ok else 'FAIL ') + what, flush=True)
+    failures += 0 if ok else 1
+
+
+def pvbatch(ranks, script, *args, timeout=300):
+    """Run a script under scripts/pvbatch.sh; a run that hangs is killed with its processes."""
+    command = ['bash', os.path.join(root, 'scripts', 'pvbatch.sh'), '-n', str(ranks),
+               os.path.join(here, script)] + list(args)
+    with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          start_new_session=True) as process:
+        try:
+            log, _ = process.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            log, _ = process.communicate()
+            return -1, log + '\n(killed after %d s)' % timeout
+    return process.returncode, log
+
+
+def load_exr(path):
+    reader = vtkbloom.vtkOpenEXRReader()
+    reader.SetFileName(path)
+    reader.Update()
+    image = reader.GetOutput()
+    return image.GetExtent(), vtk_to_numpy(image.GetPointData().GetScalars()).astype(np.float64)
+
+
+def load_png(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    return vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars()).astype(np.float64)
+
+
+def relative_l2(a, b):
+    return float(np.linalg.norm(a - b) / max(np.linalg.norm(b), 1e-300))
+
+
+# 1. Serial against MPI, bit for bit.
+results = {}
+for ranks in (1, 2, 3, 4):
+    directory = os.path.join(out, 'pieces-%d' % ranks)
+    status, log = pvbatch(ranks, 'bloom_pieces.py', directory)
+    check(status == 0, 'bloom_pieces.py with %d rank(s) ran (exit %d)' % (ranks, status))
+    if status != 0:
+        print(log[-3000:])
+    results[ranks] = directory
+names = sorted(f for f in os.listdir(results[1]) if f.endswith('.exr'))
+check(len(names) == 11, 'the serial run wrote the 11 results (%d)' % len(names))
+for ranks in (2, 3, 4):
+    for name in names:
+        path = os.path.join(results[ranks], name)
+        if not os.path.exists(path):
+            check(False, '%s with %d ranks exists' % (name, ranks))
+            continue
+        e1, v1 = load_exr(os.path.join(results[1], name))
+        en, vn = load_exr(path)
+        same = e1 == en and v1.shape == vn.shape and np.array_equal(v1.view(np.uint64),
+                                                                     vn.view(np.uint64))
+        check(same, '%s: %d ranks bit-identical to serial' % (name, ranks))
+
+# 2. Against the project's own tool and filters (VTK 9.1).
+serial = results[1]
+source = os.path.join(serial, 'input.exr')
+for preset in ('webgpu-market', 'mip-atlas', 'ping-pong', 'crt-halfres'):
+    cli = os.path.join(out, 'cli-%s.exr' % preset)
+    run = subprocess.run([os.path.join(build, 'bin', 'vtk-bloom'), 'image', '--preset', preset,
+                          source, cli], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    if run.returncode != 0:
+        check(False, 'vtk-bloom image --preset %s: %s' % (preset, run.stdout[-500:]))
+        continue
+    _, plugin = load_exr(os.path.join(serial, 'bloom-%s.exr' % preset))
+    _, tool = load_exr(cli)
+    error = relative_l2(plugin[:, :3], tool[:, :3])
+    check(error <= 1e-5, 'Bloom preset %s against vtk-bloom image: %.2e <= 1e-5' % (preset, error))
+
+# The Gaussians and the bright pass filtered the custom bloom's output (its RGB scalars).
+reader = vtkbloom.vtkOpenEXRReader()
+reader.SetFileName(os.path.join(serial, 'bloom-custom.exr'))
+reader.Update()
+
+
+def against(name, make, tolerance=1e-6, source=None):
+    algorithm = make()
+    if source is None:
+        algorithm.SetInputConnection(reader.GetOutputPort())
+    else:
+        source_reader = vtkbloom.vtkOpenEXRReader()
+        source_reader.SetFileName(source)
+        algorithm.SetInputConnection(source_reader.GetOutputPort())
+    algorithm.Update()
+    expected = vtk_to_numpy(algorithm.GetOutput().GetPointData().GetScalars()).astype(np.float64)
+    _, got = load_exr(os.path.join(serial, name + '.exr'))
+    components = min(expected.reshape(len(expected), -1).shape[1], got.reshape(len(got), -1).shape[1])
+    error = relative_l2(got.reshape(len(got), -1)[:, :components],
+                        expected.reshape(len(expected), -1)[:, :components])
+    check(error <= tolerance, '%s against VTK 9.1 vtkbloom: %.2e <= %g' % (name, error, tolerance))
+
+
+def custom_bloom():
+    bloom = vtkbloom.vtkImageBloom()
+    bloom.SetThreshold(0.8)
+    bloom.SetKnee(0.2)
+    bloom.SetNumberOfLevels(4)
+    bloom.SetBlurStandardDeviation(2.0)
+    bloom.SetLevelWeights(3, [1.0, 0.5, 0.25])
+    bloom.SetStrength(0.7)
+    bloom.SetTint(1.0, 0.8, 0.6)
+    return bloom
+
+
+def gaussian(sigmas, fft=False):
+    def make():
+        blur = vtkbloom.vtkImageSeparableGaussian()
+        blur.SetStandardDeviations(*sigmas)
+        if fft:
+            blur.SetConvolutionModeToFFT()
+        return blur
+    return make
+
+
+against('bloom-custom', custom_bloom, source=source)
+against('gaussian', gaussian((3.0, 2.0, 0.0)))
+against('gaussian-fft', gaussian((12.0, 12.0, 0.0), fft=True))
+against('bright', vtkbloom.vtkImageBloomThreshold)
+
+# 3. Errors.
+status, log = pvbatch(1, 'bloom_errors.py', os.path.join(out, 'errors'))
+check(status == 0 and 'bloom_errors: ok' in log, 'bloom_errors.py ran its checks (exit %d)' % status)
+for message in ("Unknown bloom preset 'no-such-preset'",
+                'Input scalars must be float or double',
+                'vtkImagePyramidUp',
+                "Cannot read OpenEXR file",
+                "Cannot write OpenEXR file"):
+    check(message in log, 'error reported: %s' % message)
+
+# 4. The bloom view, serial and under MPI.
+images = {}
+for ranks, use_bloom in ((1, 1), (3, 1), (1, 0)):
+    png = os.path.join(out, 'view-%d-%d.png' % (ranks, use_bloom))
+    status, log = pvbatch(ranks, 'bloom_view.py', png, 'custom', str(use_bloom))
+    check(status == 0 and os.path.exists(png),
+          'bloom_view.py, %d rank(s), bloom %s (exit %d)' % (ranks, 'on' if use_bloom else 'off', status))
+    if os.path.exists(png):
+        images[(ranks, use_bloom)] = load_png(png)
+if len(images) == 3:
+    serial_view, mpi_view, plain = images[(1, 1)], images[(3, 1)], images[(1, 0)]
+    error = relative_l2(mpi_view, serial_view)
+    worst = float(np.abs(mpi_view - serial_view).max())
+    check(error < 1e-2 and worst <= 2, 'view with 3 ranks against 1: relative L2 %.2e, max %g levels'
+          % (error, worst))
+    bloom_effect = relative_l2(plain, serial_view)
+    check(bloom_effect > 0.1, 'the view with bloom differs from it without: %.2e' % bloom_effect)
+    baseline = load_png(os.path.join(here, 'Data', 'bloom-view.png'))
+    error = relative_l2(serial_view, baseline)
+    worst = float(np.abs(serial_view - baseline).max())
+    check(error < 1e-2 and worst <= 2, 'view against the baseline image: relative L2 %.2e, max %g levels'
+          % (error, worst))
+
+print('run_tests: %d failure(s)' % failures)
+sys.exit(min(failures, 100))
