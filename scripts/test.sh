@@ -1,10 +1,14 @@
 #!/usr/bin/env bash
 # Install what vtk-bloom needs, build it, and run the whole test suite.
-#   bash scripts/test.sh           both backends: the system VTK 9.1 (X11) in build/, run under a
-#                                  private Xvfb, then the OSMesa VTK (built from Debian's source
-#                                  on first use, see scripts/build-osmesa-vtk.sh) in
-#                                  build-osmesa/, run with no display at all
+#   bash scripts/test.sh           both backends and the ParaView plugin: the system VTK 9.1 (X11)
+#                                  in build/, run under a private Xvfb; the ParaView plugin in
+#                                  build-paraview/, its serial and MPI tests (1 to 4 ranks) under
+#                                  pvbatch; then the OSMesa VTK (built from Debian's source on
+#                                  first use, see scripts/build-osmesa-vtk.sh) in build-osmesa/,
+#                                  run with no display at all
 #   bash scripts/test.sh --x11     only the system-VTK leg
+#   bash scripts/test.sh --paraview only the ParaView leg (needs the X11 leg's build/ for the
+#                                  vtk-bloom tool and Python package it compares against)
 #   bash scripts/test.sh --osmesa  only the OSMesa leg
 #   bash scripts/test.sh --egl     the EGL VTK (built from Debian's source on first use, see
 #                                  scripts/build-egl-vtk.sh) in build-egl/, run with no display
@@ -43,10 +47,23 @@ run_headless() {
     -j"$(nproc)"
 }
 
+# The ParaView plugin against Debian's ParaView 5.11 (its VTK 9.2): build it, then run its
+# pvbatch tests, compared with the X11 leg's build (ParaView/Testing/run_tests.py).
+run_paraview() {
+  bash "$root/scripts/build-paraview-plugin.sh" "$root/build-paraview"
+  echo "test: running the ParaView plugin's tests (pvbatch, 1 to 4 MPI ranks)"
+  /usr/bin/python3 "$root/ParaView/Testing/run_tests.py" "$root/build" \
+    "$root/build-paraview/Testing"
+}
+
 case "$mode" in
   all)
     run_x11 "$root/build" -DCMAKE_BUILD_TYPE=Release -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
+    run_paraview
     run_headless osmesa
+    ;;
+  --paraview)
+    run_paraview
     ;;
   --x11)
     run_x11 "$root/build" -DCMAKE_BUILD_TYPE=Release -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
@@ -67,7 +84,7 @@ case "$mode" in
     bash "$root/scripts/fuzz.sh" "${2:-120}"
     ;;
   *)
-    echo "usage: bash scripts/test.sh [--x11 | --osmesa | --egl | --asan | --fuzz [SECONDS]]" >&2
+    echo "usage: bash scripts/test.sh [--x11 | --paraview | --osmesa | --egl | --asan | --fuzz [SECONDS]]" >&2
     exit 2
     ;;
 esac
