@@ -11,7 +11,7 @@ for n in $(seq 91 140); do
   fi
 done
 [ -n "$display" ] || { echo "with-xvfb: no free display number" >&2; exit 1; }
-Xvfb ":$display" -screen 0 1920x1200x24 -nolisten tcp -noreset >/dev/null 2>&1 &
+Xvfb ":$display" -screen 0 "${VTKBLOOM_XVFB_SCREEN:-1920x1200x24}" -nolisten tcp -noreset >/dev/null 2>&1 &
 xvfb_pid=$!
 trap 'kill "$xvfb_pid" 2>/dev/null || true; wait "$xvfb_pid" 2>/dev/null || true' EXIT
 for _ in $(seq 1 100); do
