@@ -5,7 +5,7 @@
 The image is an RGB float field computed from ParaView's Wavelet (101 x 71, uneven pieces for
 every N > 1), with values from 0.1 to about 8. Each result is saved with SaveData as OUTDIR/
 NAME.exr (float channels): under MPI the plugin's parallel OpenEXR writer gathers the pieces to
-rank 0. The input itself is saved as OUTDIR/input.exr. run_tests.py compares the results across
+rank 0. One result is also saved as .vti (the plugin's gathering .vti writer under MPI). The input itself is saved as OUTDIR/input.exr. run_tests.py compares the results across
 rank counts (bit for bit) and with `vtk-bloom image` (to 1e-5).
 """
 import os
@@ -31,6 +31,9 @@ for preset in ['webgpu-market', 'mip-atlas', 'ping-pong', 'crt-halfres']:
     bloom = Bloom(Input=hdr, Preset=preset)
     bloom.Scalars = ['POINTS', 'rgb']
     save('bloom-' + preset, bloom)
+    if preset == 'crt-halfres':
+        # Also as .vti: under MPI the plugin's gathering .vti writer, serially ParaView's own.
+        SaveData(os.path.join(out, 'bloom-crt-halfres.vti'), proxy=bloom)
 
 custom = Bloom(Input=hdr)
 custom.Scalars = ['POINTS', 'rgb']

@@ -30,6 +30,7 @@ sys.path.insert(0, os.path.join(build, 'lib', 'python3', 'dist-packages'))
 import vtkbloom  # noqa: E402
 from vtkmodules.util.numpy_support import vtk_to_numpy  # noqa: E402
 from vtkmodules.vtkIOImage import vtkPNGReader  # noqa: E402
+from vtkmodules.vtkIOXML import vtkXMLImageDataReader  # noqa: E402
 
 failures = 0
 
@@ -96,6 +97,27 @@ for ranks in (2, 3, 4):
         same = e1 == en and v1.shape == vn.shape and np.array_equal(v1.view(np.uint64),
                                                                      vn.view(np.uint64))
         check(same, '%s: %d ranks bit-identical to serial' % (name, ranks))
+
+def load_vti(path):
+    reader = vtkXMLImageDataReader()
+    reader.SetFileName(path)
+    reader.Update()
+    points = reader.GetOutput().GetPointData()
+    return reader.GetOutput().GetExtent(), {points.GetArrayName(i): vtk_to_numpy(points.GetArray(i))
+                                            for i in range(points.GetNumberOfArrays())}
+
+
+e1, a1 = load_vti(os.path.join(results[1], 'bloom-crt-halfres.vti'))
+for ranks in (2, 3, 4):
+    path = os.path.join(results[ranks], 'bloom-crt-halfres.vti')
+    if not os.path.exists(path):
+        check(False, 'bloom-crt-halfres.vti with %d ranks exists' % ranks)
+        continue
+    en, an = load_vti(path)
+    same = e1 == en and sorted(a1) == sorted(an) and all(
+        np.array_equal(a1[k].view(np.uint8), an[k].view(np.uint8)) for k in a1)
+    check(same, 'bloom-crt-halfres.vti: %d ranks bit-identical to serial (arrays %s)'
+          % (ranks, ', '.join(sorted(an))))
 
 # 2. Against the project's own tool and filters (VTK 9.1).
 serial = results[1]
