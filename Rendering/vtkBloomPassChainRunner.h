@@ -49,6 +49,24 @@ public:
   bool Run(vtkImageBloom* parameters, vtkTextureObject* emission, bool mask);
 
   /**
+   * Settings of the next Run(): Fast runs the fast mode (vtkBloomPass::QUALITY_FAST: bilinear
+   * pairs of taps in the operators' interiors, on the half-float targets BuildChain made for
+   * it); Restrict makes every pass after the bright pass cover only the box its output can be
+   * non-zero in (vtkImageBloom::RestrictToBrightRegion, vtkBloomPassRegion.cxx).
+   */
+  bool Fast = false;
+  bool Restrict = false;
+
+  /**
+   * The last Run()'s bright region (the bounding box of the bright pass's non-zero samples, in
+   * level-0 samples, x0 x1 y0 y1 with x1, y1 past the end; all 0 when empty or not measured)
+   * and the samples its passes computed over those a full evaluation computes (1 when not
+   * restricted), the composite included.
+   */
+  int BrightRegion[4] = { 0, 0, 0, 0 };
+  double Coverage = 1.0;
+
+  /**
    * out = keep * scene + Strength * Tint * bloom into `target`, or into the bound framebuffer
    * at `origin` when `target` is null.
    */
@@ -125,10 +143,32 @@ private:
     int First[2] = { 0, 0 };    ///< First of rows Begin and Begin + 1 (period 2)
     std::vector<float> Weights; ///< Period rows of Taps weights
 
+    /**
+     * The fast mode's bilinear pairs (0 when a weight is negative): taps 2 m and 2 m + 1 of
+     * each row as one bilinear fetch of weight w0 + w1 at offset 2 m + w1 / (w0 + w1).
+     */
+    int Pairs = 0;
+    std::vector<float> PairWeights; ///< Period rows of Pairs weights
+    std::vector<float> PairOffsets; ///< Period rows of Pairs offsets from First
+
     static Interior Find(const vtkBloomLinearOperator& op);
 
-    /// The #defines of OP_PERIODIC along `axis` ("X" or "Y"); the weights are uniforms.
-    std::string Defines(const char* axis) const;
+    /// The #defines of OP_PERIODIC along `axis` ("X" or "Y"), with bilinear pairs when
+    /// `linear`; the weights are uniforms.
+    std::string Defines(const char* axis, bool linear) const;
+  };
+
+  /// A box of samples [X0, X1) x [Y0, Y1); empty when X0 >= X1 or Y0 >= Y1.
+  struct Box
+  {
+    int X0 = 0;
+    int X1 = 0;
+    int Y0 = 0;
+    int Y1 = 0;
+    bool Empty() const { return this->X0 >= this->X1 || this->Y0 >= this->Y1; }
+    static Box Whole(int width, int height) { return { 0, width, 0, height }; }
+    Box Union(const Box& o) const;
+    Box Intersection(const Box& o) const;
   };
 
   // A range of output samples along one axis and how the pass evaluates it.
@@ -155,7 +195,34 @@ private:
     vtkTextureObject* Addend = nullptr; ///< STEP_ADD
     const char* Name = "pass";          ///< for the profile
     int Level = -1;                     ///< the pyramid level it writes, for the profile
+    const Box* Region = nullptr;        ///< restricted: the samples to compute, else all
+    bool ZeroBloom = false; ///< composite where the bloom is known zero (no operator taps)
   };
+
+  // Content-aware evaluation (vtkBloomPassRegion.cxx).
+
+  /**
+   * The output samples of `x` (along x) and `y` (along y) that read any input sample of `in`:
+   * outside it the pass reads only zeros. A null operator is the identity.
+   */
+  static Box Reach(const vtkBloomLinearOperator* x, const vtkBloomLinearOperator* y, const Box& in,
+    int width, int height);
+
+  /// Reduce the bright level to the box of its non-zero samples (two or three small passes
+  /// and a read-back of a few kilobytes).
+  Box MeasureBrightRegion();
+
+  /**
+   * Before a pass that replaces `target`'s samples in `region` (null: all of width x height):
+   * clear what the target holds outside it, so that it is zero there, and record what it holds.
+   */
+  void PrepareTarget(vtkBloomPassTarget& target, const Box* region, int width, int height);
+
+  /// The region of the bloom term within the composite's output; outside it the bloom is zero.
+  Box CompositeRegion;
+  bool CompositeRestricted = false;
+  double ComputedSamples = 0.0;
+  double FullSamples = 0.0;
 
   vtkTextureObject* OperatorTexture(const vtkBloomLinearOperator& op);
   const Interior& InteriorOf(const vtkBloomLinearOperator& op);
@@ -166,6 +233,9 @@ private:
   /// The program of one variant, made on first use; null (with an error) if it fails.
   vtkOpenGLQuadHelper* Program(const std::string& variant);
   std::string Variant(const PassSpec& spec, int xMode, int yMode);
+
+  /// Whether the pass evaluates `op`'s interior with bilinear pairs (the fast mode).
+  bool Linear(const PassSpec& spec, const vtkBloomLinearOperator* op);
 
   /**
    * One pass into `target` (or the bound framebuffer when null, at `origin`): one draw per
