@@ -489,6 +489,7 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     }
     else if (skipEmpty)
     {
+      this->Coverage = 0.0; // nothing after the bright pass is computed
       return false;
     }
   }

@@ -9,10 +9,17 @@
 #   ctest.log        ctest -R '^Rendering' (every rendering test), and ctest.xml (JUnit)
 #   frametime.md     BloomPassFrameTime: every scene and preset at 1920x1080 and 3840x2160,
 #                    GPU timer and wall clock, median of $FRAMES (default 50) frames
-#   profile.md       the per-pass GPU profile of the default preset at 3840x2160, every scene
+#   profile.md       the per-pass GPU profile of the default preset at 3840x2160, every scene,
+#                    then of lit-spheres in the fast mode (QUALITY_FAST)
+#   quality.md       the exact pass and the fast mode for every preset at 3840x2160: GPU time
+#                    over the floor and error against each other and vtkImageBloom REFERENCE
+#                    (and quality.csv, for scripts/plot-gpu-quality.py)
+#   sparse.md        sparse scenes (0 %, 0.1 %, 1 %, 10 % bright) at 3840x2160: the full chain
+#                    against the content-aware one, exact and fast
 #   render.png       `vtk-bloom render` of lit-spheres at 3840x2160
 #   run.log          everything printed
 #
+# STEPS (default "tests frametime profile quality sparse render") picks the steps to run.
 # The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
 # CUDA image) and the pack at the absolute paths it was built with.
 set -uo pipefail
@@ -20,6 +27,8 @@ cd "${VTKBLOOM_GPU_ROOT:-$PWD}" || exit 1
 OUT=${OUT:-$(mktemp -d)}
 mkdir -p "$OUT"
 FRAMES=${FRAMES:-50}
+STEPS=${STEPS:-tests frametime profile quality sparse render}
+step() { [[ " $STEPS " == *" $1 "* ]]; }
 exec > >(tee "$OUT/run.log") 2>&1
 
 for f in .gl/*.deb; do dpkg -x "$f" /; done
@@ -48,6 +57,8 @@ missing=$(ldd "$bin"/* | grep 'not found' | sort -u)
   "$bin/BloomPassFrameTime" --info
 } | tee "$OUT/gpu.txt"
 
+status=0
+if step tests; then
 echo "== rendering tests"
 export CI=true # a test whose data is missing fails instead of skipping
 if command -v ctest >/dev/null 2>&1; then
@@ -57,12 +68,14 @@ if command -v ctest >/dev/null 2>&1; then
 else
   # No CMake there: the test executables themselves, in their CTest working directory.
   status=0
-  for t in TestBloomPass TestBloomPassHardCases; do
+  for t in TestBloomPass TestBloomPassHardCases TestBloomPassRegion; do
     (cd "$VTKBLOOM_GPU_BUILD/Testing" && timeout 600 "$bin/$t") 2>&1 | tee -a "$OUT/ctest.log"
     [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
   done
 fi
+fi
 
+if step frametime; then
 echo "== frame time"
 {
   echo "GPU timer (GL_TIME_ELAPSED) and wall clock (Render, glFinish), median of $FRAMES frames"
@@ -73,13 +86,35 @@ echo "== frame time"
     echo
   done
 } | tee "$OUT/frametime.md"
+fi
 
+if step profile; then
 echo "== per-pass profile"
-timeout 300 "$bin/BloomPassFrameTime" --profile all 3840 2160 "$FRAMES" default |
-  tee "$OUT/profile.md"
+{
+  timeout 300 "$bin/BloomPassFrameTime" --profile all 3840 2160 "$FRAMES" default
+  timeout 120 "$bin/BloomPassFrameTime" --fast --profile lit-spheres 3840 2160 "$FRAMES" default
+} | tee "$OUT/profile.md"
+fi
 
+if step quality; then
+echo "== exact and fast"
+timeout 400 "$bin/BloomPassFrameTime" --quality lit-spheres 3840 2160 "$FRAMES" \
+  "$OUT/quality.csv" | tee "$OUT/quality.md"
+fi
+
+if step sparse; then
+echo "== sparse scenes"
+{
+  timeout 200 "$bin/BloomPassFrameTime" --sparse 3840 2160 "$FRAMES"
+  echo
+  timeout 200 "$bin/BloomPassFrameTime" --sparse 3840 2160 "$FRAMES" fast
+} | tee "$OUT/sparse.md"
+fi
+
+if step render; then
 echo "== vtk-bloom render"
 timeout 120 "$bin/vtk-bloom" render --size 3840x2160 lit-spheres "$OUT/render.png" &&
   ls -la "$OUT/render.png"
+fi
 echo "gpu-run: ctest status $status"
 exit "$status"
