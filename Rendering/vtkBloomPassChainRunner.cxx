@@ -75,6 +75,7 @@ void vtkBloomPassChainRunner::ReleaseGraphicsResources(vtkWindow* w)
     program.second->ReleaseGraphicsResources(w);
   }
   this->Programs.clear();
+  this->ReleaseCompute();
   if (this->Query)
   {
     glDeleteQueries(1, &this->Query);

@@ -208,9 +208,17 @@ private:
   static Box Reach(const vtkBloomLinearOperator* x, const vtkBloomLinearOperator* y, const Box& in,
     int width, int height);
 
-  /// Reduce the bright level to the box of its non-zero samples (two or three small passes
-  /// and a read-back of a few kilobytes).
+  /**
+   * Reduce the bright level to the box of its non-zero samples: one compute dispatch where the
+   * context has OpenGL 4.3 (MeasureBrightRegionByCompute), else two or three small fragment
+   * passes; then a read-back of a few bytes (or kilobytes).
+   */
   Box MeasureBrightRegion();
+  bool MeasureBrightRegionByCompute(Box& box);
+  void ReleaseCompute();
+  unsigned int ReduceProgram = 0; ///< the compute program; 0: not made yet
+  unsigned int ReduceBuffer = 0;  ///< its four integers
+  int ComputeState = 0;           ///< 0 unknown, 1 available, -1 not (no GL 4.3 or it failed)
 
   /**
    * Before a pass that replaces `target`'s samples in `region` (null: all of width x height):

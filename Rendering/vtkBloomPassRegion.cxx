@@ -7,10 +7,12 @@
 #include "vtkBloomPassChainRunner.h"
 
 #include "vtkBloomLinearOperator.h"
+#include "vtkBloomPassReduceCS.h"
 #include "vtkBloomPassResources.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
@@ -125,6 +127,82 @@ void vtkBloomPassChainRunner::PrepareTarget(
 }
 
 //------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::MeasureBrightRegionByCompute(Box& box)
+{
+  if (this->ComputeState < 0)
+  {
+    return false;
+  }
+  if (this->ComputeState == 0)
+  {
+    this->ComputeState = -1;
+    GLint major = 0, minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    if (major * 10 + minor < 43 || !glDispatchCompute)
+    {
+      return false;
+    }
+    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+    const char* text = vtkBloomPassReduceCS;
+    glShaderSource(shader, 1, &text, nullptr);
+    glCompileShader(shader);
+    GLint compiled = 0, linked = 0;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
+    const GLuint program = glCreateProgram();
+    glAttachShader(program, shader);
+    glLinkProgram(program);
+    glGetProgramiv(program, GL_LINK_STATUS, &linked);
+    glDeleteShader(shader);
+    if (!compiled || !linked)
+    {
+      glDeleteProgram(program);
+      return false; // the fragment passes then
+    }
+    this->ReduceProgram = program;
+    glGenBuffers(1, &this->ReduceBuffer);
+    this->ComputeState = 1;
+  }
+  vtkBloomPassTarget& level = this->Resources.Levels[0];
+  const GLint init[4] = { 1 << 30, 1 << 30, -1, -1 };
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->ReduceBuffer);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, sizeof(init), init, GL_DYNAMIC_READ);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->ReduceBuffer);
+  glUseProgram(this->ReduceProgram);
+  level.Color->Activate();
+  glUniform1i(glGetUniformLocation(this->ReduceProgram, "source"), level.Color->GetTextureUnit());
+  glUniform2i(
+    glGetUniformLocation(this->ReduceProgram, "sourceSize"), level.Size[0], level.Size[1]);
+  glDispatchCompute((level.Size[0] + 15) / 16, (level.Size[1] + 15) / 16, 1);
+  glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  GLint result[4] = { 0, 0, -1, -1 };
+  glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(result), result);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  level.Color->Deactivate();
+  // VTK's shader cache must know that its last program is no longer bound.
+  this->Resources.Context->GetShaderCache()->ReleaseCurrentShader();
+  box = result[2] >= 0 ? Box{ result[0], result[2] + 1, result[1], result[3] + 1 } : Box();
+  ++this->Passes;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::ReleaseCompute()
+{
+  if (this->ReduceProgram)
+  {
+    glDeleteProgram(this->ReduceProgram);
+  }
+  if (this->ReduceBuffer)
+  {
+    glDeleteBuffers(1, &this->ReduceBuffer);
+  }
+  this->ReduceProgram = this->ReduceBuffer = 0;
+  this->ComputeState = 0;
+}
+
+//------------------------------------------------------------------------------
 vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::MeasureBrightRegion()
 {
   vtkBloomPassResources& res = this->Resources;
@@ -133,9 +211,18 @@ vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::MeasureBrightRegion()
   {
     this->BeginProfiledSpan();
   }
+  const double levelBytes = 16.0 * res.Levels[0].Size[0] * res.Levels[0].Size[1];
+  Box computed;
+  if (this->MeasureBrightRegionByCompute(computed))
+  {
+    if (this->Profiling)
+    {
+      this->EndProfiledSpan("reduce (compute)", 1, 1, levelBytes);
+    }
+    return computed;
+  }
   vtkBloomPassTarget* source = &res.Levels[0];
   int size[2] = { source->Size[0], source->Size[1] };
-  const double levelBytes = 16.0 * size[0] * size[1];
   double bytes = 0.0;
   // Steps until at most 32 x 32 boxes are left (at least one); sized first, as `source`
   // points into the list.

@@ -7,8 +7,9 @@
 #
 #   gpu.txt          the GPU, its driver and the OpenGL renderer the pass ran on
 #   ctest.log        ctest -R '^Rendering' (every rendering test), and ctest.xml (JUnit)
-#   frametime.md     BloomPassFrameTime: every scene and preset at 1920x1080 and 3840x2160,
-#                    GPU timer and wall clock, median of $FRAMES (default 50) frames
+#   frametime.md     BloomPassFrameTime: every scene and preset (or $PRESETS) at 1920x1080 and
+#                    3840x2160, GPU timer and wall clock, median of $FRAMES (default 50) frames;
+#                    then the default preset in the fast mode
 #   profile.md       the per-pass GPU profile of the default preset at 3840x2160, every scene,
 #                    then of lit-spheres in the fast mode (QUALITY_FAST)
 #   quality.md       the exact pass and the fast mode for every preset at 3840x2160: GPU time
@@ -16,10 +17,12 @@
 #                    (and quality.csv, for scripts/plot-gpu-quality.py)
 #   sparse.md        sparse scenes (0 %, 0.1 %, 1 %, 10 % bright) at 3840x2160: the full chain
 #                    against the content-aware one, exact and fast
+#   stages.md        ShaderStageThroughput: one full-screen pass as a fragment and as a compute
+#                    shader at 3840x2160
 #   render.png       `vtk-bloom render` of lit-spheres at 3840x2160
 #   run.log          everything printed
 #
-# STEPS (default "tests frametime profile quality sparse render") picks the steps to run.
+# STEPS (default "tests frametime profile quality sparse stages render") picks the steps.
 # The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
 # CUDA image) and the pack at the absolute paths it was built with.
 set -uo pipefail
@@ -27,7 +30,8 @@ cd "${VTKBLOOM_GPU_ROOT:-$PWD}" || exit 1
 OUT=${OUT:-$(mktemp -d)}
 mkdir -p "$OUT"
 FRAMES=${FRAMES:-50}
-STEPS=${STEPS:-tests frametime profile quality sparse render}
+STEPS=${STEPS:-tests frametime profile quality sparse stages render}
+PRESETS=${PRESETS:-all}
 step() { [[ " $STEPS " == *" $1 "* ]]; }
 exec > >(tee "$OUT/run.log") 2>&1
 
@@ -82,7 +86,14 @@ echo "== frame time"
   echo
   for size in "1920 1080" "3840 2160"; do
     # shellcheck disable=SC2086
-    timeout 300 "$bin/BloomPassFrameTime" all $size "$FRAMES" all
+    timeout 300 "$bin/BloomPassFrameTime" all $size "$FRAMES" "$PRESETS"
+    echo
+  done
+  echo "The fast mode (QUALITY_FAST), vtkImageBloom's defaults"
+  echo
+  for size in "1920 1080" "3840 2160"; do
+    # shellcheck disable=SC2086
+    timeout 300 "$bin/BloomPassFrameTime" --fast all $size "$FRAMES" default
     echo
   done
 } | tee "$OUT/frametime.md"
@@ -109,6 +120,11 @@ echo "== sparse scenes"
   echo
   timeout 200 "$bin/BloomPassFrameTime" --sparse 3840 2160 "$FRAMES" fast
 } | tee "$OUT/sparse.md"
+fi
+
+if step stages; then
+echo "== fragment and compute shaders"
+timeout 120 "$bin/ShaderStageThroughput" 3840 2160 "$FRAMES" | tee "$OUT/stages.md"
 fi
 
 if step render; then
