@@ -10,6 +10,7 @@
 //   BloomPassFrameTime --fast ...  as above, with vtkBloomPass::QUALITY_FAST
 //   BloomPassFrameTime --quality SCENE WIDTH HEIGHT FRAMES [CSV]
 //   BloomPassFrameTime --sparse WIDTH HEIGHT FRAMES [fast]
+//   BloomPassFrameTime --sync SCENE WIDTH HEIGHT FRAMES
 //
 // SCENE is a name of vtkBloomExampleSceneNames() or "all" (default lit-spheres); PRESET is
 // "scene" (the scene's own parameters, the default), "default" (vtkImageBloom's defaults), a
@@ -28,6 +29,11 @@
 // 1 % and 10 % of the window), vtkImageBloom's defaults, the full chain
 // (RestrictToBrightRegion off) against the content-aware one (on) frame by frame; also checks
 // on one frame that both give the same bits.
+//
+// --sync: the cost of the pass's one wait for the GPU (the bright region's read-back, or
+// SkipEmptyBloom's occlusion query): vtkImageBloom's defaults with the content-aware chain, with
+// the occlusion query only, and with neither (no wait: the CPU submits the whole frame ahead
+// of the GPU), GPU time and the CPU's time in Render().
 #include "vtkBloomFrameTimer.h"
 
 #include "vtkImageData.h"
@@ -289,6 +295,46 @@ bool QualityTable(const std::string& scene, int width, int height, int frames, c
   return true;
 }
 
+bool SyncTable(const std::string& scene, int width, int height, int frames)
+{
+  std::printf("%s, vtkImageBloom defaults, %dx%d: the pass's wait for the GPU\n\n| chain | "
+              "bloom over the floor GPU | Render() on the CPU | passes |\n|---|---|---|---|\n",
+    scene.c_str(), width, height);
+  const char* names[] = { "content-aware (reduction read back)",
+    "full, SkipEmptyBloom "
+    "(occlusion query read back)",
+    "full, no read-back (SkipEmptyBloom and RestrictToBrightRegion off)" };
+  for (int mode = 0; mode < 3; ++mode)
+  {
+    vtkBloomFrameTimer timer;
+    if (!timer.Setup(scene, width, height) || !timer.UsePreset("default"))
+    {
+      return false;
+    }
+    vtkImageBloom* p = timer.Bloom->GetParameters();
+    p->SetRestrictToBrightRegion(mode == 0);
+    p->SetSkipEmptyBloom(mode < 2);
+    std::vector<double> floorGPU, gpu, submit;
+    for (int f = -2; f < frames; ++f)
+    {
+      timer.Frame(vtkBloomFrameTimer::FLOAT_COPY);
+      const double floorMs = 1e3 * timer.LastGPUSeconds;
+      timer.Frame(vtkBloomFrameTimer::BLOOM);
+      if (f >= 0)
+      {
+        floorGPU.push_back(floorMs);
+        gpu.push_back(1e3 * timer.LastGPUSeconds);
+        submit.push_back(1e3 * timer.LastSubmitSeconds);
+      }
+    }
+    std::printf("| %s | %+.3f ms | %.3f ms | %d |\n", names[mode],
+      vtkBloomMedian(gpu) - vtkBloomMedian(floorGPU), vtkBloomMedian(submit),
+      timer.Bloom->GetNumberOfPasses());
+    std::fflush(stdout);
+  }
+  return true;
+}
+
 bool SparseTable(int width, int height, int frames, bool fast)
 {
   std::printf("sparse scenes, vtkImageBloom defaults%s, %dx%d: the full chain "
@@ -339,6 +385,10 @@ int main(int argc, char* argv[])
              argc > 6 ? argv[6] : nullptr)
       ? 0
       : 1;
+  }
+  if (argc > 5 && std::strcmp(argv[1], "--sync") == 0)
+  {
+    return SyncTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0 : 1;
   }
   if (argc > 4 && std::strcmp(argv[1], "--sparse") == 0)
   {

@@ -179,7 +179,7 @@ int main(int argc, char* argv[])
     }
     std::printf("| %d-tap horizontal filter | %.4f ms (%.0f GB/s) | %.4f ms (%.0f GB/s) | %.1f | "
                 "%.1f |\n",
-      taps, ms[0], 1e-3 * mb / ms[0], ms[1], 1e-3 * mb / ms[1], ms[0] / ms[1], mb);
+      taps, ms[0], mb / ms[0], ms[1], mb / ms[1], ms[0] / ms[1], mb);
     glDeleteProgram(fragment);
     glDeleteProgram(compute);
   }

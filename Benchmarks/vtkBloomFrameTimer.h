@@ -170,6 +170,8 @@ public:
     {
       glEndQuery(GL_TIME_ELAPSED);
     }
+    this->LastSubmitSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     this->Window->WaitForCompletion();
     const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -208,6 +210,9 @@ public:
   vtkNew<vtkRenderStepsPass> Steps;
   vtkNew<vtkFramebufferPass> FloatCopy;
   double LastGPUSeconds = std::numeric_limits<double>::quiet_NaN();
+  /// Wall-clock seconds of the last frame's Render() alone (before glFinish): the CPU's time
+  /// to submit it, and any wait for the GPU within it.
+  double LastSubmitSeconds = std::numeric_limits<double>::quiet_NaN();
 
 private:
   GLuint Query = 0; // GL_TIME_ELAPSED

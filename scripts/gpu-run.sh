@@ -17,12 +17,14 @@
 #                    (and quality.csv, for scripts/plot-gpu-quality.py)
 #   sparse.md        sparse scenes (0 %, 0.1 %, 1 %, 10 % bright) at 3840x2160: the full chain
 #                    against the content-aware one, exact and fast
+#   sync.md          the cost of the pass's one wait for the GPU (BloomPassFrameTime --sync)
 #   stages.md        ShaderStageThroughput: one full-screen pass as a fragment and as a compute
 #                    shader at 3840x2160
 #   render.png       `vtk-bloom render` of lit-spheres at 3840x2160
 #   run.log          everything printed
 #
-# STEPS (default "tests frametime profile quality sparse stages render") picks the steps.
+# STEPS (default "tests frametime profile quality sparse sync stages render") picks the
+# steps. At most 8 files come back from the device tool: pick fewer steps there.
 # The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
 # CUDA image) and the pack at the absolute paths it was built with.
 set -uo pipefail
@@ -30,7 +32,7 @@ cd "${VTKBLOOM_GPU_ROOT:-$PWD}" || exit 1
 OUT=${OUT:-$(mktemp -d)}
 mkdir -p "$OUT"
 FRAMES=${FRAMES:-50}
-STEPS=${STEPS:-tests frametime profile quality sparse stages render}
+STEPS=${STEPS:-tests frametime profile quality sparse sync stages render}
 PRESETS=${PRESETS:-all}
 step() { [[ " $STEPS " == *" $1 "* ]]; }
 exec > >(tee "$OUT/run.log") 2>&1
@@ -120,6 +122,11 @@ echo "== sparse scenes"
   echo
   timeout 200 "$bin/BloomPassFrameTime" --sparse 3840 2160 "$FRAMES" fast
 } | tee "$OUT/sparse.md"
+fi
+
+if step sync; then
+echo "== the wait for the GPU"
+timeout 120 "$bin/BloomPassFrameTime" --sync lit-spheres 3840 2160 "$FRAMES" | tee "$OUT/sync.md"
 fi
 
 if step stages; then
