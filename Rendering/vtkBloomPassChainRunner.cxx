@@ -450,14 +450,18 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
   bright.Y = c.SourceIsIdentity ? nullptr : &c.Source.Y;
   bright.Step = STEP_THRESHOLD;
   bright.ReadsSource = true;
-  // Restricted, the bright region's reduction also tells whether the bloom is empty.
+  // Restricted, the bright region's reduction also tells whether the bloom is empty. Either
+  // way the zero samples are not written (the level is cleared first): fewer writes.
   const bool query = skipEmpty && !restrict;
-  bright.DiscardZero = query;
+  bright.DiscardZero = skipEmpty;
   bright.Name = "bright";
   bright.Level = 0;
-  if (query)
+  if (bright.DiscardZero)
   {
     this->Clear(res.Levels[0]);
+  }
+  if (query)
+  {
     if (!this->Query)
     {
       glGenQueries(1, &this->Query);

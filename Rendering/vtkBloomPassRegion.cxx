@@ -175,6 +175,12 @@ bool vtkBloomPassChainRunner::MeasureBrightRegionByCompute(Box& box)
     glGetUniformLocation(this->ReduceProgram, "sourceSize"), level.Size[0], level.Size[1]);
   glDispatchCompute((level.Size[0] + 15) / 16, (level.Size[1] + 15) / 16, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  if (this->Profiling)
+  {
+    // The dispatch alone; the read-back's wait is no GPU work (BloomPassFrameTime --sync).
+    this->EndProfiledSpan("reduce (compute)", 1, 1,
+      16.0 * this->Resources.Levels[0].Size[0] * this->Resources.Levels[0].Size[1]);
+  }
   GLint result[4] = { 0, 0, -1, -1 };
   glGetBufferSubData(GL_SHADER_STORAGE_BUFFER, 0, sizeof(result), result);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
@@ -215,10 +221,6 @@ vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::MeasureBrightRegion()
   Box computed;
   if (this->MeasureBrightRegionByCompute(computed))
   {
-    if (this->Profiling)
-    {
-      this->EndProfiledSpan("reduce (compute)", 1, 1, levelBytes);
-    }
     return computed;
   }
   vtkBloomPassTarget* source = &res.Levels[0];
