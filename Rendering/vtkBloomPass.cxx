@@ -51,6 +51,7 @@ public:
   {
     std::copy(this->Runner.BrightRegion, this->Runner.BrightRegion + 4, self->LastBrightRegion);
     self->LastChainCoverage = this->Runner.Coverage;
+    self->LastComputePasses = this->Runner.ComputePasses;
   }
 
   void ReleaseAll(vtkWindow* w)
@@ -79,6 +80,8 @@ bool vtkBloomPass::vtkInternals::Prepare(
   }
   this->Runner.Passes = 0;
   this->Runner.Fast = self->Quality == QUALITY_FAST;
+  this->Runner.UseCompute = self->UseComputeShaders;
+  this->Runner.ComputePasses = 0;
   this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
   this->Runner.Profiling = self->ProfilePasses;
   this->Runner.Profile.clear();
@@ -152,6 +155,8 @@ vtkBloomPass::vtkBloomPass()
   , FloatPrecision(FLOAT16)
   , EmissionSource(EMISSION_SCENE)
   , Quality(QUALITY_EXACT)
+  , UseComputeShaders(true)
+  , LastComputePasses(0)
   , CaptureResult(false)
   , LastBrightRegion{ 0, 0, 0, 0 }
   , LastChainCoverage(1.0)
@@ -542,6 +547,8 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "Emitters: " << this->Emitters->GetNumberOfItems() << "\n";
   os << indent << "Quality: " << (this->Quality == QUALITY_FAST ? "Fast" : "Exact") << "\n";
+  os << indent << "UseComputeShaders: " << (this->UseComputeShaders ? "On" : "Off") << "\n";
+  os << indent << "LastComputePasses: " << this->LastComputePasses << "\n";
   os << indent << "CaptureResult: " << (this->CaptureResult ? "On" : "Off") << "\n";
   os << indent << "NumberOfPasses: " << this->NumberOfPasses << "\n";
   os << indent << "LastBloomSkipped: " << (this->LastBloomSkipped ? "On" : "Off") << "\n";

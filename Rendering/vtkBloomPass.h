@@ -52,6 +52,10 @@
  * pass is measured per preset in docs/gpu.md (vtkImageBloom's ExecutionMode FAST, by contrast,
  * is exact to float rounding: the two names share only their intent).
  *
+ * Compute shaders. Where the context has OpenGL 4.3, the chain's passes into its own targets
+ * run as compute shaders compiled from the same shader file (UseComputeShaders, default on);
+ * the composite into the framebuffer stays a fragment pass.
+ *
  * With CaptureResult on, the bloomed image is also kept in a float texture after each render,
  * and ReadSceneImage() / ReadResultImage() return the un-bloomed float render and the bloomed
  * result as float RGBA vtkImageData (origin 0, spacing 1, row 0 at the bottom) for tests,
@@ -129,6 +133,22 @@ public:
   void SetQualityToExact() { this->SetQuality(QUALITY_EXACT); }
   void SetQualityToFast() { this->SetQuality(QUALITY_FAST); }
   ///@}
+
+  ///@{
+  /**
+   * Run the chain's passes into its own targets, and the bright region's reduction, as compute
+   * shaders where the context has OpenGL 4.3 (default on); off, or without OpenGL 4.3, they are
+   * fragment passes. The composite is always a fragment pass. Both compute the same sums: the
+   * results agree to float rounding (tested). On an NVIDIA H100, which shades fragments on a
+   * few of its multiprocessors only, the compute passes are many times faster (docs/gpu.md).
+   */
+  vtkSetMacro(UseComputeShaders, bool);
+  vtkGetMacro(UseComputeShaders, bool);
+  vtkBooleanMacro(UseComputeShaders, bool);
+  ///@}
+
+  /// The passes of the last evaluation that ran as compute shaders (of GetNumberOfPasses()).
+  vtkGetMacro(LastComputePasses, int);
 
   ///@{
   /// What may bloom: the whole scene (default) or only the emitter props.
@@ -259,6 +279,8 @@ protected:
   int FloatPrecision;
   int EmissionSource;
   int Quality;
+  bool UseComputeShaders;
+  int LastComputePasses;
   bool CaptureResult;
   int LastBrightRegion[4];
   double LastChainCoverage;

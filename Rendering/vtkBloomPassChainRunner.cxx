@@ -254,51 +254,52 @@ void vtkBloomPassChainRunner::Pass(
   {
     draws.push_back({ rect, OP_IDENTITY, OP_IDENTITY, true });
   }
+  const bool compute = this->Computes(target, spec);
   for (const Draw& draw : draws)
   {
     PassSpec variant = spec;
     variant.ZeroBloom = draw.Zero;
-    vtkOpenGLQuadHelper* quad = this->Program(this->Variant(variant, draw.XMode, draw.YMode));
-    if (!quad)
+    const std::string text = this->Variant(variant, draw.XMode, draw.YMode);
+    Uniforms u;
+    vtkOpenGLQuadHelper* quad = nullptr;
+    if (compute)
     {
-      continue;
+      ComputeProgram* program = this->Compute(text, spec.Blend);
+      if (!program)
+      {
+        continue;
+      }
+      glUseProgram(program->Id);
+      u.Raw = program->Id;
+      u.Locations = &program->Locations;
     }
-    vtkShaderProgram* program = quad->Program;
-    auto seti = [program](const char* name, int value)
+    else
     {
-      if (program->IsUniformUsed(name))
+      quad = this->Program(text);
+      if (!quad)
       {
-        program->SetUniformi(name, value);
+        continue;
       }
-    };
-    auto setf = [program](const char* name, double value)
-    {
-      if (program->IsUniformUsed(name))
-      {
-        program->SetUniformf(name, static_cast<float>(value));
-      }
-    };
+      u.Program = quad->Program;
+    }
     for (size_t t = 0; t < sizeof(textures) / sizeof(textures[0]); ++t)
     {
       if (textures[t])
       {
-        seti(samplers[t], textures[t]->GetTextureUnit());
+        u.Int(samplers[t], textures[t]->GetTextureUnit());
       }
     }
     const int offset[2] = { draw.Rect.X0, draw.Rect.Y0 };
     const float size[2] = { static_cast<float>(draw.Rect.X1 - draw.Rect.X0),
       static_cast<float>(draw.Rect.Y1 - draw.Rect.Y0) };
-    program->SetUniform2i("regionOffset", offset);
-    program->SetUniform2f("regionSize", size);
-    setf("weight", spec.Weight);
-    setf("zeroBloom", 0.0);
-    seti("xWidth", spec.X ? spec.X->Width : 0);
-    seti("yWidth", spec.Y ? spec.Y->Width : 0);
-    if (program->IsUniformUsed("sourceTexel"))
-    {
-      const float texel[2] = { 1.0f / spec.Source->GetWidth(), 1.0f / spec.Source->GetHeight() };
-      program->SetUniform2f("sourceTexel", texel);
-    }
+    u.Int2("regionOffset", offset);
+    u.Float2("regionSize", size);
+    u.Float("weight", spec.Weight);
+    u.Float("zeroBloom", 0.0);
+    u.Int("xWidth", spec.X ? spec.X->Width : 0);
+    u.Int("yWidth", spec.Y ? spec.Y->Width : 0);
+    const float texel[2] = { 1.0f / spec.Source->GetWidth(), 1.0f / spec.Source->GetHeight() };
+    u.Float2("sourceTexel", texel);
     const vtkBloomLinearOperator* ops[2] = { spec.X, spec.Y };
     const int modes[2] = { draw.XMode, draw.YMode };
     const char* names[2][3] = { { "xInterior", "xWeights", "xOffsets" },
@@ -311,23 +312,34 @@ void vtkBloomPassChainRunner::Pass(
       }
       const Interior& in = this->InteriorOf(*ops[axis]);
       const int values[3] = { in.Begin, in.First[0], in.First[1] };
-      program->SetUniform1iv(names[axis][0], 3, values);
+      u.Ints(names[axis][0], 3, values);
       if (this->Linear(spec, ops[axis]))
       {
         const int n = static_cast<int>(in.PairWeights.size());
-        program->SetUniform1fv(names[axis][1], n, in.PairWeights.data());
-        program->SetUniform1fv(names[axis][2], n, in.PairOffsets.data());
+        u.Floats(names[axis][1], n, in.PairWeights.data());
+        u.Floats(names[axis][2], n, in.PairOffsets.data());
       }
       else
       {
-        program->SetUniform1fv(
-          names[axis][1], static_cast<int>(in.Weights.size()), in.Weights.data());
+        u.Floats(names[axis][1], static_cast<int>(in.Weights.size()), in.Weights.data());
       }
     }
-    this->SetStepUniforms(program, spec.Step);
-    state->vtkglViewport(origin[0] + draw.Rect.X0, origin[1] + draw.Rect.Y0,
-      draw.Rect.X1 - draw.Rect.X0, draw.Rect.Y1 - draw.Rect.Y0);
-    quad->Render();
+    this->SetStepUniforms(u, spec.Step);
+    if (compute)
+    {
+      this->Dispatch(*target, spec.Blend, draw.Rect);
+    }
+    else
+    {
+      state->vtkglViewport(origin[0] + draw.Rect.X0, origin[1] + draw.Rect.Y0,
+        draw.Rect.X1 - draw.Rect.X0, draw.Rect.Y1 - draw.Rect.Y0);
+      quad->Render();
+    }
+  }
+  if (compute)
+  {
+    this->EndCompute();
+    ++this->ComputePasses;
   }
   for (vtkTextureObject* texture : textures)
   {
@@ -344,25 +356,11 @@ void vtkBloomPassChainRunner::Pass(
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassChainRunner::SetStepUniforms(vtkShaderProgram* program, int step)
+void vtkBloomPassChainRunner::SetStepUniforms(Uniforms& u, int step)
 {
   const vtkBloomChain& c = this->Resources.Chain;
-  auto setf = [program](const char* name, double value)
-  {
-    if (program->IsUniformUsed(name))
-    {
-      program->SetUniformf(name, static_cast<float>(value));
-    }
-  };
-  auto set3f = [program](const char* name, const double values[3])
-  {
-    const float v[3] = { static_cast<float>(values[0]), static_cast<float>(values[1]),
-      static_cast<float>(values[2]) };
-    if (program->IsUniformUsed(name))
-    {
-      program->SetUniform3f(name, v);
-    }
-  };
+  auto setf = [&u](const char* name, double value) { u.Float(name, value); };
+  auto set3f = [&u](const char* name, const double values[3]) { u.Float3(name, values); };
   if (step == STEP_THRESHOLD || step == STEP_KARIS_TERM)
   {
     const double luma[3] = { vtkBloomKernels::LuminanceR, vtkBloomKernels::LuminanceG,
@@ -468,7 +466,9 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     }
     glBeginQuery(GL_SAMPLES_PASSED, this->Query);
   }
+  this->CountingSamples = query;
   this->Pass(&res.Levels[0], zero, bright);
+  this->CountingSamples = false;
   if (query)
   {
     glEndQuery(GL_SAMPLES_PASSED);

@@ -58,6 +58,14 @@ public:
   bool Restrict = false;
 
   /**
+   * Run the chain's passes into its targets as compute shaders where the context has OpenGL
+   * 4.3 (vtkBloomPassCompute.cxx; vtkBloomPass::UseComputeShaders), and the bright region's
+   * reduction as one dispatch; else, and for the composite, fragment passes.
+   */
+  bool UseCompute = true;
+  int ComputePasses = 0; ///< passes drawn as compute since it was last set to 0
+
+  /**
    * The last Run()'s bright region (the bounding box of the bright pass's non-zero samples, in
    * level-0 samples, x0 x1 y0 y1 with x1, y1 past the end; all 0 when empty or not measured)
    * and the samples its passes computed over those a full evaluation computes (1 when not
@@ -218,7 +226,7 @@ private:
   void ReleaseCompute();
   unsigned int ReduceProgram = 0; ///< the compute program; 0: not made yet
   unsigned int ReduceBuffer = 0;  ///< its four integers
-  int ComputeState = 0;           ///< 0 unknown, 1 available, -1 not (no GL 4.3 or it failed)
+  int ComputeState = 0;           ///< 0 not made, 1 made, -1 it failed
 
   /**
    * Before a pass that replaces `target`'s samples in `region` (null: all of width x height):
@@ -250,7 +258,53 @@ private:
    * combination of x and y segments, each with the program of its evaluation modes.
    */
   void Pass(vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec);
-  void SetStepUniforms(vtkShaderProgram* program, int step);
+  /**
+   * Sets one program's uniforms by name (unused ones are skipped): a VTK program (the fragment
+   * passes) or a compute program of plain OpenGL (VTK 9.1's shader classes have no compute
+   * stage), whose locations it caches.
+   */
+  struct Uniforms
+  {
+    vtkShaderProgram* Program = nullptr;
+    unsigned int Raw = 0;
+    std::map<std::string, int>* Locations = nullptr;
+
+    int Location(const char* name);
+    void Int(const char* name, int value);
+    void Float(const char* name, double value);
+    void Int2(const char* name, const int values[2]);
+    void Float2(const char* name, const float values[2]);
+    void Float3(const char* name, const double values[3]);
+    void Ints(const char* name, int count, const int* values);
+    void Floats(const char* name, int count, const float* values);
+  };
+  void SetStepUniforms(Uniforms& uniforms, int step);
+
+  // The compute passes (vtkBloomPassCompute.cxx).
+  struct ComputeProgram
+  {
+    unsigned int Id = 0; ///< 0: it did not build
+    std::map<std::string, int> Locations;
+  };
+  std::map<std::string, ComputeProgram> ComputePrograms;
+
+  /// Whether the context runs compute shaders (OpenGL 4.3), asked once.
+  bool ComputeSupported();
+  int ComputeSupport = 0; ///< 0 not asked, 1 yes, -1 no
+
+  /// Whether `spec` into `target` runs as a compute pass.
+  bool Computes(vtkBloomPassTarget* target, const PassSpec& spec);
+
+  /// The compute program of one variant (vtkBloomPassFS.glsl with COMPUTE), made on first use.
+  ComputeProgram* Compute(const std::string& variant, bool blend);
+
+  /// Bind `target` as image unit 0 and dispatch one invocation per sample of `rect`.
+  void Dispatch(vtkBloomPassTarget& target, bool blend, const Box& rect);
+
+  /// After a pass's dispatches: their writes visible to what reads the target next.
+  void EndCompute();
+
+  bool CountingSamples = false; ///< the occlusion query is open: fragment passes only
   void Clear(vtkBloomPassTarget& target);
 
   vtkObject* Owner;

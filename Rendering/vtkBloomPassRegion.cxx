@@ -129,20 +129,13 @@ void vtkBloomPassChainRunner::PrepareTarget(
 //------------------------------------------------------------------------------
 bool vtkBloomPassChainRunner::MeasureBrightRegionByCompute(Box& box)
 {
-  if (this->ComputeState < 0)
+  if (!this->UseCompute || this->ComputeState < 0 || !this->ComputeSupported())
   {
     return false;
   }
   if (this->ComputeState == 0)
   {
     this->ComputeState = -1;
-    GLint major = 0, minor = 0;
-    glGetIntegerv(GL_MAJOR_VERSION, &major);
-    glGetIntegerv(GL_MINOR_VERSION, &minor);
-    if (major * 10 + minor < 43 || !glDispatchCompute)
-    {
-      return false;
-    }
     const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
     const char* text = vtkBloomPassReduceCS;
     glShaderSource(shader, 1, &text, nullptr);
@@ -190,6 +183,7 @@ bool vtkBloomPassChainRunner::MeasureBrightRegionByCompute(Box& box)
   this->Resources.Context->GetShaderCache()->ReleaseCurrentShader();
   box = result[2] >= 0 ? Box{ result[0], result[2] + 1, result[1], result[3] + 1 } : Box();
   ++this->Passes;
+  ++this->ComputePasses;
   return true;
 }
 
@@ -206,6 +200,15 @@ void vtkBloomPassChainRunner::ReleaseCompute()
   }
   this->ReduceProgram = this->ReduceBuffer = 0;
   this->ComputeState = 0;
+  for (auto& program : this->ComputePrograms)
+  {
+    if (program.second.Id)
+    {
+      glDeleteProgram(program.second.Id);
+    }
+  }
+  this->ComputePrograms.clear();
+  this->ComputeSupport = 0;
 }
 
 //------------------------------------------------------------------------------

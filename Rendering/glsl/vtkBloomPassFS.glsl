@@ -36,11 +36,21 @@
   ZERO_BLOOM: the composite where the content-aware chain knows the bloom is zero; the bloom
   is a uniform zero (not a constant, which the compiler could fold), so the result is the
   full composite's bit for bit.
+
+  COMPUTE: the same pass as a compute shader (OpenGL 4.3; vtkBloomPass::UseComputeShaders),
+  one invocation per output sample of the draw's region, written with imageStore into the
+  target bound as image unit 0 (IMAGE_FORMAT); BLEND adds to what the target holds, as the
+  fragment pass's GL_ONE, GL_ONE blending does.
 =========================================================================*/
 
 //VTK::Output::Dec
 
+#ifdef COMPUTE
+layout(local_size_x = 16, local_size_y = 16) in;
+layout(IMAGE_FORMAT, binding = 0) uniform image2D target;
+#else
 in vec2 texCoord;
+#endif
 
 //BLOOM::Constants
 
@@ -307,7 +317,15 @@ vec4 finite(vec4 v)
 void main()
 {
   // The output sample this fragment computes; texCoord spans the draw's region.
+#ifdef COMPUTE
+  if (any(greaterThanEqual(vec2(gl_GlobalInvocationID.xy), regionSize)))
+  {
+    return;
+  }
+  ivec2 p = regionOffset + ivec2(gl_GlobalInvocationID.xy);
+#else
   ivec2 p = regionOffset + ivec2(floor(texCoord * regionSize));
+#endif
 
 #if ZERO_BLOOM
   vec4 sum = vec4(zeroBloom);
@@ -380,8 +398,19 @@ void main()
   // The target was cleared to zero; an occlusion query counts the samples that are not.
   if (all(equal(result, vec4(0.0))))
   {
+#ifdef COMPUTE
+    return;
+#else
     discard;
+#endif
   }
 #endif
+#ifdef COMPUTE
+#if BLEND
+  result += imageLoad(target, p);
+#endif
+  imageStore(target, p, result);
+#else
   gl_FragData[0] = result;
+#endif
 }

@@ -150,44 +150,49 @@ TEST(RenderingBloomPassRegion, RestrictedChainIsBitIdenticalToTheFullChain)
       {
         for (const int quality : { vtkBloomPass::QUALITY_EXACT, vtkBloomPass::QUALITY_FAST })
         {
-          const std::string what = std::string(c.Name) + ", " + preset + ", float" +
-            std::to_string(precision) + (quality ? ", fast" : ", exact");
-          Gpu gpu;
-          UsePreset(gpu.Pass, preset);
-          gpu.Pass->SetFloatPrecision(precision);
-          gpu.Pass->SetQuality(quality);
-          vtkImageBloom* p = gpu.Pass->GetParameters();
-          p->SetSkipEmptyBloom(false);
-          p->SetRestrictToBrightRegion(false);
-          vtkSmartPointer<vtkImageData> full = gpu.Apply(input);
-          EXPECT_EQ(gpu.Pass->GetLastChainCoverage(), 1.0) << what;
-          p->SetRestrictToBrightRegion(true);
-          vtkSmartPointer<vtkImageData> restricted = gpu.Apply(input);
-          EXPECT_TRUE(SameBits(full, restricted)) << what;
-          const double coverage = gpu.Pass->GetLastChainCoverage();
-          EXPECT_LE(coverage, 1.0) << what;
-          int region[4];
-          gpu.Pass->GetLastBrightRegion(region);
-          if (p->GetThresholdMode() == vtkImageBloomThreshold::NONE)
+          for (const bool compute : { true, false })
           {
-            // mip-atlas: every sample is bright.
-            EXPECT_EQ(coverage, 1.0) << what;
-          }
-          else if (c.Rects.empty())
-          {
-            EXPECT_EQ(coverage, 0.0) << what;
-            EXPECT_EQ(region[1] - region[0], 0) << what;
-          }
-          else
-          {
-            // The bloom must reach past the spots, or the comparison would be trivial.
-            EXPECT_GT(ColourRelativeL2(full, input), 1e-3) << what;
-            EXPECT_GT(coverage, 0.0) << what;
-          }
-          if (c.Rects.size() == 1 && preset == "default")
-          {
-            // Five levels from 150 x 103 down: a small spot leaves most of the chain out.
-            EXPECT_LT(coverage, 0.5) << what;
+            const std::string what = std::string(c.Name) + ", " + preset + ", float" +
+              std::to_string(precision) + (quality ? ", fast" : ", exact") +
+              (compute ? ", compute" : ", fragment");
+            Gpu gpu;
+            UsePreset(gpu.Pass, preset);
+            gpu.Pass->SetUseComputeShaders(compute);
+            gpu.Pass->SetFloatPrecision(precision);
+            gpu.Pass->SetQuality(quality);
+            vtkImageBloom* p = gpu.Pass->GetParameters();
+            p->SetSkipEmptyBloom(false);
+            p->SetRestrictToBrightRegion(false);
+            vtkSmartPointer<vtkImageData> full = gpu.Apply(input);
+            EXPECT_EQ(gpu.Pass->GetLastChainCoverage(), 1.0) << what;
+            p->SetRestrictToBrightRegion(true);
+            vtkSmartPointer<vtkImageData> restricted = gpu.Apply(input);
+            EXPECT_TRUE(SameBits(full, restricted)) << what;
+            const double coverage = gpu.Pass->GetLastChainCoverage();
+            EXPECT_LE(coverage, 1.0) << what;
+            int region[4];
+            gpu.Pass->GetLastBrightRegion(region);
+            if (p->GetThresholdMode() == vtkImageBloomThreshold::NONE)
+            {
+              // mip-atlas: every sample is bright.
+              EXPECT_EQ(coverage, 1.0) << what;
+            }
+            else if (c.Rects.empty())
+            {
+              EXPECT_EQ(coverage, 0.0) << what;
+              EXPECT_EQ(region[1] - region[0], 0) << what;
+            }
+            else
+            {
+              // The bloom must reach past the spots, or the comparison would be trivial.
+              EXPECT_GT(ColourRelativeL2(full, input), 1e-3) << what;
+              EXPECT_GT(coverage, 0.0) << what;
+            }
+            if (c.Rects.size() == 1 && preset == "default")
+            {
+              // Five levels from 150 x 103 down: a small spot leaves most of the chain out.
+              EXPECT_LT(coverage, 0.5) << what;
+            }
           }
         }
       }
@@ -270,5 +275,42 @@ TEST(RenderingBloomPassFast, ApproximatesTheExactPassForEveryPreset)
     EXPECT_GT(error, 0.0) << preset;
     EXPECT_LE(error, 2e-2) << preset;
     EXPECT_LE(gpu.Pass->GetNumberOfPasses(), exactPasses) << preset;
+  }
+}
+
+//------------------------------------------------------------------------------
+// The chain as compute shaders and as fragment passes (UseComputeShaders): the same sums, so
+// the results agree to float rounding, for every preset and both qualities; and where the
+// context has OpenGL 4.3 the compute passes do run.
+TEST(RenderingBloomPassCompute, ComputeAndFragmentPassesAgree)
+{
+  vtkSmartPointer<vtkImageData> input =
+    SparseImage(301, 207, { { 100, 160, 60, 90 }, { 20, 24, 150, 170 }, { 250, 251, 10, 11 } });
+  for (const std::string& preset : Presets())
+  {
+    for (const int quality : { vtkBloomPass::QUALITY_EXACT, vtkBloomPass::QUALITY_FAST })
+    {
+      const std::string what = preset + (quality ? ", fast" : ", exact");
+      Gpu gpu;
+      UsePreset(gpu.Pass, preset);
+      gpu.Pass->SetFloatPrecisionTo32Bit();
+      gpu.Pass->SetQuality(quality);
+      gpu.Pass->UseComputeShadersOff();
+      vtkSmartPointer<vtkImageData> fragment = gpu.Apply(input);
+      EXPECT_EQ(gpu.Pass->GetLastComputePasses(), 0) << what;
+      gpu.Pass->UseComputeShadersOn();
+      vtkSmartPointer<vtkImageData> compute = gpu.Apply(input);
+      GLint major = 0, minor = 0;
+      glGetIntegerv(GL_MAJOR_VERSION, &major);
+      glGetIntegerv(GL_MINOR_VERSION, &minor);
+      if (major * 10 + minor >= 43)
+      {
+        // Every pass but the bright pass (under the occlusion query with the content-aware
+        // chain off; here it is on) and the composite.
+        EXPECT_GE(gpu.Pass->GetLastComputePasses(), gpu.Pass->GetNumberOfPasses() - 1) << what;
+      }
+      EXPECT_LE(ColourRelativeL2(compute, fragment), 1e-6) << what;
+      EXPECT_GT(ColourRelativeL2(fragment, input), 1e-3) << what;
+    }
   }
 }
