@@ -280,7 +280,9 @@ TEST(RenderingBloomPassFast, ApproximatesTheExactPassForEveryPreset)
 
 //------------------------------------------------------------------------------
 // The chain as compute shaders and as fragment passes (UseComputeShaders): the same sums, so
-// the results agree to float rounding, for every preset and both qualities; and where the
+// the exact pass agrees to float rounding, for every preset; the fast mode within its own
+// error (on NVIDIA its half-float stores and bilinear taps round differently in the two
+// stages: 1.4e-4 to 5.3e-4 relative L2, against 1.7e-3 from the exact pass); and where the
 // context has OpenGL 4.3 the compute passes do run.
 TEST(RenderingBloomPassCompute, ComputeAndFragmentPassesAgree)
 {
@@ -309,7 +311,7 @@ TEST(RenderingBloomPassCompute, ComputeAndFragmentPassesAgree)
         // chain off; here it is on) and the composite.
         EXPECT_GE(gpu.Pass->GetLastComputePasses(), gpu.Pass->GetNumberOfPasses() - 1) << what;
       }
-      EXPECT_LE(ColourRelativeL2(compute, fragment), 1e-6) << what;
+      EXPECT_LE(ColourRelativeL2(compute, fragment), quality ? 2e-3 : 1e-6) << what;
       EXPECT_GT(ColourRelativeL2(fragment, input), 1e-3) << what;
     }
   }
