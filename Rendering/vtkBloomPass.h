@@ -40,8 +40,10 @@
  * occlusion query), and every later pass covers only the box of samples its output can be
  * non-zero in, found from its operators' bands; the composite adds no bloom outside the last
  * box. The output is the same bit for bit as with it off (tested): when few pixels are bright,
- * most of the chain is not computed. GetLastBrightRegion() and GetLastChainCoverage() report
- * what the last render computed.
+ * most of the chain is not computed. The read-back makes the CPU wait for the GPU; while the
+ * region covers a quarter of the chain or more, it is measured only every 8th render, and the
+ * renders in between run the full chain with no read-back (and no occlusion query).
+ * GetLastBrightRegion() and GetLastChainCoverage() report what the last render computed.
  *
  * Quality. QUALITY_EXACT (the default) is the chain above, to float rounding. QUALITY_FAST is
  * an opt-in approximation for interactive use: the chain's levels are half floats read through
@@ -228,7 +230,8 @@ public:
    * The last evaluation's bright region, with RestrictToBrightRegion on: the bounding box of
    * the bright pass's non-zero samples in samples of the first pyramid level, as x0 x1 y0 y1
    * (x1 and y1 past the end). All zero when nothing was bright, when the region was not
-   * measured (RestrictToBrightRegion off) or when the bloom was skipped otherwise.
+   * measured (RestrictToBrightRegion off, or a render between two measurements of a region that
+   * covered much of the chain) or when the bloom was skipped otherwise.
    */
   vtkGetVector4Macro(LastBrightRegion, int);
 

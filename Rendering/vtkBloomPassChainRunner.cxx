@@ -429,7 +429,16 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     }
   }
   const int zero[2] = { 0, 0 };
-  const bool restrict = this->Restrict;
+  // The region costs a wait for the GPU (its read-back), which a chain of compute passes does
+  // not hide. While the region keeps covering much of the chain, measure it only every
+  // ProbeInterval frames and run the full chain in between, with no read-back at all: the
+  // output is the same either way.
+  bool restrict = this->Restrict;
+  if (restrict && this->FramesUntilProbe > 0)
+  {
+    --this->FramesUntilProbe;
+    restrict = false;
+  }
   this->CompositeRestricted = false;
   this->ComputedSamples = this->FullSamples = 0.0;
   this->Coverage = 1.0;
@@ -450,7 +459,7 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
   bright.ReadsSource = true;
   // Restricted, the bright region's reduction also tells whether the bloom is empty. Either
   // way the zero samples are not written (the level is cleared first): fewer writes.
-  const bool query = skipEmpty && !restrict;
+  const bool query = skipEmpty && !this->Restrict;
   bright.DiscardZero = skipEmpty;
   bright.Name = "bright";
   bright.Level = 0;
@@ -640,7 +649,7 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     {
       this->Clear(res.Full);
     }
-    this->Coverage = this->FullSamples > 0.0 ? this->ComputedSamples / this->FullSamples : 1.0;
+    this->EndCoverage(restrict);
     return true;
   }
   accumBox[last] = blurBox[last];
@@ -692,8 +701,18 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
   this->CompositeRegion =
     c.FinalIsIdentity ? accumBox[0] : Reach(&c.Final.X, &c.Final.Y, accumBox[0], c.Width, c.Height);
   this->CompositeRestricted = restrict;
-  this->Coverage = this->FullSamples > 0.0 ? this->ComputedSamples / this->FullSamples : 1.0;
+  this->EndCoverage(restrict);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::EndCoverage(bool measured)
+{
+  this->Coverage = this->FullSamples > 0.0 ? this->ComputedSamples / this->FullSamples : 1.0;
+  if (measured && this->Coverage >= DenseCoverage)
+  {
+    this->FramesUntilProbe = ProbeInterval - 1;
+  }
 }
 
 //------------------------------------------------------------------------------

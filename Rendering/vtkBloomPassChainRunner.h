@@ -234,6 +234,15 @@ private:
    */
   void PrepareTarget(vtkBloomPassTarget& target, const Box* region, int width, int height);
 
+  /**
+   * Coverage of the last evaluation; when it was measured and at least DenseCoverage, the
+   * next ProbeInterval - 1 evaluations run the full chain without measuring the region.
+   */
+  void EndCoverage(bool measured);
+  static constexpr double DenseCoverage = 0.25;
+  static constexpr int ProbeInterval = 8;
+  int FramesUntilProbe = 0;
+
   /// The region of the bloom term within the composite's output; outside it the bloom is zero.
   Box CompositeRegion;
   bool CompositeRestricted = false;

@@ -316,3 +316,35 @@ TEST(RenderingBloomPassCompute, ComputeAndFragmentPassesAgree)
     }
   }
 }
+
+//------------------------------------------------------------------------------
+// A region that covers most of the chain is measured every 8th render only; the renders in
+// between run the full chain with no read-back, and every render gives the same bits.
+TEST(RenderingBloomPassRegion, DenseRegionIsMeasuredEveryEighthRender)
+{
+  // A bright half: the default preset's region then covers well over a quarter of the chain.
+  vtkSmartPointer<vtkImageData> input = SparseImage(160, 96, { { 0, 80, 0, 96 } });
+  Gpu gpu;
+  vtkSmartPointer<vtkImageData> first;
+  for (int render = 0; render < 10; ++render)
+  {
+    vtkSmartPointer<vtkImageData> output = gpu.Apply(input);
+    int region[4];
+    gpu.Pass->GetLastBrightRegion(region);
+    const bool measured = region[1] > region[0];
+    EXPECT_EQ(measured, render % 8 == 0) << "render " << render;
+    if (measured)
+    {
+      EXPECT_GE(gpu.Pass->GetLastChainCoverage(), 0.25) << "render " << render;
+    }
+    else
+    {
+      EXPECT_EQ(gpu.Pass->GetLastChainCoverage(), 1.0) << "render " << render;
+    }
+    if (!first)
+    {
+      first = output;
+    }
+    EXPECT_TRUE(SameBits(first, output)) << "render " << render;
+  }
+}
