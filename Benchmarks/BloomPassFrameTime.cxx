@@ -314,18 +314,25 @@ bool SyncTable(const std::string& scene, int width, int height, int frames)
     vtkImageBloom* p = timer.Bloom->GetParameters();
     p->SetRestrictToBrightRegion(mode == 0);
     p->SetSkipEmptyBloom(mode < 2);
-    std::vector<double> floorGPU, gpu, submit;
+    std::vector<double> floorGPU, floorSubmit, gpu, submit;
     for (int f = -2; f < frames; ++f)
     {
       timer.Frame(vtkBloomFrameTimer::FLOAT_COPY);
       const double floorMs = 1e3 * timer.LastGPUSeconds;
+      const double floorSubmitMs = 1e3 * timer.LastSubmitSeconds;
       timer.Frame(vtkBloomFrameTimer::BLOOM);
       if (f >= 0)
       {
         floorGPU.push_back(floorMs);
+        floorSubmit.push_back(floorSubmitMs);
         gpu.push_back(1e3 * timer.LastGPUSeconds);
         submit.push_back(1e3 * timer.LastSubmitSeconds);
       }
+    }
+    if (mode == 0)
+    {
+      std::printf("| the floor itself (float target + copy): GPU %.3f ms | | %.3f ms | |\n",
+        vtkBloomMedian(floorGPU), vtkBloomMedian(floorSubmit));
     }
     std::printf("| %s | %+.3f ms | %.3f ms | %d |\n", names[mode],
       vtkBloomMedian(gpu) - vtkBloomMedian(floorGPU), vtkBloomMedian(submit),
