@@ -8,7 +8,11 @@
  * segments: the operator's translation-invariant interior from uniform weights (OP_PERIODIC),
  * its borders from the operator's rows uploaded as a small R32F texture (OP_TABLE). One
  * program per variant (evaluation modes, interior taps, step, flags) is made on first use,
- * from the one shader file and #defines.
+ * from the one shader file and #defines: a fragment program, or for the passes into the
+ * chain's own targets where the context has OpenGL 4.3 a compute program of the same file
+ * (vtkBloomPassCompute.cxx). With Restrict each pass covers only the box its output can be
+ * non-zero in (vtkBloomPassRegion.cxx); with Fast the interiors run as bilinear pairs of taps
+ * (vtkBloomPassOperators.cxx).
  */
 
 #ifndef vtkBloomPassChainRunner_h
