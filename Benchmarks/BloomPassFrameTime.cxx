@@ -7,6 +7,10 @@
 //   BloomPassFrameTime [SCENE [WIDTH HEIGHT [FRAMES [PRESET]]]]
 //   BloomPassFrameTime --profile [SCENE [WIDTH HEIGHT [FRAMES [PRESET]]]]
 //   BloomPassFrameTime --info      the window class and the OpenGL vendor, renderer and version
+//   BloomPassFrameTime --fast ...  as above, with vtkBloomPass::QUALITY_FAST
+//   BloomPassFrameTime --quality SCENE WIDTH HEIGHT FRAMES [CSV]
+//   BloomPassFrameTime --sparse WIDTH HEIGHT FRAMES [fast]
+//   BloomPassFrameTime --sync SCENE WIDTH HEIGHT FRAMES
 //
 // SCENE is a name of vtkBloomExampleSceneNames() or "all" (default lit-spheres); PRESET is
 // "scene" (the scene's own parameters, the default), "default" (vtkImageBloom's defaults), a
@@ -14,7 +18,29 @@
 // the scene's bright pass, so the same pixels bloom. --profile prints, for each scene and
 // preset, the bloom frame's passes (vtkBloomPass::ProfilePasses: GPU time from timestamp
 // queries, size and compulsory memory traffic of each, medians over FRAMES frames).
+//
+// --quality: for vtkImageBloom's defaults and every preset, the exact pass and the fast mode
+// (QUALITY_FAST) frame by frame, their GPU time over the floor, and their error on one frame:
+// against each other and against vtkImageBloom REFERENCE (double) on the same float render
+// (relative L2 of the colour, and the largest absolute error over the reference's peak). CSV
+// also writes the rows to a file, for scripts/plot-gpu-quality.py.
+//
+// --sparse: the sparse scenes of vtkBloomFrameTimer::SetupSparse (one HDR disk over 0 %, 0.1 %,
+// 1 % and 10 % of the window), vtkImageBloom's defaults, the full chain
+// (RestrictToBrightRegion off) against the content-aware one (on) frame by frame; also checks
+// on one frame that both give the same bits.
+//
+// --sync: the cost of the pass's one wait for the GPU (the bright region's read-back, or
+// SkipEmptyBloom's occlusion query): vtkImageBloom's defaults with the content-aware chain, with
+// the occlusion query only, and with neither (no wait: the CPU submits the whole frame ahead
+// of the GPU), GPU time and the CPU's time in Render().
 #include "vtkBloomFrameTimer.h"
+
+#include "vtkImageData.h"
+#include "vtkPointData.h"
+
+#include <algorithm>
+#include <fstream>
 
 #include <cmath>
 #include <cstdio>
@@ -25,6 +51,8 @@
 
 namespace
 {
+bool Fast = false; // --fast
+
 std::vector<std::string> Expand(const std::string& name, const std::vector<std::string>& all)
 {
   return name == "all" ? all : std::vector<std::string>{ name };
@@ -40,6 +68,7 @@ bool TimeFrames(const std::string& scene, const std::string& preset, int width, 
     std::fprintf(stderr, "unknown scene %s or preset %s\n", scene.c_str(), preset.c_str());
     return false;
   }
+  timer.Bloom->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
   // Selective scenes also render their emitters; measure the plain scene pass for all.
   const vtkBloomFrameTimer::Kind kinds[] = { vtkBloomFrameTimer::PLAIN,
     vtkBloomFrameTimer::FLOAT_COPY, vtkBloomFrameTimer::BLOOM };
@@ -87,6 +116,7 @@ bool ProfilePasses(
     std::fprintf(stderr, "unknown scene %s or preset %s\n", scene.c_str(), preset.c_str());
     return false;
   }
+  timer.Bloom->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
   // Unprofiled frames first: the whole bloom frame and the floor, for the totals.
   std::vector<double> floorGPU, frameGPU;
   for (int f = -2; f < frames; ++f)
@@ -113,9 +143,9 @@ bool ProfilePasses(
     }
   }
   vtkBloomPass* bloom = timer.Bloom;
-  std::printf("\n%s, preset %s, %dx%d, %s precision: %d GPU passes of the chain and the "
+  std::printf("\n%s, preset %s%s, %dx%d, %s precision: %d GPU passes of the chain and the "
               "composite (the profile also lists the scene render)\n\n",
-    scene.c_str(), preset.c_str(), width, height,
+    scene.c_str(), preset.c_str(), Fast ? " (fast mode)" : "", width, height,
     bloom->GetFloatPrecision() == vtkBloomPass::FLOAT32 ? "float32" : "float16",
     bloom->GetNumberOfPasses());
   std::printf("| # | pass | size | GPU time | MB | GB/s |\n|---|---|---|---|---|---|\n");
@@ -146,10 +176,240 @@ bool ProfilePasses(
   std::fflush(stdout);
   return true;
 }
+
+// Colour errors of `a` against `reference`: relative L2, and the largest absolute error over
+// the reference's largest absolute value.
+void Errors(vtkImageData* a, vtkImageData* reference, double& relativeL2, double& maxOverPeak)
+{
+  vtkDataArray* x = a->GetPointData()->GetScalars();
+  vtkDataArray* y = reference->GetPointData()->GetScalars();
+  double num = 0.0, den = 0.0, worst = 0.0, peak = 0.0;
+  for (vtkIdType p = 0; p < a->GetNumberOfPoints(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double u = x->GetComponent(p, c), v = y->GetComponent(p, c);
+      num += (u - v) * (u - v);
+      den += v * v;
+      worst = std::max(worst, std::abs(u - v));
+      peak = std::max(peak, std::abs(v));
+    }
+  }
+  relativeL2 = std::sqrt(num / std::max(den, 1e-300));
+  maxOverPeak = worst / std::max(peak, 1e-300);
+}
+
+// Medians of the GPU time of the floor, the bloom pass and the alternative pass, interleaved.
+void TimeTwo(vtkBloomFrameTimer& timer, int frames, double ms[3])
+{
+  const vtkBloomFrameTimer::Kind kinds[] = { vtkBloomFrameTimer::FLOAT_COPY,
+    vtkBloomFrameTimer::BLOOM, vtkBloomFrameTimer::ALTERNATIVE };
+  std::vector<double> gpu[3];
+  for (int f = -2; f < frames; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      timer.Frame(kinds[k]);
+      if (f >= 0)
+      {
+        gpu[k].push_back(1e3 * timer.LastGPUSeconds);
+      }
+    }
+  }
+  for (int k = 0; k < 3; ++k)
+  {
+    ms[k] = vtkBloomMedian(gpu[k]);
+  }
+}
+
+// One frame of each pass, with the same camera: the scene and both results.
+void Capture(vtkBloomFrameTimer& timer, vtkImageData* scene, vtkImageData* a, vtkImageData* b)
+{
+  timer.Bloom->CaptureResultOn();
+  timer.Alternative->CaptureResultOn();
+  timer.Renderer->SetPass(timer.Bloom);
+  timer.Window->Render();
+  timer.Bloom->ReadSceneImage(scene);
+  timer.Bloom->ReadResultImage(a);
+  timer.Renderer->SetPass(timer.Alternative);
+  timer.Window->Render();
+  timer.Alternative->ReadResultImage(b);
+  timer.Bloom->CaptureResultOff();
+  timer.Alternative->CaptureResultOff();
+}
+
+bool QualityTable(const std::string& scene, int width, int height, int frames, const char* csv)
+{
+  std::vector<std::string> presets = vtkImageBloom::GetPresetNames();
+  presets.insert(presets.begin(), "default");
+  std::ofstream out;
+  if (csv)
+  {
+    out.open(csv);
+    out << "preset,quality,gpu_ms_over_floor,passes,rel_l2_vs_exact,rel_l2_vs_reference,"
+           "max_abs_over_peak_vs_reference\n";
+  }
+  std::printf("%s, %dx%d, vtkImageBloom REFERENCE (double) on the same float render as the "
+              "reference\n\n| preset | quality | bloom over the floor GPU | passes | relative L2 "
+              "against the exact pass | relative L2 against REFERENCE | max abs / peak against "
+              "REFERENCE |\n|---|---|---|---|---|---|---|\n",
+    scene.c_str(), width, height);
+  for (const std::string& preset : presets)
+  {
+    vtkBloomFrameTimer timer;
+    if (!timer.Setup(scene, width, height) || !timer.UsePreset(preset))
+    {
+      return false;
+    }
+    timer.Alternative->SetQualityToFast();
+    timer.Frame(vtkBloomFrameTimer::PLAIN); // a context for the GPU timer
+    vtkNew<vtkImageData> sceneImage, exact, fast;
+    Capture(timer, sceneImage, exact, fast);
+    vtkImageBloom* cpu = timer.Bloom->GetParameters();
+    cpu->SetExecutionModeToReference();
+    cpu->SetInputData(sceneImage);
+    cpu->Update();
+    double l2[3], peak[3];
+    Errors(exact, cpu->GetOutput(), l2[0], peak[0]);
+    Errors(fast, cpu->GetOutput(), l2[1], peak[1]);
+    Errors(fast, exact, l2[2], peak[2]);
+    cpu->SetInputData(nullptr);
+    cpu->SetExecutionModeToFast();
+    double ms[3];
+    TimeTwo(timer, frames, ms);
+    const int passes[2] = { timer.Bloom->GetNumberOfPasses(),
+      timer.Alternative->GetNumberOfPasses() };
+    for (int q = 0; q < 2; ++q)
+    {
+      const char* name = q ? "fast" : "exact";
+      std::printf("| %s | %s | %+.3f ms | %d | %s | %.2e | %.2e |\n", preset.c_str(), name,
+        ms[1 + q] - ms[0], passes[q], q ? std::to_string(l2[2]).c_str() : "0", l2[q], peak[q]);
+      if (csv)
+      {
+        out << preset << "," << name << "," << ms[1 + q] - ms[0] << "," << passes[q] << ","
+            << (q ? l2[2] : 0.0) << "," << l2[q] << "," << peak[q] << "\n";
+      }
+    }
+    std::fflush(stdout);
+  }
+  return true;
+}
+
+bool SyncTable(const std::string& scene, int width, int height, int frames)
+{
+  std::printf("%s, vtkImageBloom defaults, %dx%d: the pass's wait for the GPU\n\n| chain | "
+              "bloom over the floor GPU | Render() on the CPU | passes |\n|---|---|---|---|\n",
+    scene.c_str(), width, height);
+  const char* names[] = { "content-aware (reduction read back)",
+    "full, SkipEmptyBloom "
+    "(occlusion query read back)",
+    "full, no read-back (SkipEmptyBloom and RestrictToBrightRegion off)" };
+  for (int mode = 0; mode < 3; ++mode)
+  {
+    vtkBloomFrameTimer timer;
+    if (!timer.Setup(scene, width, height) || !timer.UsePreset("default"))
+    {
+      return false;
+    }
+    vtkImageBloom* p = timer.Bloom->GetParameters();
+    p->SetRestrictToBrightRegion(mode == 0);
+    p->SetSkipEmptyBloom(mode < 2);
+    std::vector<double> floorGPU, floorSubmit, gpu, submit;
+    for (int f = -2; f < frames; ++f)
+    {
+      timer.Frame(vtkBloomFrameTimer::FLOAT_COPY);
+      const double floorMs = 1e3 * timer.LastGPUSeconds;
+      const double floorSubmitMs = 1e3 * timer.LastSubmitSeconds;
+      timer.Frame(vtkBloomFrameTimer::BLOOM);
+      if (f >= 0)
+      {
+        floorGPU.push_back(floorMs);
+        floorSubmit.push_back(floorSubmitMs);
+        gpu.push_back(1e3 * timer.LastGPUSeconds);
+        submit.push_back(1e3 * timer.LastSubmitSeconds);
+      }
+    }
+    if (mode == 0)
+    {
+      std::printf("| the floor itself (float target + copy): GPU %.3f ms | | %.3f ms | |\n",
+        vtkBloomMedian(floorGPU), vtkBloomMedian(floorSubmit));
+    }
+    std::printf("| %s | %+.3f ms | %.3f ms | %d |\n", names[mode],
+      vtkBloomMedian(gpu) - vtkBloomMedian(floorGPU), vtkBloomMedian(submit),
+      timer.Bloom->GetNumberOfPasses());
+    std::fflush(stdout);
+  }
+  return true;
+}
+
+bool SparseTable(int width, int height, int frames, bool fast)
+{
+  std::printf("sparse scenes, vtkImageBloom defaults%s, %dx%d: the full chain "
+              "(RestrictToBrightRegion off) against the content-aware chain (on)\n\n| bright "
+              "| float target + copy GPU | full: bloom over the floor | content-aware: bloom "
+              "over the floor | saving | bright region (level 0) | chain coverage | passes | "
+              "same bits |\n|---|---|---|---|---|---|---|---|---|\n",
+    fast ? " in the fast mode" : "", width, height);
+  for (const double fraction : { 0.0, 0.001, 0.01, 0.1 })
+  {
+    vtkBloomFrameTimer timer;
+    timer.SetupSparse(fraction, width, height);
+    for (vtkBloomPass* pass : { timer.Bloom.Get(), timer.Alternative.Get() })
+    {
+      pass->SetQuality(fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
+    }
+    timer.Bloom->GetParameters()->SetRestrictToBrightRegion(false);
+    timer.Alternative->GetParameters()->SetRestrictToBrightRegion(true);
+    timer.Frame(vtkBloomFrameTimer::PLAIN);
+    vtkNew<vtkImageData> scene, full, restricted;
+    Capture(timer, scene, full, restricted);
+    const bool same = full->GetNumberOfPoints() == restricted->GetNumberOfPoints() &&
+      std::equal(static_cast<float*>(full->GetScalarPointer()),
+        static_cast<float*>(full->GetScalarPointer()) + 4 * full->GetNumberOfPoints(),
+        static_cast<float*>(restricted->GetScalarPointer()),
+        [](float u, float v) { return std::memcmp(&u, &v, sizeof(float)) == 0; });
+    double ms[3];
+    TimeTwo(timer, frames, ms);
+    int region[4];
+    timer.Alternative->GetLastBrightRegion(region);
+    std::printf(
+      "| %g %% | %.3f ms | %+.3f ms | %+.3f ms | %.3f ms | %dx%d | %.3f | %d / %d | %s |\n",
+      100.0 * fraction, ms[0], ms[1] - ms[0], ms[2] - ms[0], ms[1] - ms[2], region[1] - region[0],
+      region[3] - region[2], timer.Alternative->GetLastChainCoverage(),
+      timer.Bloom->GetNumberOfPasses(), timer.Alternative->GetNumberOfPasses(),
+      same ? "yes" : "NO");
+    std::fflush(stdout);
+  }
+  return true;
+}
 }
 
 int main(int argc, char* argv[])
 {
+  if (argc > 5 && std::strcmp(argv[1], "--quality") == 0)
+  {
+    return QualityTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5]),
+             argc > 6 ? argv[6] : nullptr)
+      ? 0
+      : 1;
+  }
+  if (argc > 5 && std::strcmp(argv[1], "--sync") == 0)
+  {
+    return SyncTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0 : 1;
+  }
+  if (argc > 4 && std::strcmp(argv[1], "--sparse") == 0)
+  {
+    return SparseTable(std::atoi(argv[2]), std::atoi(argv[3]), std::atoi(argv[4]),
+             argc > 5 && std::strcmp(argv[5], "fast") == 0)
+      ? 0
+      : 1;
+  }
+  if (argc > 1 && std::strcmp(argv[1], "--fast") == 0)
+  {
+    Fast = true;
+    --argc;
+    ++argv;
+  }
   if (argc > 1 && std::strcmp(argv[1], "--info") == 0)
   {
     vtkBloomFrameTimer timer;

@@ -12,6 +12,7 @@
 #ifndef vtkBloomFrameTimer_h
 #define vtkBloomFrameTimer_h
 
+#include "vtkActor.h"
 #include "vtkBloomExampleScenes.h"
 #include "vtkBloomMedian.h"
 #include "vtkBloomPass.h"
@@ -20,13 +21,17 @@
 #include "vtkImageBloom.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
 #include "vtkRenderStepsPass.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSphereSource.h"
 #include "vtkTextureObject.h"
 #include "vtk_glew.h"
 
 #include <chrono>
+#include <cmath>
 #include <limits>
 #include <string>
 #include <vector>
@@ -38,7 +43,8 @@ public:
   {
     PLAIN,      ///< the render steps into the window
     FLOAT_COPY, ///< the render steps into a float target, copied to the window
-    BLOOM       ///< vtkBloomPass around the render steps
+    BLOOM,      ///< vtkBloomPass around the render steps
+    ALTERNATIVE ///< a second vtkBloomPass (Alternative), to compare two settings frame by frame
   };
 
   /// An offscreen window of width x height showing `scene`; false for an unknown scene.
@@ -49,15 +55,63 @@ public:
     this->Window->SetSize(width, height);
     this->Window->AddRenderer(this->Renderer);
     this->Bloom->SetDelegatePass(this->Steps);
+    this->Alternative->SetDelegatePass(this->Steps);
     this->FloatCopy->SetDelegatePass(this->Steps);
     if (!vtkBloomBuildExampleScene(scene, this->Renderer, this->Bloom))
     {
       return false;
     }
+    this->Alternative->SetParameters(this->Bloom->GetParameters());
     this->FloatCopy->SetColorFormat(this->Bloom->GetFloatPrecision() == vtkBloomPass::FLOAT32
         ? vtkTextureObject::Float32
         : vtkTextureObject::Float16);
     return true;
+  }
+
+  /**
+   * A sparse scene: a dark background (0.25, below vtkImageBloom's default threshold) and one
+   * flat HDR disk, (4, 3, 2) (an ambient-only sphere at the centre of a parallel projection,
+   * so that turning the camera keeps its size), covering `fraction` of the window (none for
+   * 0). Both bloom passes get vtkImageBloom's defaults.
+   */
+  void SetupSparse(double fraction, int width, int height)
+  {
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(width, height);
+    this->Window->AddRenderer(this->Renderer);
+    this->Bloom->SetDelegatePass(this->Steps);
+    this->Alternative->SetDelegatePass(this->Steps);
+    this->FloatCopy->SetDelegatePass(this->Steps);
+    this->Renderer->SetBackground(0.25, 0.25, 0.25);
+    vtkCamera* camera = this->Renderer->GetActiveCamera();
+    camera->ParallelProjectionOn();
+    camera->SetParallelScale(1.0);
+    camera->SetPosition(0.0, 0.0, 10.0);
+    camera->SetFocalPoint(0.0, 0.0, 0.0);
+    camera->SetViewUp(0.0, 1.0, 0.0);
+    if (fraction > 0.0)
+    {
+      // Disk area pi r^2 over the view's 2 x 2 aspect world units.
+      const double aspect = static_cast<double>(width) / height;
+      vtkNew<vtkSphereSource> sphere;
+      sphere->SetRadius(std::sqrt(4.0 * fraction * aspect / 3.14159265358979));
+      sphere->SetThetaResolution(96);
+      sphere->SetPhiResolution(48);
+      vtkNew<vtkPolyDataMapper> mapper;
+      mapper->SetInputConnection(sphere->GetOutputPort());
+      vtkNew<vtkActor> actor;
+      actor->SetMapper(mapper);
+      actor->GetProperty()->SetAmbient(1.0);
+      actor->GetProperty()->SetDiffuse(0.0);
+      actor->GetProperty()->SetSpecular(0.0);
+      actor->GetProperty()->SetAmbientColor(4.0, 3.0, 2.0);
+      this->Renderer->AddActor(actor);
+    }
+    camera->SetClippingRange(1.0, 20.0);
+    vtkNew<vtkImageBloom> defaults;
+    this->Alternative->SetParameters(defaults);
+    this->FloatCopy->SetColorFormat(vtkTextureObject::Float16);
   }
 
   /**
@@ -81,6 +135,16 @@ public:
     parameters->SetThreshold(scene->GetThreshold());
     parameters->SetKnee(scene->GetKnee());
     this->Bloom->SetParameters(parameters);
+    // The alternative pass gets a copy of its own, so that it may differ.
+    vtkNew<vtkImageBloom> copy;
+    if (preset != "default")
+    {
+      copy->SetPreset(preset.c_str());
+    }
+    copy->SetThresholdMode(parameters->GetThresholdMode());
+    copy->SetThreshold(parameters->GetThreshold());
+    copy->SetKnee(parameters->GetKnee());
+    this->Alternative->SetParameters(copy);
     return true;
   }
 
@@ -88,7 +152,7 @@ public:
   /// wall-clock seconds. LastGPUSeconds is the frame's GPU time.
   double Frame(Kind kind)
   {
-    vtkRenderPass* passes[] = { this->Steps, this->FloatCopy, this->Bloom };
+    vtkRenderPass* passes[] = { this->Steps, this->FloatCopy, this->Bloom, this->Alternative };
     this->Renderer->SetPass(passes[kind]);
     this->Renderer->GetActiveCamera()->Azimuth(0.5);
     const bool timed = this->Query != 0;
@@ -106,6 +170,8 @@ public:
     {
       glEndQuery(GL_TIME_ELAPSED);
     }
+    this->LastSubmitSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     this->Window->WaitForCompletion();
     const double wall =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -133,15 +199,20 @@ public:
     // The passes not set on the renderer last are not reached through the window.
     this->FloatCopy->ReleaseGraphicsResources(this->Window);
     this->Bloom->ReleaseGraphicsResources(this->Window);
+    this->Alternative->ReleaseGraphicsResources(this->Window);
     this->Window->ReleaseGraphicsResources(this->Window);
   }
 
   vtkNew<vtkRenderWindow> Window;
   vtkNew<vtkRenderer> Renderer;
   vtkNew<vtkBloomPass> Bloom;
+  vtkNew<vtkBloomPass> Alternative;
   vtkNew<vtkRenderStepsPass> Steps;
   vtkNew<vtkFramebufferPass> FloatCopy;
   double LastGPUSeconds = std::numeric_limits<double>::quiet_NaN();
+  /// Wall-clock seconds of the last frame's Render() alone (before glFinish): the CPU's time
+  /// to submit it, and any wait for the GPU within it.
+  double LastSubmitSeconds = std::numeric_limits<double>::quiet_NaN();
 
 private:
   GLuint Query = 0; // GL_TIME_ELAPSED

@@ -46,6 +46,14 @@ public:
   void RenderDelegate(vtkBloomPass* self, const vtkRenderState* s, vtkBloomPassSceneTarget& target,
     vtkProp** props, int count, bool emitters);
 
+  // The last evaluation's content-aware figures.
+  void Report(vtkBloomPass* self)
+  {
+    std::copy(this->Runner.BrightRegion, this->Runner.BrightRegion + 4, self->LastBrightRegion);
+    self->LastChainCoverage = this->Runner.Coverage;
+    self->LastComputePasses = this->Runner.ComputePasses;
+  }
+
   void ReleaseAll(vtkWindow* w)
   {
     this->Runner.ReleaseGraphicsResources(w);
@@ -71,14 +79,19 @@ bool vtkBloomPass::vtkInternals::Prepare(
     res.Format = format;
   }
   this->Runner.Passes = 0;
+  this->Runner.Fast = self->Quality == QUALITY_FAST;
+  this->Runner.UseCompute = self->UseComputeShaders;
+  this->Runner.ComputePasses = 0;
+  this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
   this->Runner.Profiling = self->ProfilePasses;
   this->Runner.Profile.clear();
   res.AllocateScene(w, h, self->EmissionSource == EMISSION_EMITTERS);
-  if (res.ChainIsStale(self->Parameters, w, h))
+  const bool fast = self->Quality == QUALITY_FAST;
+  if (res.ChainIsStale(self->Parameters, w, h, fast))
   {
     // The runner's operator textures belong to the chain about to be rebuilt.
     this->Runner.ReleaseOperators(window);
-    res.BuildChain(self->Parameters, w, h);
+    res.BuildChain(self->Parameters, w, h, fast);
   }
   return true;
 }
@@ -141,7 +154,12 @@ vtkBloomPass::vtkBloomPass()
   , Emitters(vtkPropCollection::New())
   , FloatPrecision(FLOAT16)
   , EmissionSource(EMISSION_SCENE)
+  , Quality(QUALITY_EXACT)
+  , UseComputeShaders(true)
+  , LastComputePasses(0)
   , CaptureResult(false)
+  , LastBrightRegion{ 0, 0, 0, 0 }
+  , LastChainCoverage(1.0)
   , NumberOfPasses(0)
   , LastBloomSkipped(false)
   , ProfilePasses(false)
@@ -351,6 +369,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   const bool bloom =
     in.Runner.Run(this->Parameters, selective ? res.Emitter.Color : res.Scene.Color, selective);
   this->LastBloomSkipped = !bloom;
+  in.Report(this);
   const int zero[2] = { 0, 0 };
   const int origin[2] = { x, y };
   if (this->CaptureResult)
@@ -428,6 +447,7 @@ bool vtkBloomPass::ApplyToImage(
   state->vtkglDisable(GL_SCISSOR_TEST);
   const bool bloom = in.Runner.Run(this->Parameters, res.Scene.Color, false);
   this->LastBloomSkipped = !bloom;
+  in.Report(this);
   const int zero[2] = { 0, 0 };
   in.Runner.Composite(&res.Result, zero, bloom);
   state->PopFramebufferBindings();
@@ -526,9 +546,16 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
      << "EmissionSource: " << (this->EmissionSource == EMISSION_EMITTERS ? "Emitters" : "Scene")
      << "\n";
   os << indent << "Emitters: " << this->Emitters->GetNumberOfItems() << "\n";
+  os << indent << "Quality: " << (this->Quality == QUALITY_FAST ? "Fast" : "Exact") << "\n";
+  os << indent << "UseComputeShaders: " << (this->UseComputeShaders ? "On" : "Off") << "\n";
+  os << indent << "LastComputePasses: " << this->LastComputePasses << "\n";
   os << indent << "CaptureResult: " << (this->CaptureResult ? "On" : "Off") << "\n";
   os << indent << "NumberOfPasses: " << this->NumberOfPasses << "\n";
   os << indent << "LastBloomSkipped: " << (this->LastBloomSkipped ? "On" : "Off") << "\n";
+  os << indent << "LastBrightRegion: " << this->LastBrightRegion[0] << " "
+     << this->LastBrightRegion[1] << " " << this->LastBrightRegion[2] << " "
+     << this->LastBrightRegion[3] << "\n";
+  os << indent << "LastChainCoverage: " << this->LastChainCoverage << "\n";
   os << indent << "ProfilePasses: " << (this->ProfilePasses ? "On" : "Off") << "\n";
   os << indent << "Parameters:\n";
   this->Parameters->PrintSelf(os, indent.GetNextIndent());

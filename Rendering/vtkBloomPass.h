@@ -34,6 +34,30 @@
  * forwards to the delegate. The pass needs OpenGL 3.2 and works with any vtkOpenGLRenderWindow
  * (X, OSMesa or EGL).
  *
+ * Content-aware work. With the parameters' RestrictToBrightRegion on (vtkImageBloom's default),
+ * the bright pass is reduced on the GPU to the bounding box of its non-zero samples (two or
+ * three small passes and a read-back of a few kilobytes, which also replaces SkipEmptyBloom's
+ * occlusion query), and every later pass covers only the box of samples its output can be
+ * non-zero in, found from its operators' bands; the composite adds no bloom outside the last
+ * box. The output is the same bit for bit as with it off (tested): when few pixels are bright,
+ * most of the chain is not computed. The read-back makes the CPU wait for the GPU; while the
+ * region covers a quarter of the chain or more, it is measured only every 8th render, and the
+ * renders in between run the full chain with no read-back (and no occlusion query).
+ * GetLastBrightRegion() and GetLastChainCoverage() report what the last render computed.
+ *
+ * Quality. QUALITY_EXACT (the default) is the chain above, to float rounding. QUALITY_FAST is
+ * an opt-in approximation for interactive use: the chain's levels are half floats read through
+ * bilinear filtering, and the translation-invariant interior of every operator after the
+ * bright pass is evaluated by pairs of taps, each pair one hardware bilinear fetch (the
+ * 13-tap downsample's 4 x 4 band as 2 x 2 fetches, a 1:2 tent as one fetch per axis), with the
+ * two-dimensional steps fused into one pass where that is cheaper. Its error against the exact
+ * pass is measured per preset in docs/gpu.md (vtkImageBloom's ExecutionMode FAST, by contrast,
+ * is exact to float rounding: the two names share only their intent).
+ *
+ * Compute shaders. Where the context has OpenGL 4.3, the chain's passes into its own targets
+ * run as compute shaders compiled from the same shader file (UseComputeShaders, default on);
+ * the composite into the framebuffer stays a fragment pass.
+ *
  * With CaptureResult on, the bloomed image is also kept in a float texture after each render,
  * and ReadSceneImage() / ReadResultImage() return the un-bloomed float render and the bloomed
  * result as float RGBA vtkImageData (origin 0, spacing 1, row 0 at the bottom) for tests,
@@ -94,6 +118,39 @@ public:
   void SetFloatPrecisionTo16Bit() { this->SetFloatPrecision(FLOAT16); }
   void SetFloatPrecisionTo32Bit() { this->SetFloatPrecision(FLOAT32); }
   ///@}
+
+  ///@{
+  /**
+   * QUALITY_EXACT (default): the chain of the parameters to float rounding (GPU/CPU agreement
+   * <= 1e-3 relative L2 for every preset). QUALITY_FAST: half-float levels and bilinear pairs
+   * of taps (see the class description); an approximation.
+   */
+  enum
+  {
+    QUALITY_EXACT = 0,
+    QUALITY_FAST = 1
+  };
+  vtkSetClampMacro(Quality, int, QUALITY_EXACT, QUALITY_FAST);
+  vtkGetMacro(Quality, int);
+  void SetQualityToExact() { this->SetQuality(QUALITY_EXACT); }
+  void SetQualityToFast() { this->SetQuality(QUALITY_FAST); }
+  ///@}
+
+  ///@{
+  /**
+   * Run the chain's passes into its own targets, and the bright region's reduction, as compute
+   * shaders where the context has OpenGL 4.3 (default on); off, or without OpenGL 4.3, they are
+   * fragment passes. The composite is always a fragment pass. Both compute the same sums: the
+   * results agree to float rounding (tested). On an NVIDIA H100, which shades fragments on a
+   * few of its multiprocessors only, the compute passes are many times faster (docs/gpu.md).
+   */
+  vtkSetMacro(UseComputeShaders, bool);
+  vtkGetMacro(UseComputeShaders, bool);
+  vtkBooleanMacro(UseComputeShaders, bool);
+  ///@}
+
+  /// The passes of the last evaluation that ran as compute shaders (of GetNumberOfPasses()).
+  vtkGetMacro(LastComputePasses, int);
 
   ///@{
   /// What may bloom: the whole scene (default) or only the emitter props.
@@ -169,6 +226,21 @@ public:
    */
   vtkGetMacro(LastBloomSkipped, bool);
 
+  /**
+   * The last evaluation's bright region, with RestrictToBrightRegion on: the bounding box of
+   * the bright pass's non-zero samples in samples of the first pyramid level, as x0 x1 y0 y1
+   * (x1 and y1 past the end). All zero when nothing was bright, when the region was not
+   * measured (RestrictToBrightRegion off, or a render between two measurements of a region that
+   * covered much of the chain) or when the bloom was skipped otherwise.
+   */
+  vtkGetVector4Macro(LastBrightRegion, int);
+
+  /**
+   * The samples the last evaluation's chain passes (after the bright pass, before the
+   * composite) computed, over those the full chain computes: 1 unless restricted.
+   */
+  vtkGetMacro(LastChainCoverage, double);
+
   ///@{
   /**
    * Per-pass GPU profile, for benchmarks (off by default). With ProfilePasses on, every GPU
@@ -209,7 +281,12 @@ protected:
   vtkPropCollection* Emitters;
   int FloatPrecision;
   int EmissionSource;
+  int Quality;
+  bool UseComputeShaders;
+  int LastComputePasses;
   bool CaptureResult;
+  int LastBrightRegion[4];
+  double LastChainCoverage;
   int NumberOfPasses;
   bool LastBloomSkipped;
   bool ProfilePasses;

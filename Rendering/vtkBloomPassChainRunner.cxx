@@ -5,6 +5,7 @@
 #include "vtkBloomChain.h"
 #include "vtkBloomKernels.h"
 #include "vtkBloomPassFS.h"
+#include "vtkBloomPassReduceFS.h"
 #include "vtkBloomPassResources.h"
 #include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
@@ -32,13 +33,14 @@ namespace
  * intermediate target count for a quarter of the separable cost. The 2:1 box (2 x 2 taps) is
  * one pass, the 2:1 tent (4 x 4) two.
  */
-bool TwoDimensional(const vtkBloomChain::Term& term)
+bool TwoDimensional(const vtkBloomChain::Term& term, bool fast)
 {
+  // The fast mode fetches pairs of taps.
+  const double wx = fast ? (term.X.Width + 1) / 2 : term.X.Width;
+  const double wy = fast ? (term.Y.Width + 1) / 2 : term.Y.Width;
   const double outputs = static_cast<double>(term.X.OutputSize) * term.Y.OutputSize;
-  const double single = static_cast<double>(term.X.Width) * term.Y.Width * outputs;
-  const double separable =
-    static_cast<double>(term.X.Width) * term.X.OutputSize * term.Y.InputSize +
-    static_cast<double>(term.Y.Width) * outputs;
+  const double single = wx * wy * outputs;
+  const double separable = wx * term.X.OutputSize * term.Y.InputSize + wy * outputs;
   return single <= 1.25 * separable;
 }
 }
@@ -73,6 +75,7 @@ void vtkBloomPassChainRunner::ReleaseGraphicsResources(vtkWindow* w)
     program.second->ReleaseGraphicsResources(w);
   }
   this->Programs.clear();
+  this->ReleaseCompute();
   if (this->Query)
   {
     glDeleteQueries(1, &this->Query);
@@ -106,165 +109,14 @@ std::string vtkBloomPassChainRunner::ShaderConstants()
 }
 
 //------------------------------------------------------------------------------
-vtkBloomPassChainRunner::Interior vtkBloomPassChainRunner::Interior::Find(
-  const vtkBloomLinearOperator& op)
-{
-  const int width = op.Width;
-  auto weight = [&op, width](int j, int k)
-  { return static_cast<float>(op.Weights[static_cast<size_t>(j) * width + k]); };
-  // Too short an interior is not worth its own draw. A stride of 0 (an input of one
-  // sample) would leave the shader independent of the fragment's position, so
-  // FindInvariantRange refuses it and the table evaluates such an operator.
-  const int minimum = 8;
-  for (int period : { 1, 2 })
-  {
-    const vtkBloomLinearOperator::InvariantRange range = op.FindInvariantRange(period, minimum);
-    if (range.Begin == range.End)
-    {
-      continue;
-    }
-    const int begin = range.Begin, end = range.End, stride = range.Stride;
-    // Drop the band's zero padding common to every phase.
-    int lo = width, hi = 0;
-    for (int ph = 0; ph < period; ++ph)
-    {
-      for (int k = 0; k < width; ++k)
-      {
-        if (weight(begin + ph, k) != 0.0f)
-        {
-          lo = std::min(lo, k);
-          hi = std::max(hi, k + 1);
-        }
-      }
-    }
-    if (hi <= lo || hi - lo > 31) // a bit per tap in Defines()
-    {
-      continue;
-    }
-    Interior interior;
-    interior.Begin = begin;
-    interior.End = end;
-    interior.Period = period;
-    interior.Stride = stride;
-    interior.Taps = hi - lo;
-    for (int ph = 0; ph < 2; ++ph)
-    {
-      interior.First[ph] = op.First[begin + std::min(ph, period - 1)] + lo;
-    }
-    for (int ph = 0; ph < period; ++ph)
-    {
-      for (int k = lo; k < hi; ++k)
-      {
-        interior.Weights.push_back(weight(begin + ph, k));
-      }
-    }
-    return interior;
-  }
-  return Interior();
-}
-
-//------------------------------------------------------------------------------
-std::string vtkBloomPassChainRunner::Interior::Defines(const char* axis) const
-{
-  // Bit k of ANY: tap k is non-zero in some phase (else it is compiled out); of ALL: in
-  // every phase (no run-time test of its weight).
-  unsigned int any = 0, all = (1u << this->Taps) - 1;
-  for (int ph = 0; ph < this->Period; ++ph)
-  {
-    for (int k = 0; k < this->Taps; ++k)
-    {
-      if (this->Weights[ph * this->Taps + k] != 0.0f)
-      {
-        any |= 1u << k;
-      }
-      else
-      {
-        all &= ~(1u << k);
-      }
-    }
-  }
-  std::ostringstream os;
-  os << "#define " << axis << "_PERIOD " << this->Period << "\n#define " << axis << "_STRIDE "
-     << this->Stride << "\n#define " << axis << "_TAPS " << this->Taps << "\n#define " << axis
-     << "_ANY " << any << "u\n#define " << axis << "_ALL " << all << "u\n";
-  return os.str();
-}
-
-//------------------------------------------------------------------------------
-vtkTextureObject* vtkBloomPassChainRunner::OperatorTexture(const vtkBloomLinearOperator& op)
-{
-  auto found = this->Operators.find(&op);
-  if (found != this->Operators.end())
-  {
-    return found->second;
-  }
-  // Row j: First[j] then the band's weights; exact in float for indices below 2^24.
-  const int columns = op.Width + 1;
-  std::vector<float> rows(static_cast<size_t>(columns) * op.OutputSize);
-  for (int j = 0; j < op.OutputSize; ++j)
-  {
-    float* row = rows.data() + static_cast<size_t>(j) * columns;
-    row[0] = static_cast<float>(op.First[j]);
-    for (int k = 0; k < op.Width; ++k)
-    {
-      row[k + 1] = static_cast<float>(op.Weights[static_cast<size_t>(j) * op.Width + k]);
-    }
-  }
-  vtkNew<vtkTextureObject> texture;
-  texture->SetContext(this->Resources.Context);
-  texture->SetInternalFormat(GL_R32F);
-  texture->SetMinificationFilter(vtkTextureObject::Nearest);
-  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  texture->Create2DFromRaw(columns, op.OutputSize, 1, VTK_FLOAT, rows.data());
-  this->Operators[&op] = texture.Get();
-  return texture;
-}
-
-//------------------------------------------------------------------------------
-const vtkBloomPassChainRunner::Interior& vtkBloomPassChainRunner::InteriorOf(
-  const vtkBloomLinearOperator& op)
-{
-  auto found = this->Interiors.find(&op);
-  if (found == this->Interiors.end())
-  {
-    found = this->Interiors.emplace(&op, Interior::Find(op)).first;
-  }
-  return found->second;
-}
-
-//------------------------------------------------------------------------------
-std::vector<vtkBloomPassChainRunner::Segment> vtkBloomPassChainRunner::Segments(
-  const vtkBloomLinearOperator* op, int size)
-{
-  if (!op)
-  {
-    return { { 0, size, OP_IDENTITY } };
-  }
-  const Interior& interior = this->InteriorOf(*op);
-  if (interior.End <= interior.Begin)
-  {
-    return { { 0, op->OutputSize, OP_TABLE } };
-  }
-  std::vector<Segment> segments;
-  if (interior.Begin > 0)
-  {
-    segments.push_back({ 0, interior.Begin, OP_TABLE });
-  }
-  segments.push_back({ interior.Begin, interior.End, OP_PERIODIC });
-  if (interior.End < op->OutputSize)
-  {
-    segments.push_back({ interior.End, op->OutputSize, OP_TABLE });
-  }
-  return segments;
-}
-
-//------------------------------------------------------------------------------
 vtkOpenGLQuadHelper* vtkBloomPassChainRunner::Program(const std::string& variant)
 {
   std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Programs[variant];
   if (!quad)
   {
-    std::string fs = vtkBloomPassFS;
+    // The bright region's reduction has a shader of its own (vtkBloomPassRegion.cxx).
+    std::string fs =
+      variant.rfind("#define REDUCE", 0) == 0 ? vtkBloomPassReduceFS : vtkBloomPassFS;
     vtkShaderProgram::Substitute(fs, "//BLOOM::Constants", ShaderConstants());
     vtkShaderProgram::Substitute(fs, "//BLOOM::Variant", variant);
     quad.reset(new vtkOpenGLQuadHelper(this->Resources.Context,
@@ -290,11 +142,11 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
   os << "#define X_MODE " << xMode << "\n#define Y_MODE " << yMode << "\n";
   if (xMode == OP_PERIODIC)
   {
-    os << this->InteriorOf(*spec.X).Defines("X");
+    os << this->InteriorOf(*spec.X).Defines("X", this->Linear(spec, spec.X));
   }
   if (yMode == OP_PERIODIC)
   {
-    os << this->InteriorOf(*spec.Y).Defines("Y");
+    os << this->InteriorOf(*spec.Y).Defines("Y", this->Linear(spec, spec.Y));
   }
   os << "#define STEP " << spec.Step << "\n#define THRESHOLD_MODE "
      << this->Resources.Chain.ThresholdMode << "\n#define MASK_BY_DEPTH "
@@ -302,7 +154,7 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
      << (spec.ReadsSource && this->SanitizeSource ? 1 : 0) << "\n#define SANITIZE_OUTPUT "
      << (this->SanitizeOutput ? 1 : 0) << "\n#define COMPOSITE_BLOOM "
      << (spec.CompositeBloom ? 1 : 0) << "\n#define DISCARD_ZERO " << (spec.DiscardZero ? 1 : 0)
-     << "\n";
+     << "\n#define ZERO_BLOOM " << (spec.ZeroBloom ? 1 : 0) << "\n";
   return os.str();
 }
 
@@ -314,6 +166,12 @@ void vtkBloomPassChainRunner::Pass(
   if (this->Profiling)
   {
     this->BeginProfiledSpan();
+  }
+  const int width = spec.X ? spec.X->OutputSize : spec.SourceSize[0];
+  const int height = spec.Y ? spec.Y->OutputSize : spec.SourceSize[1];
+  if (target && !spec.Blend && spec.Step != STEP_COMPOSITE)
+  {
+    this->PrepareTarget(*target, spec.Region, width, height);
   }
   if (target)
   {
@@ -330,8 +188,33 @@ void vtkBloomPassChainRunner::Pass(
   {
     state->vtkglDisable(GL_BLEND);
   }
-  const std::vector<Segment> xs = this->Segments(spec.X, spec.SourceSize[0]);
-  const std::vector<Segment> ys = this->Segments(spec.Y, spec.SourceSize[1]);
+  const Box whole = Box::Whole(width, height);
+  const Box region = spec.Region ? spec.Region->Intersection(whole) : whole;
+  // The composite outside a restricted region: the bloom there is zero (ZERO_BLOOM).
+  std::vector<Box> zeroRects;
+  if (spec.Step == STEP_COMPOSITE && spec.Region && !region.Empty())
+  {
+    const Box parts[] = { { 0, width, 0, region.Y0 }, { 0, width, region.Y1, height },
+      { 0, region.X0, region.Y0, region.Y1 }, { region.X1, width, region.Y0, region.Y1 } };
+    for (const Box& part : parts)
+    {
+      if (!part.Empty())
+      {
+        zeroRects.push_back(part);
+      }
+    }
+  }
+  else if (spec.Step == STEP_COMPOSITE && spec.Region)
+  {
+    zeroRects.push_back(whole);
+  }
+  if (spec.Step != STEP_COMPOSITE && !spec.ReadsSource)
+  {
+    this->FullSamples += static_cast<double>(width) * height;
+    this->ComputedSamples += static_cast<double>(region.Empty() ? 0 : region.X1 - region.X0) *
+      (region.Empty() ? 0 : region.Y1 - region.Y0);
+  }
+
   vtkTextureObject* textures[] = { spec.Source, spec.X ? this->OperatorTexture(*spec.X) : nullptr,
     spec.Y ? this->OperatorTexture(*spec.Y) : nullptr, spec.Addend,
     spec.Step == STEP_COMPOSITE ? this->Resources.Scene.Color.Get() : nullptr,
@@ -346,64 +229,117 @@ void vtkBloomPassChainRunner::Pass(
       texture->Activate();
     }
   }
-  for (const Segment& sy : ys)
+  // One draw per combination of x and y segments (cut to the region), then the zero-bloom
+  // rectangles of a restricted composite.
+  struct Draw
   {
-    for (const Segment& sx : xs)
+    Box Rect;
+    int XMode;
+    int YMode;
+    bool Zero;
+  };
+  std::vector<Draw> draws;
+  for (const Segment& sy : this->Segments(spec.Y, spec.SourceSize[1]))
+  {
+    for (const Segment& sx : this->Segments(spec.X, spec.SourceSize[0]))
     {
-      vtkOpenGLQuadHelper* quad = this->Program(this->Variant(spec, sx.Mode, sy.Mode));
+      const Box cut = Box{ sx.Begin, sx.End, sy.Begin, sy.End }.Intersection(region);
+      if (!cut.Empty())
+      {
+        draws.push_back({ cut, sx.Mode, sy.Mode, false });
+      }
+    }
+  }
+  for (const Box& rect : zeroRects)
+  {
+    draws.push_back({ rect, OP_IDENTITY, OP_IDENTITY, true });
+  }
+  const bool compute = this->Computes(target, spec);
+  for (const Draw& draw : draws)
+  {
+    PassSpec variant = spec;
+    variant.ZeroBloom = draw.Zero;
+    const std::string text = this->Variant(variant, draw.XMode, draw.YMode);
+    Uniforms u;
+    vtkOpenGLQuadHelper* quad = nullptr;
+    if (compute)
+    {
+      ComputeProgram* program = this->Compute(text, spec.Blend);
+      if (!program)
+      {
+        continue;
+      }
+      glUseProgram(program->Id);
+      u.Raw = program->Id;
+      u.Locations = &program->Locations;
+    }
+    else
+    {
+      quad = this->Program(text);
       if (!quad)
       {
         continue;
       }
-      vtkShaderProgram* program = quad->Program;
-      auto seti = [program](const char* name, int value)
+      u.Program = quad->Program;
+    }
+    for (size_t t = 0; t < sizeof(textures) / sizeof(textures[0]); ++t)
+    {
+      if (textures[t])
       {
-        if (program->IsUniformUsed(name))
-        {
-          program->SetUniformi(name, value);
-        }
-      };
-      auto setf = [program](const char* name, double value)
-      {
-        if (program->IsUniformUsed(name))
-        {
-          program->SetUniformf(name, static_cast<float>(value));
-        }
-      };
-      for (size_t t = 0; t < sizeof(textures) / sizeof(textures[0]); ++t)
-      {
-        if (textures[t])
-        {
-          seti(samplers[t], textures[t]->GetTextureUnit());
-        }
+        u.Int(samplers[t], textures[t]->GetTextureUnit());
       }
-      const int offset[2] = { sx.Begin, sy.Begin };
-      const float size[2] = { static_cast<float>(sx.End - sx.Begin),
-        static_cast<float>(sy.End - sy.Begin) };
-      program->SetUniform2i("regionOffset", offset);
-      program->SetUniform2f("regionSize", size);
-      setf("weight", spec.Weight);
-      seti("xWidth", spec.X ? spec.X->Width : 0);
-      seti("yWidth", spec.Y ? spec.Y->Width : 0);
-      if (sx.Mode == OP_PERIODIC)
+    }
+    const int offset[2] = { draw.Rect.X0, draw.Rect.Y0 };
+    const float size[2] = { static_cast<float>(draw.Rect.X1 - draw.Rect.X0),
+      static_cast<float>(draw.Rect.Y1 - draw.Rect.Y0) };
+    u.Int2("regionOffset", offset);
+    u.Float2("regionSize", size);
+    u.Float("weight", spec.Weight);
+    u.Float("zeroBloom", 0.0);
+    u.Int("xWidth", spec.X ? spec.X->Width : 0);
+    u.Int("yWidth", spec.Y ? spec.Y->Width : 0);
+    const float texel[2] = { 1.0f / spec.Source->GetWidth(), 1.0f / spec.Source->GetHeight() };
+    u.Float2("sourceTexel", texel);
+    const vtkBloomLinearOperator* ops[2] = { spec.X, spec.Y };
+    const int modes[2] = { draw.XMode, draw.YMode };
+    const char* names[2][3] = { { "xInterior", "xWeights", "xOffsets" },
+      { "yInterior", "yWeights", "yOffsets" } };
+    for (int axis = 0; axis < 2; ++axis)
+    {
+      if (modes[axis] != OP_PERIODIC)
       {
-        const Interior& in = this->InteriorOf(*spec.X);
-        const int values[3] = { in.Begin, in.First[0], in.First[1] };
-        program->SetUniform1iv("xInterior", 3, values);
-        program->SetUniform1fv("xWeights", static_cast<int>(in.Weights.size()), in.Weights.data());
+        continue;
       }
-      if (sy.Mode == OP_PERIODIC)
+      const Interior& in = this->InteriorOf(*ops[axis]);
+      const int values[3] = { in.Begin, in.First[0], in.First[1] };
+      u.Ints(names[axis][0], 3, values);
+      if (this->Linear(spec, ops[axis]))
       {
-        const Interior& in = this->InteriorOf(*spec.Y);
-        const int values[3] = { in.Begin, in.First[0], in.First[1] };
-        program->SetUniform1iv("yInterior", 3, values);
-        program->SetUniform1fv("yWeights", static_cast<int>(in.Weights.size()), in.Weights.data());
+        const int n = static_cast<int>(in.PairWeights.size());
+        u.Floats(names[axis][1], n, in.PairWeights.data());
+        u.Floats(names[axis][2], n, in.PairOffsets.data());
       }
-      this->SetStepUniforms(program, spec.Step);
-      state->vtkglViewport(
-        origin[0] + sx.Begin, origin[1] + sy.Begin, sx.End - sx.Begin, sy.End - sy.Begin);
+      else
+      {
+        u.Floats(names[axis][1], static_cast<int>(in.Weights.size()), in.Weights.data());
+      }
+    }
+    this->SetStepUniforms(u, spec.Step);
+    if (compute)
+    {
+      this->Dispatch(*target, spec.Blend, draw.Rect);
+    }
+    else
+    {
+      state->vtkglViewport(origin[0] + draw.Rect.X0, origin[1] + draw.Rect.Y0,
+        draw.Rect.X1 - draw.Rect.X0, draw.Rect.Y1 - draw.Rect.Y0);
       quad->Render();
     }
+  }
+  if (compute)
+  {
+    this->EndCompute();
+    ++this->ComputePasses;
   }
   for (vtkTextureObject* texture : textures)
   {
@@ -420,25 +356,11 @@ void vtkBloomPassChainRunner::Pass(
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassChainRunner::SetStepUniforms(vtkShaderProgram* program, int step)
+void vtkBloomPassChainRunner::SetStepUniforms(Uniforms& u, int step)
 {
   const vtkBloomChain& c = this->Resources.Chain;
-  auto setf = [program](const char* name, double value)
-  {
-    if (program->IsUniformUsed(name))
-    {
-      program->SetUniformf(name, static_cast<float>(value));
-    }
-  };
-  auto set3f = [program](const char* name, const double values[3])
-  {
-    const float v[3] = { static_cast<float>(values[0]), static_cast<float>(values[1]),
-      static_cast<float>(values[2]) };
-    if (program->IsUniformUsed(name))
-    {
-      program->SetUniform3f(name, v);
-    }
-  };
+  auto setf = [&u](const char* name, double value) { u.Float(name, value); };
+  auto set3f = [&u](const char* name, const double values[3]) { u.Float3(name, values); };
   if (step == STEP_THRESHOLD || step == STEP_KARIS_TERM)
   {
     const double luma[3] = { vtkBloomKernels::LuminanceR, vtkBloomKernels::LuminanceG,
@@ -473,6 +395,7 @@ void vtkBloomPassChainRunner::Clear(vtkBloomPassTarget& target)
   state->vtkglViewport(0, 0, target.Size[0], target.Size[1]);
   state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
+  std::fill(target.Dirty, target.Dirty + 4, 0);
 }
 
 //------------------------------------------------------------------------------
@@ -506,6 +429,20 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     }
   }
   const int zero[2] = { 0, 0 };
+  // The region costs a wait for the GPU (its read-back), which a chain of compute passes does
+  // not hide. While the region keeps covering much of the chain, measure it only every
+  // ProbeInterval frames and run the full chain in between, with no read-back at all: the
+  // output is the same either way.
+  bool restrict = this->Restrict;
+  if (restrict && this->FramesUntilProbe > 0)
+  {
+    --this->FramesUntilProbe;
+    restrict = false;
+  }
+  this->CompositeRestricted = false;
+  this->ComputedSamples = this->FullSamples = 0.0;
+  this->Coverage = 1.0;
+  std::fill(this->BrightRegion, this->BrightRegion + 4, 0);
 
   // 1. Bright pass: the source fetch and the threshold in one pass. With SkipEmptyBloom the
   // zero samples are not written (the level is cleared first) and an occlusion query counts
@@ -520,20 +457,28 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
   bright.Y = c.SourceIsIdentity ? nullptr : &c.Source.Y;
   bright.Step = STEP_THRESHOLD;
   bright.ReadsSource = true;
+  // Restricted, the bright region's reduction also tells whether the bloom is empty. Either
+  // way the zero samples are not written (the level is cleared first): fewer writes.
+  const bool query = skipEmpty && !this->Restrict;
   bright.DiscardZero = skipEmpty;
   bright.Name = "bright";
   bright.Level = 0;
-  if (skipEmpty)
+  if (bright.DiscardZero)
   {
     this->Clear(res.Levels[0]);
+  }
+  if (query)
+  {
     if (!this->Query)
     {
       glGenQueries(1, &this->Query);
     }
     glBeginQuery(GL_SAMPLES_PASSED, this->Query);
   }
+  this->CountingSamples = query;
   this->Pass(&res.Levels[0], zero, bright);
-  if (skipEmpty)
+  this->CountingSamples = false;
+  if (query)
   {
     glEndQuery(GL_SAMPLES_PASSED);
     GLuint samples = 0;
@@ -543,6 +488,25 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
       return false; // nothing is bright: every level, and so the bloom, is zero
     }
   }
+  // The box each target can be non-zero in (the whole target when not restricted).
+  const Box* (*region)(const Box&, bool) = [](const Box& b, bool on) { return on ? &b : nullptr; };
+  std::vector<Box> levelBox(n), blurBox(n), accumBox(n);
+  levelBox[0] = Box::Whole(c.Levels[0].Size[0], c.Levels[0].Size[1]);
+  if (restrict)
+  {
+    levelBox[0] = this->MeasureBrightRegion();
+    const Box& b = levelBox[0];
+    if (!b.Empty())
+    {
+      const int values[4] = { b.X0, b.X1, b.Y0, b.Y1 };
+      std::copy(values, values + 4, this->BrightRegion);
+    }
+    else if (skipEmpty)
+    {
+      this->Coverage = 0.0; // nothing after the bright pass is computed
+      return false;
+    }
+  }
 
   // 2. The pyramid, each level from the unblurred level above it; each term is one
   // two-dimensional pass, added to the previous terms.
@@ -550,6 +514,11 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
   {
     const vtkBloomChain::Level& level = c.Levels[i];
     vtkBloomPassTarget& dst = level.Karis ? res.Work[i] : res.Levels[i];
+    const int* above = res.Levels[i - 1].Size;
+    for (const vtkBloomChain::Term& term : level.Down)
+    {
+      levelBox[i] = levelBox[i].Union(Reach(&term.X, &term.Y, levelBox[i - 1], above[0], above[1]));
+    }
     for (size_t t = 0; t < level.Down.size(); ++t)
     {
       const vtkBloomChain::Term& term = level.Down[t];
@@ -563,8 +532,9 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
       down.Blend = t > 0;
       down.Name = "down";
       down.Level = static_cast<int>(i);
+      down.Region = region(levelBox[i], restrict);
       const int rows[2] = { level.Size[0], res.Levels[i - 1].Size[1] };
-      if (!TwoDimensional(term))
+      if (!TwoDimensional(term, this->Fast))
       {
         // The x half into Temp, then the y half and the step.
         PassSpec x;
@@ -573,6 +543,8 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
         x.X = &term.X;
         x.Name = "down-x";
         x.Level = static_cast<int>(i);
+        const Box xBox = Reach(&term.X, nullptr, levelBox[i - 1], above[0], above[1]);
+        x.Region = region(xBox, restrict);
         this->Pass(&res.Temp, zero, x);
         down.Source = res.Temp.Color;
         down.SourceSize = rows;
@@ -589,6 +561,7 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
       normalize.Step = STEP_KARIS_NORMALIZE;
       normalize.Name = "karis-normalize";
       normalize.Level = static_cast<int>(i);
+      normalize.Region = region(levelBox[i], restrict);
       this->Pass(&res.Levels[i], zero, normalize);
     }
   }
@@ -603,16 +576,20 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
   {
     const vtkBloomChain::Level& level = c.Levels[i];
     blurred[i] = &res.Levels[i];
+    blurBox[i] = levelBox[i];
     if (!level.Blur)
     {
       continue;
     }
+    const Box xBox = Reach(&level.BlurPass.X, nullptr, levelBox[i], level.Size[0], level.Size[1]);
+    blurBox[i] = Reach(nullptr, &level.BlurPass.Y, xBox, level.Size[0], level.Size[1]);
     PassSpec x;
     x.Source = res.Levels[i].Color;
     x.SourceSize = level.Size;
     x.X = &level.BlurPass.X;
     x.Name = "blur-x";
     x.Level = static_cast<int>(i);
+    x.Region = region(xBox, restrict);
     this->Pass(&res.Temp, zero, x);
     PassSpec y;
     y.Source = res.Temp.Color;
@@ -620,6 +597,7 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     y.Y = &level.BlurPass.Y;
     y.Name = "blur-y";
     y.Level = static_cast<int>(i);
+    y.Region = region(blurBox[i], restrict);
     if (cascade && i == last)
     {
       y.Weight = level.Weight;
@@ -636,6 +614,17 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
   // 4. Accumulate.
   if (!cascade)
   {
+    Box full;
+    for (size_t i = 0; i < n; ++i)
+    {
+      if (c.Levels[i].Weight != 0.0)
+      {
+        full = full.Union(
+          Reach(&c.Levels[i].Full.X, &c.Levels[i].Full.Y, blurBox[i], c.Width, c.Height));
+      }
+    }
+    this->CompositeRegion = full;
+    this->CompositeRestricted = restrict;
     bool first = true;
     for (size_t i = 0; i < n; ++i)
     {
@@ -651,6 +640,7 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
         up.Blend = !first;
         up.Name = "accumulate";
         up.Level = static_cast<int>(i);
+        up.Region = region(this->CompositeRegion, restrict);
         this->Pass(&res.Full, zero, up);
         first = false;
       }
@@ -659,8 +649,10 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     {
       this->Clear(res.Full);
     }
+    this->EndCoverage(restrict);
     return true;
   }
+  accumBox[last] = blurBox[last];
   if (!lastAccumulated)
   {
     PassSpec scale;
@@ -669,6 +661,7 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     scale.Weight = c.Levels[last].Weight;
     scale.Name = "scale";
     scale.Level = static_cast<int>(last);
+    scale.Region = region(accumBox[last], restrict);
     this->Pass(&res.Accum[last], zero, scale);
   }
   for (size_t i = last; i-- > 0;)
@@ -680,6 +673,14 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     x.X = &level.Up.X;
     x.Name = "up-x";
     x.Level = static_cast<int>(i);
+    const int* below = res.Accum[i + 1].Size;
+    const Box xBox = Reach(&level.Up.X, nullptr, accumBox[i + 1], below[0], below[1]);
+    accumBox[i] = Reach(nullptr, &level.Up.Y, xBox, level.Size[0], level.Size[1]);
+    if (level.Weight != 0.0)
+    {
+      accumBox[i] = accumBox[i].Union(blurBox[i]);
+    }
+    x.Region = region(xBox, restrict);
     this->Pass(&res.Temp, zero, x);
     PassSpec y;
     y.Source = res.Temp.Color;
@@ -688,6 +689,7 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     y.Y = &level.Up.Y;
     y.Name = "up-y";
     y.Level = static_cast<int>(i);
+    y.Region = region(accumBox[i], restrict);
     if (level.Weight != 0.0)
     {
       y.Step = STEP_ADD;
@@ -696,7 +698,21 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     }
     this->Pass(&res.Accum[i], zero, y);
   }
+  this->CompositeRegion =
+    c.FinalIsIdentity ? accumBox[0] : Reach(&c.Final.X, &c.Final.Y, accumBox[0], c.Width, c.Height);
+  this->CompositeRestricted = restrict;
+  this->EndCoverage(restrict);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::EndCoverage(bool measured)
+{
+  this->Coverage = this->FullSamples > 0.0 ? this->ComputedSamples / this->FullSamples : 1.0;
+  if (measured && this->Coverage >= DenseCoverage)
+  {
+    this->FramesUntilProbe = ProbeInterval - 1;
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -712,6 +728,7 @@ void vtkBloomPassChainRunner::Composite(vtkBloomPassTarget* target, const int or
   composite.SourceSize = full;
   composite.CompositeBloom = bloom;
   composite.Name = "composite";
+  composite.Region = bloom && this->CompositeRestricted ? &this->CompositeRegion : nullptr;
   if (bloom && c.AccumulateMode == vtkImageBloom::DIRECT)
   {
     composite.Source = res.Full.Color;

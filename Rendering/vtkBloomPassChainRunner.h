@@ -8,7 +8,11 @@
  * segments: the operator's translation-invariant interior from uniform weights (OP_PERIODIC),
  * its borders from the operator's rows uploaded as a small R32F texture (OP_TABLE). One
  * program per variant (evaluation modes, interior taps, step, flags) is made on first use,
- * from the one shader file and #defines.
+ * from the one shader file and #defines: a fragment program, or for the passes into the
+ * chain's own targets where the context has OpenGL 4.3 a compute program of the same file
+ * (vtkBloomPassCompute.cxx). With Restrict each pass covers only the box its output can be
+ * non-zero in (vtkBloomPassRegion.cxx); with Fast the interiors run as bilinear pairs of taps
+ * (vtkBloomPassOperators.cxx).
  */
 
 #ifndef vtkBloomPassChainRunner_h
@@ -47,6 +51,32 @@ public:
    * scene only.
    */
   bool Run(vtkImageBloom* parameters, vtkTextureObject* emission, bool mask);
+
+  /**
+   * Settings of the next Run(): Fast runs the fast mode (vtkBloomPass::QUALITY_FAST: bilinear
+   * pairs of taps in the operators' interiors, on the half-float targets BuildChain made for
+   * it); Restrict makes every pass after the bright pass cover only the box its output can be
+   * non-zero in (vtkImageBloom::RestrictToBrightRegion, vtkBloomPassRegion.cxx).
+   */
+  bool Fast = false;
+  bool Restrict = false;
+
+  /**
+   * Run the chain's passes into its targets as compute shaders where the context has OpenGL
+   * 4.3 (vtkBloomPassCompute.cxx; vtkBloomPass::UseComputeShaders), and the bright region's
+   * reduction as one dispatch; else, and for the composite, fragment passes.
+   */
+  bool UseCompute = true;
+  int ComputePasses = 0; ///< passes drawn as compute since it was last set to 0
+
+  /**
+   * The last Run()'s bright region (the bounding box of the bright pass's non-zero samples, in
+   * level-0 samples, x0 x1 y0 y1 with x1, y1 past the end; all 0 when empty or not measured)
+   * and the samples its passes computed over those a full evaluation computes (1 when not
+   * restricted), the composite included.
+   */
+  int BrightRegion[4] = { 0, 0, 0, 0 };
+  double Coverage = 1.0;
 
   /**
    * out = keep * scene + Strength * Tint * bloom into `target`, or into the bound framebuffer
@@ -125,10 +155,32 @@ private:
     int First[2] = { 0, 0 };    ///< First of rows Begin and Begin + 1 (period 2)
     std::vector<float> Weights; ///< Period rows of Taps weights
 
+    /**
+     * The fast mode's bilinear pairs (0 when a weight is negative): taps 2 m and 2 m + 1 of
+     * each row as one bilinear fetch of weight w0 + w1 at offset 2 m + w1 / (w0 + w1).
+     */
+    int Pairs = 0;
+    std::vector<float> PairWeights; ///< Period rows of Pairs weights
+    std::vector<float> PairOffsets; ///< Period rows of Pairs offsets from First
+
     static Interior Find(const vtkBloomLinearOperator& op);
 
-    /// The #defines of OP_PERIODIC along `axis` ("X" or "Y"); the weights are uniforms.
-    std::string Defines(const char* axis) const;
+    /// The #defines of OP_PERIODIC along `axis` ("X" or "Y"), with bilinear pairs when
+    /// `linear`; the weights are uniforms.
+    std::string Defines(const char* axis, bool linear) const;
+  };
+
+  /// A box of samples [X0, X1) x [Y0, Y1); empty when X0 >= X1 or Y0 >= Y1.
+  struct Box
+  {
+    int X0 = 0;
+    int X1 = 0;
+    int Y0 = 0;
+    int Y1 = 0;
+    bool Empty() const { return this->X0 >= this->X1 || this->Y0 >= this->Y1; }
+    static Box Whole(int width, int height) { return { 0, width, 0, height }; }
+    Box Union(const Box& o) const;
+    Box Intersection(const Box& o) const;
   };
 
   // A range of output samples along one axis and how the pass evaluates it.
@@ -155,7 +207,51 @@ private:
     vtkTextureObject* Addend = nullptr; ///< STEP_ADD
     const char* Name = "pass";          ///< for the profile
     int Level = -1;                     ///< the pyramid level it writes, for the profile
+    const Box* Region = nullptr;        ///< restricted: the samples to compute, else all
+    bool ZeroBloom = false; ///< composite where the bloom is known zero (no operator taps)
   };
+
+  // Content-aware evaluation (vtkBloomPassRegion.cxx).
+
+  /**
+   * The output samples of `x` (along x) and `y` (along y) that read any input sample of `in`:
+   * outside it the pass reads only zeros. A null operator is the identity.
+   */
+  static Box Reach(const vtkBloomLinearOperator* x, const vtkBloomLinearOperator* y, const Box& in,
+    int width, int height);
+
+  /**
+   * Reduce the bright level to the box of its non-zero samples: one compute dispatch where the
+   * context has OpenGL 4.3 (MeasureBrightRegionByCompute), else two or three small fragment
+   * passes; then a read-back of a few bytes (or kilobytes).
+   */
+  Box MeasureBrightRegion();
+  bool MeasureBrightRegionByCompute(Box& box);
+  void ReleaseCompute();
+  unsigned int ReduceProgram = 0; ///< the compute program; 0: not made yet
+  unsigned int ReduceBuffer = 0;  ///< its four integers
+  int ComputeState = 0;           ///< 0 not made, 1 made, -1 it failed
+
+  /**
+   * Before a pass that replaces `target`'s samples in `region` (null: all of width x height):
+   * clear what the target holds outside it, so that it is zero there, and record what it holds.
+   */
+  void PrepareTarget(vtkBloomPassTarget& target, const Box* region, int width, int height);
+
+  /**
+   * Coverage of the last evaluation; when it was measured and at least DenseCoverage, the
+   * next ProbeInterval - 1 evaluations run the full chain without measuring the region.
+   */
+  void EndCoverage(bool measured);
+  static constexpr double DenseCoverage = 0.25;
+  static constexpr int ProbeInterval = 8;
+  int FramesUntilProbe = 0;
+
+  /// The region of the bloom term within the composite's output; outside it the bloom is zero.
+  Box CompositeRegion;
+  bool CompositeRestricted = false;
+  double ComputedSamples = 0.0;
+  double FullSamples = 0.0;
 
   vtkTextureObject* OperatorTexture(const vtkBloomLinearOperator& op);
   const Interior& InteriorOf(const vtkBloomLinearOperator& op);
@@ -167,12 +263,61 @@ private:
   vtkOpenGLQuadHelper* Program(const std::string& variant);
   std::string Variant(const PassSpec& spec, int xMode, int yMode);
 
+  /// Whether the pass evaluates `op`'s interior with bilinear pairs (the fast mode).
+  bool Linear(const PassSpec& spec, const vtkBloomLinearOperator* op);
+
   /**
    * One pass into `target` (or the bound framebuffer when null, at `origin`): one draw per
    * combination of x and y segments, each with the program of its evaluation modes.
    */
   void Pass(vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec);
-  void SetStepUniforms(vtkShaderProgram* program, int step);
+  /**
+   * Sets one program's uniforms by name (unused ones are skipped): a VTK program (the fragment
+   * passes) or a compute program of plain OpenGL (VTK 9.1's shader classes have no compute
+   * stage), whose locations it caches.
+   */
+  struct Uniforms
+  {
+    vtkShaderProgram* Program = nullptr;
+    unsigned int Raw = 0;
+    std::map<std::string, int>* Locations = nullptr;
+
+    int Location(const char* name);
+    void Int(const char* name, int value);
+    void Float(const char* name, double value);
+    void Int2(const char* name, const int values[2]);
+    void Float2(const char* name, const float values[2]);
+    void Float3(const char* name, const double values[3]);
+    void Ints(const char* name, int count, const int* values);
+    void Floats(const char* name, int count, const float* values);
+  };
+  void SetStepUniforms(Uniforms& uniforms, int step);
+
+  // The compute passes (vtkBloomPassCompute.cxx).
+  struct ComputeProgram
+  {
+    unsigned int Id = 0; ///< 0: it did not build
+    std::map<std::string, int> Locations;
+  };
+  std::map<std::string, ComputeProgram> ComputePrograms;
+
+  /// Whether the context runs compute shaders (OpenGL 4.3), asked once.
+  bool ComputeSupported();
+  int ComputeSupport = 0; ///< 0 not asked, 1 yes, -1 no
+
+  /// Whether `spec` into `target` runs as a compute pass.
+  bool Computes(vtkBloomPassTarget* target, const PassSpec& spec);
+
+  /// The compute program of one variant (vtkBloomPassFS.glsl with COMPUTE), made on first use.
+  ComputeProgram* Compute(const std::string& variant, bool blend);
+
+  /// Bind `target` as image unit 0 and dispatch one invocation per sample of `rect`.
+  void Dispatch(vtkBloomPassTarget& target, bool blend, const Box& rect);
+
+  /// After a pass's dispatches: their writes visible to what reads the target next.
+  void EndCompute();
+
+  bool CountingSamples = false; ///< the occlusion query is open: fragment passes only
   void Clear(vtkBloomPassTarget& target);
 
   vtkObject* Owner;

@@ -25,9 +25,10 @@ vtkBloomPassSavedState::vtkBloomPassSavedState(vtkOpenGLState* state)
 
 //------------------------------------------------------------------------------
 void vtkBloomPassTarget::Allocate(
-  vtkOpenGLRenderWindow* context, int width, int height, unsigned int format)
+  vtkOpenGLRenderWindow* context, int width, int height, unsigned int format, bool linear)
 {
-  if (this->Color && this->Size[0] == width && this->Size[1] == height)
+  if (this->Color && this->Size[0] == width && this->Size[1] == height &&
+    this->Color->GetInternalFormat(VTK_FLOAT, 4, false) == format)
   {
     return;
   }
@@ -35,8 +36,9 @@ void vtkBloomPassTarget::Allocate(
   this->Color = vtkSmartPointer<vtkTextureObject>::New();
   this->Color->SetContext(context);
   this->Color->SetInternalFormat(format);
-  this->Color->SetMinificationFilter(vtkTextureObject::Nearest);
-  this->Color->SetMagnificationFilter(vtkTextureObject::Nearest);
+  this->Color->SetMinificationFilter(linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+  this->Color->SetMagnificationFilter(
+    linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
   this->Color->SetWrapS(vtkTextureObject::ClampToEdge);
   this->Color->SetWrapT(vtkTextureObject::ClampToEdge);
   this->Color->Allocate2D(width, height, 4, VTK_FLOAT);
@@ -49,6 +51,10 @@ void vtkBloomPassTarget::Allocate(
   context->GetState()->PopFramebufferBindings();
   this->Size[0] = width;
   this->Size[1] = height;
+  // Undefined content: dirty everywhere until a pass or a clear says otherwise.
+  this->Dirty[0] = this->Dirty[2] = 0;
+  this->Dirty[1] = width;
+  this->Dirty[3] = height;
 }
 
 //------------------------------------------------------------------------------
@@ -131,36 +137,39 @@ void vtkBloomPassResources::AllocateScene(int width, int height, bool emitters)
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassResources::ChainIsStale(vtkImageBloom* parameters, int width, int height) const
+bool vtkBloomPassResources::ChainIsStale(
+  vtkImageBloom* parameters, int width, int height, bool fast) const
 {
-  // The chain depends on the size and the parameters only.
+  // The chain depends on the size, the parameters and the quality only.
   return this->ChainTime == 0 || this->ChainTime < parameters->GetMTime() ||
-    this->Chain.Width != width || this->Chain.Height != height;
+    this->Chain.Width != width || this->Chain.Height != height || this->ChainIsFast != fast;
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassResources::BuildChain(vtkImageBloom* parameters, int width, int height)
+void vtkBloomPassResources::BuildChain(vtkImageBloom* parameters, int width, int height, bool fast)
 {
   vtkOpenGLRenderWindow* window = this->Context;
   const vtkMTimeType parametersTime = parameters->GetMTime();
   this->ReleaseChain(window);
   this->Chain.Build(parameters, width, height);
   this->ChainTime = parametersTime;
+  this->ChainIsFast = fast;
   const size_t n = this->Chain.Levels.size();
-  // The scene is stored at the requested precision; the chain always runs on 32-bit floats,
-  // so that half-float rounding does not compound over its dozen passes.
-  const unsigned int chainFormat = GL_RGBA32F;
+  // The scene is stored at the requested precision; the exact chain always runs on 32-bit
+  // floats, so that half-float rounding does not compound over its dozen passes. The fast
+  // chain runs on half floats, read through bilinear filtering.
+  const unsigned int chainFormat = fast ? GL_RGBA16F : GL_RGBA32F;
   this->Levels.resize(n);
   this->Work.resize(n);
   this->Accum.resize(this->Chain.AccumulateMode == vtkImageBloom::CASCADE ? n : 0);
   for (size_t i = 0; i < n; ++i)
   {
     const int* size = this->Chain.Levels[i].Size;
-    this->Levels[i].Allocate(window, size[0], size[1], chainFormat);
-    this->Work[i].Allocate(window, size[0], size[1], chainFormat);
+    this->Levels[i].Allocate(window, size[0], size[1], chainFormat, fast);
+    this->Work[i].Allocate(window, size[0], size[1], chainFormat, fast);
     if (!this->Accum.empty())
     {
-      this->Accum[i].Allocate(window, size[0], size[1], chainFormat);
+      this->Accum[i].Allocate(window, size[0], size[1], chainFormat, fast);
     }
   }
   if (n > 0)
@@ -168,10 +177,10 @@ void vtkBloomPassResources::BuildChain(vtkImageBloom* parameters, int width, int
     // The x passes run on the levels only (the source fetch and the final resample are
     // two-dimensional passes), so level 0 is the largest intermediate.
     this->Temp.Allocate(
-      window, this->Chain.Levels[0].Size[0], this->Chain.Levels[0].Size[1], chainFormat);
+      window, this->Chain.Levels[0].Size[0], this->Chain.Levels[0].Size[1], chainFormat, fast);
     if (this->Chain.AccumulateMode == vtkImageBloom::DIRECT)
     {
-      this->Full.Allocate(window, width, height, chainFormat);
+      this->Full.Allocate(window, width, height, chainFormat, fast);
     }
   }
 }
@@ -179,7 +188,7 @@ void vtkBloomPassResources::BuildChain(vtkImageBloom* parameters, int width, int
 //------------------------------------------------------------------------------
 void vtkBloomPassResources::ReleaseChain(vtkWindow* w)
 {
-  for (auto* list : { &this->Levels, &this->Work, &this->Accum })
+  for (auto* list : { &this->Levels, &this->Work, &this->Accum, &this->Reduce })
   {
     for (auto& t : *list)
     {

@@ -48,8 +48,18 @@ struct vtkBloomPassTarget
   vtkSmartPointer<vtkOpenGLFramebufferObject> FBO;
   int Size[2] = { 0, 0 };
 
-  /// Make the target at width x height in `format`, unless it already has that size.
-  void Allocate(vtkOpenGLRenderWindow* context, int width, int height, unsigned int format);
+  /**
+   * Content-aware passes (vtkBloomPassRegion.cxx): the texture is zero outside the box
+   * [Dirty[0], Dirty[1]) x [Dirty[2], Dirty[3]). A new texture is dirty everywhere.
+   */
+  int Dirty[4] = { 0, 0, 0, 0 };
+
+  /**
+   * Make the target at width x height in `format`, unless it already has that size and
+   * format; `linear` turns on bilinear filtering (the fast mode's taps; texelFetch ignores it).
+   */
+  void Allocate(vtkOpenGLRenderWindow* context, int width, int height, unsigned int format,
+    bool linear = false);
   void Release(vtkWindow* window);
 
   /**
@@ -89,6 +99,7 @@ public:
   std::vector<vtkBloomPassTarget> Accum;  // CASCADE accumulation A_i
   vtkBloomPassTarget Temp;                // the output of every x pass, at most the size of level 0
   vtkBloomPassTarget Full;                // DIRECT: the full-size bloom
+  std::vector<vtkBloomPassTarget> Reduce; // the bright region's reduction (RGBA32F boxes)
 
   /**
    * Make the scene target at width x height in Format, and the emitters' when `emitters`
@@ -97,10 +108,14 @@ public:
   void AllocateScene(int width, int height, bool emitters);
 
   /// Whether the chain was built for older parameters or for another size.
-  bool ChainIsStale(vtkImageBloom* parameters, int width, int height) const;
+  bool ChainIsStale(vtkImageBloom* parameters, int width, int height, bool fast) const;
 
-  /// Build the chain for `parameters` at width x height and make its targets.
-  void BuildChain(vtkImageBloom* parameters, int width, int height);
+  /**
+   * Build the chain for `parameters` at width x height and make its targets: RGBA32F, or
+   * with `fast` RGBA16F with bilinear filtering (vtkBloomPass::QUALITY_FAST).
+   */
+  void BuildChain(vtkImageBloom* parameters, int width, int height, bool fast);
+  bool ChainIsFast = false;
 
   void ReleaseChain(vtkWindow* w);
   void ReleaseAll(vtkWindow* w);

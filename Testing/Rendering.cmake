@@ -24,3 +24,10 @@ vtkbloom_add_gtest(TestBloomPassHardCases OPENGL
     VTKBloom::IOOpenEXR VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonDataModel
     VTK::CommonCore VTK::opengl)
 vtk_module_autoinit(TARGETS TestBloomPassHardCases MODULES VTK::RenderingOpenGL2)
+
+# The content-aware chain against the full chain, bit for bit, and the fast mode.
+vtkbloom_add_gtest(TestBloomPassRegion OPENGL
+  SOURCES Rendering/TestBloomPassRegion.cxx
+  LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom
+    VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonDataModel VTK::CommonCore VTK::opengl)
+vtk_module_autoinit(TARGETS TestBloomPassRegion MODULES VTK::RenderingOpenGL2)

@@ -7,12 +7,24 @@
 #
 #   gpu.txt          the GPU, its driver and the OpenGL renderer the pass ran on
 #   ctest.log        ctest -R '^Rendering' (every rendering test), and ctest.xml (JUnit)
-#   frametime.md     BloomPassFrameTime: every scene and preset at 1920x1080 and 3840x2160,
-#                    GPU timer and wall clock, median of $FRAMES (default 50) frames
-#   profile.md       the per-pass GPU profile of the default preset at 3840x2160, every scene
+#   frametime.md     BloomPassFrameTime: every scene and preset (or $PRESETS) at 1920x1080 and
+#                    3840x2160, GPU timer and wall clock, median of $FRAMES (default 50) frames;
+#                    then the default preset in the fast mode
+#   profile.md       the per-pass GPU profile of the default preset at 3840x2160, every scene,
+#                    then of lit-spheres in the fast mode (QUALITY_FAST)
+#   quality.md       the exact pass and the fast mode for every preset at 3840x2160: GPU time
+#                    over the floor and error against each other and vtkImageBloom REFERENCE
+#                    (and quality.csv, for scripts/plot-gpu-quality.py)
+#   sparse.md        sparse scenes (0 %, 0.1 %, 1 %, 10 % bright) at 3840x2160: the full chain
+#                    against the content-aware one, exact and fast
+#   sync.md          the cost of the pass's one wait for the GPU (BloomPassFrameTime --sync)
+#   stages.md        ShaderStageThroughput: one full-screen pass as a fragment and as a compute
+#                    shader at 3840x2160
 #   render.png       `vtk-bloom render` of lit-spheres at 3840x2160
 #   run.log          everything printed
 #
+# STEPS (default "tests frametime profile quality sparse sync stages render") picks the
+# steps. At most 8 files come back from the device tool: pick fewer steps there.
 # The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
 # CUDA image) and the pack at the absolute paths it was built with.
 set -uo pipefail
@@ -20,6 +32,9 @@ cd "${VTKBLOOM_GPU_ROOT:-$PWD}" || exit 1
 OUT=${OUT:-$(mktemp -d)}
 mkdir -p "$OUT"
 FRAMES=${FRAMES:-50}
+STEPS=${STEPS:-tests frametime profile quality sparse sync stages render}
+PRESETS=${PRESETS:-all}
+step() { [[ " $STEPS " == *" $1 "* ]]; }
 exec > >(tee "$OUT/run.log") 2>&1
 
 for f in .gl/*.deb; do dpkg -x "$f" /; done
@@ -48,6 +63,8 @@ missing=$(ldd "$bin"/* | grep 'not found' | sort -u)
   "$bin/BloomPassFrameTime" --info
 } | tee "$OUT/gpu.txt"
 
+status=0
+if step tests; then
 echo "== rendering tests"
 export CI=true # a test whose data is missing fails instead of skipping
 if command -v ctest >/dev/null 2>&1; then
@@ -57,29 +74,70 @@ if command -v ctest >/dev/null 2>&1; then
 else
   # No CMake there: the test executables themselves, in their CTest working directory.
   status=0
-  for t in TestBloomPass TestBloomPassHardCases; do
+  for t in TestBloomPass TestBloomPassHardCases TestBloomPassRegion; do
     (cd "$VTKBLOOM_GPU_BUILD/Testing" && timeout 600 "$bin/$t") 2>&1 | tee -a "$OUT/ctest.log"
     [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
   done
 fi
+fi
 
+if step frametime; then
 echo "== frame time"
 {
   echo "GPU timer (GL_TIME_ELAPSED) and wall clock (Render, glFinish), median of $FRAMES frames"
   echo
   for size in "1920 1080" "3840 2160"; do
     # shellcheck disable=SC2086
-    timeout 300 "$bin/BloomPassFrameTime" all $size "$FRAMES" all
+    timeout 300 "$bin/BloomPassFrameTime" all $size "$FRAMES" "$PRESETS"
+    echo
+  done
+  echo "The fast mode (QUALITY_FAST), vtkImageBloom's defaults"
+  echo
+  for size in "1920 1080" "3840 2160"; do
+    # shellcheck disable=SC2086
+    timeout 300 "$bin/BloomPassFrameTime" --fast all $size "$FRAMES" default
     echo
   done
 } | tee "$OUT/frametime.md"
+fi
 
+if step profile; then
 echo "== per-pass profile"
-timeout 300 "$bin/BloomPassFrameTime" --profile all 3840 2160 "$FRAMES" default |
-  tee "$OUT/profile.md"
+{
+  timeout 300 "$bin/BloomPassFrameTime" --profile all 3840 2160 "$FRAMES" default
+  timeout 120 "$bin/BloomPassFrameTime" --fast --profile lit-spheres 3840 2160 "$FRAMES" default
+} | tee "$OUT/profile.md"
+fi
 
+if step quality; then
+echo "== exact and fast"
+timeout 400 "$bin/BloomPassFrameTime" --quality lit-spheres 3840 2160 "$FRAMES" \
+  "$OUT/quality.csv" | tee "$OUT/quality.md"
+fi
+
+if step sparse; then
+echo "== sparse scenes"
+{
+  timeout 200 "$bin/BloomPassFrameTime" --sparse 3840 2160 "$FRAMES"
+  echo
+  timeout 200 "$bin/BloomPassFrameTime" --sparse 3840 2160 "$FRAMES" fast
+} | tee "$OUT/sparse.md"
+fi
+
+if step sync; then
+echo "== the wait for the GPU"
+timeout 120 "$bin/BloomPassFrameTime" --sync lit-spheres 3840 2160 "$FRAMES" | tee "$OUT/sync.md"
+fi
+
+if step stages; then
+echo "== fragment and compute shaders"
+timeout 120 "$bin/ShaderStageThroughput" 3840 2160 "$FRAMES" | tee "$OUT/stages.md"
+fi
+
+if step render; then
 echo "== vtk-bloom render"
 timeout 120 "$bin/vtk-bloom" render --size 3840x2160 lit-spheres "$OUT/render.png" &&
   ls -la "$OUT/render.png"
+fi
 echo "gpu-run: ctest status $status"
 exit "$status"

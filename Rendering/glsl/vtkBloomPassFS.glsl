@@ -27,11 +27,30 @@
   border clamping are already folded into the weights, so no hardware filtering is involved
   and odd sizes behave exactly as on the CPU. Zero weights are skipped, so 0 * Inf never makes
   a NaN.
+
+  The fast mode (vtkBloomPass::QUALITY_FAST; X_LINEAR / Y_LINEAR) evaluates an OP_PERIODIC
+  interior by pairs of taps instead: taps 2m and 2m + 1 of weights w0, w1 >= 0 as one bilinear
+  fetch of weight w0 + w1 at offset 2m + w1 / (w0 + w1) (the hardware's interpolation weights
+  have a few bits only: an approximation).
+
+  ZERO_BLOOM: the composite where the content-aware chain knows the bloom is zero; the bloom
+  is a uniform zero (not a constant, which the compiler could fold), so the result is the
+  full composite's bit for bit.
+
+  COMPUTE: the same pass as a compute shader (OpenGL 4.3; vtkBloomPass::UseComputeShaders),
+  one invocation per output sample of the draw's region, written with imageStore into the
+  target bound as image unit 0 (IMAGE_FORMAT); BLEND adds to what the target holds, as the
+  fragment pass's GL_ONE, GL_ONE blending does.
 =========================================================================*/
 
 //VTK::Output::Dec
 
+#ifdef COMPUTE
+layout(local_size_x = 16, local_size_y = 16) in;
+layout(IMAGE_FORMAT, binding = 0) uniform image2D target;
+#else
 in vec2 texCoord;
+#endif
 
 //BLOOM::Constants
 
@@ -42,6 +61,19 @@ uniform ivec2 regionOffset; // the first output sample this draw computes
 uniform vec2 regionSize;    // the samples this draw computes, the size of the viewport
 uniform float weight;       // SCALE, KARIS_TERM and ADD weight
 
+#ifndef X_LINEAR
+#define X_LINEAR 0
+#endif
+#ifndef Y_LINEAR
+#define Y_LINEAR 0
+#endif
+#ifndef ZERO_BLOOM
+#define ZERO_BLOOM 0
+#endif
+#if X_LINEAR || Y_LINEAR
+uniform vec2 sourceTexel; // 1 / the source texture's size
+#endif
+
 #if X_MODE == OP_TABLE
 uniform sampler2D xRows;
 uniform int xWidth;
@@ -50,8 +82,11 @@ uniform int xWidth;
 #define X_ALL 0u
 #elif X_MODE == OP_PERIODIC
 uniform int xInterior[3]; // first interior output sample, First of its first two rows
-uniform float xWeights[X_PERIOD * X_TAPS];
-#define X_COUNT X_TAPS
+uniform float xWeights[X_PERIOD * X_ROW];
+#if X_LINEAR
+uniform float xOffsets[X_PERIOD * X_ROW];
+#endif
+#define X_COUNT X_ROW
 #else
 #define X_COUNT 1
 #define X_ANY 1u
@@ -66,8 +101,11 @@ uniform int yWidth;
 #define Y_ALL 0u
 #elif Y_MODE == OP_PERIODIC
 uniform int yInterior[3];
-uniform float yWeights[Y_PERIOD * Y_TAPS];
-#define Y_COUNT Y_TAPS
+uniform float yWeights[Y_PERIOD * Y_ROW];
+#if Y_LINEAR
+uniform float yOffsets[Y_PERIOD * Y_ROW];
+#endif
+#define Y_COUNT Y_ROW
 #else
 #define Y_COUNT 1
 #define Y_ANY 1u
@@ -99,6 +137,9 @@ uniform sampler2D scene;
 uniform float keep;
 uniform vec3 strengthTint;
 uniform float largest; // largest finite value of the output target
+#if ZERO_BLOOM
+uniform float zeroBloom;
+#endif
 #endif
 
 // First sample and phase of the output sample j along each axis.
@@ -128,7 +169,7 @@ float weightX(int j, int k)
 #if X_PERIOD == 1
   return xWeights[k];
 #else
-  return xPhase == 0 ? xWeights[k] : xWeights[X_TAPS + k];
+  return xPhase == 0 ? xWeights[k] : xWeights[X_ROW + k];
 #endif
 #else
   return 1.0;
@@ -156,12 +197,41 @@ float weightY(int j, int k)
 #if Y_PERIOD == 1
   return yWeights[k];
 #else
-  return yPhase == 0 ? yWeights[k] : yWeights[Y_TAPS + k];
+  return yPhase == 0 ? yWeights[k] : yWeights[Y_ROW + k];
 #endif
 #else
   return 1.0;
 #endif
 }
+
+#if X_LINEAR || Y_LINEAR
+// Position of tap (or pair) k along each axis, in texels.
+float positionX(int k)
+{
+#if X_LINEAR
+#if X_PERIOD == 1
+  return float(xFirst) + xOffsets[k];
+#else
+  return float(xFirst) + (xPhase == 0 ? xOffsets[k] : xOffsets[X_ROW + k]);
+#endif
+#else
+  return float(xFirst + k);
+#endif
+}
+
+float positionY(int k)
+{
+#if Y_LINEAR
+#if Y_PERIOD == 1
+  return float(yFirst) + yOffsets[k];
+#else
+  return float(yFirst) + (yPhase == 0 ? yOffsets[k] : yOffsets[Y_ROW + k]);
+#endif
+#else
+  return float(yFirst + k);
+#endif
+}
+#endif
 
 // The chain's source as vtkImageBloom reads its input: with SanitizeNonFinite, NaN becomes 0
 // and +-Inf the largest finite float, before any resampling.
@@ -247,9 +317,19 @@ vec4 finite(vec4 v)
 void main()
 {
   // The output sample this fragment computes; texCoord spans the draw's region.
+#ifdef COMPUTE
+  if (any(greaterThanEqual(vec2(gl_GlobalInvocationID.xy), regionSize)))
+  {
+    return;
+  }
+  ivec2 p = regionOffset + ivec2(gl_GlobalInvocationID.xy);
+#else
   ivec2 p = regionOffset + ivec2(floor(texCoord * regionSize));
+#endif
 
-#if STEP != STEP_COMPOSITE || COMPOSITE_BLOOM
+#if ZERO_BLOOM
+  vec4 sum = vec4(zeroBloom);
+#elif STEP != STEP_COMPOSITE || COMPOSITE_BLOOM
   setUpX(p.x);
   setUpY(p.y);
   vec4 sum = vec4(0.0);
@@ -265,7 +345,11 @@ void main()
         float wx = weightX(p.x, kx);
         if (((X_ANY >> kx) & 1u) != 0u && (((X_ALL >> kx) & 1u) != 0u || wx != 0.0))
         {
+#if X_LINEAR || Y_LINEAR
+          row += wx * textureLod(source, (vec2(positionX(kx), positionY(ky)) + 0.5) * sourceTexel, 0.0);
+#else
           row += wx * fetchSource(ivec2(xFirst + kx, yFirst + ky));
+#endif
         }
       }
       sum += wy * row;
@@ -314,8 +398,19 @@ void main()
   // The target was cleared to zero; an occlusion query counts the samples that are not.
   if (all(equal(result, vec4(0.0))))
   {
+#ifdef COMPUTE
+    return;
+#else
     discard;
+#endif
   }
 #endif
+#ifdef COMPUTE
+#if BLEND
+  result += imageLoad(target, p);
+#endif
+  imageStore(target, p, result);
+#else
   gl_FragData[0] = result;
+#endif
 }

@@ -186,6 +186,9 @@ TEST(RenderingBloomPass, SkipsAnEmptyBloomExactly)
     vtkImageBloom* p = w.Bloom->GetParameters();
     p->SetThreshold(1e30);
     p->SetSkipEmptyBloom(skip);
+    // The occlusion query's path; the bright region's reduction (RestrictToBrightRegion) has
+    // its own tests in TestBloomPassRegion.cxx.
+    p->SetRestrictToBrightRegion(false);
     w.Window->Render();
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     EXPECT_EQ(w.Bloom->GetLastBloomSkipped(), skip);

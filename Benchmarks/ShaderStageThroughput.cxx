@@ -1,0 +1,195 @@
+// The same full-screen work as a fragment-shader pass and as a compute dispatch, timed by
+// the GPU (GL_TIME_ELAPSED, median of FRAMES runs): a 1-tap (a copy) and a 9-tap horizontal
+// filter of an RGBA16F image into another, the kind of pass vtkBloomPass's chain is made of.
+// It measures what bounds a chain of fragment passes on a GPU whose fragment shading runs on
+// part of the chip only (an NVIDIA H100: docs/gpu.md).
+//
+//   ShaderStageThroughput [WIDTH HEIGHT [FRAMES]]      (default 3840 2160 50)
+//
+// It needs OpenGL 4.3 (compute shaders); it prints a markdown table, or says why not.
+#include "vtkBloomMedian.h"
+
+#include "StageThroughputCS.h"
+#include "StageThroughputFS.h"
+#include "StageThroughputVS.h"
+
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderWindow.h"
+#include "vtk_glew.h"
+
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <vector>
+
+namespace
+{
+GLuint Compile(GLenum stage, const std::string& text)
+{
+  const GLuint shader = glCreateShader(stage);
+  const char* source = text.c_str();
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint ok = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+  if (!ok)
+  {
+    char log[2048];
+    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
+    std::fprintf(stderr, "shader: %s\n", log);
+  }
+  return shader;
+}
+
+// The shader text with TAPS defined after its #version line.
+std::string WithTaps(const char* text, int taps)
+{
+  std::string s = text;
+  const size_t eol = s.find('\n');
+  return s.substr(0, eol + 1) + "#define TAPS " + std::to_string(taps) + "\n" + s.substr(eol + 1);
+}
+
+GLuint Link(std::vector<GLuint> shaders)
+{
+  const GLuint program = glCreateProgram();
+  for (GLuint s : shaders)
+  {
+    glAttachShader(program, s);
+  }
+  glLinkProgram(program);
+  for (GLuint s : shaders)
+  {
+    glDeleteShader(s);
+  }
+  return program;
+}
+
+GLuint Texture(int w, int h, const std::vector<float>* data)
+{
+  GLuint t = 0;
+  glGenTextures(1, &t);
+  glBindTexture(GL_TEXTURE_2D, t);
+  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, w, h);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  if (data)
+  {
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, data->data());
+  }
+  return t;
+}
+}
+
+int main(int argc, char* argv[])
+{
+  const int w = argc > 2 ? std::atoi(argv[1]) : 3840;
+  const int h = argc > 2 ? std::atoi(argv[2]) : 2160;
+  const int frames = argc > 3 ? std::atoi(argv[3]) : 50;
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetSize(64, 64);
+  auto* gl = vtkOpenGLRenderWindow::SafeDownCast(window);
+  if (!gl)
+  {
+    std::printf("no OpenGL render window\n");
+    return 1;
+  }
+  gl->Initialize();
+  gl->MakeCurrent();
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  if (major * 10 + minor < 43)
+  {
+    std::printf("OpenGL %d.%d: no compute shaders\n", major, minor);
+    return 0;
+  }
+  std::vector<float> pixels(static_cast<size_t>(w) * h * 4);
+  for (size_t i = 0; i < pixels.size(); ++i)
+  {
+    pixels[i] = static_cast<float>(i % 97) * 0.01f;
+  }
+  const GLuint source = Texture(w, h, &pixels);
+  const GLuint target = Texture(w, h, nullptr);
+  GLuint fbo = 0, vao = 0, query = 0;
+  glGenFramebuffers(1, &fbo);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, target, 0);
+  glGenVertexArrays(1, &vao);
+  glGenQueries(1, &query);
+  glDisable(GL_DEPTH_TEST);
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+  const double mb = 2.0 * 8.0 * w * h * 1e-6; // read once, written once
+  std::printf("%dx%d RGBA16F into RGBA16F, GPU time (GL_TIME_ELAPSED), median of %d\n\n| work "
+              "| fragment shader | compute shader | fragment / compute | compulsory MB |\n"
+              "|---|---|---|---|---|\n",
+    w, h, frames);
+  for (const int taps : { 1, 9 })
+  {
+    const GLuint fragment = Link({ Compile(GL_VERTEX_SHADER, StageThroughputVS),
+      Compile(GL_FRAGMENT_SHADER, WithTaps(StageThroughputFS, taps)) });
+    const GLuint compute = Link({ Compile(GL_COMPUTE_SHADER, WithTaps(StageThroughputCS, taps)) });
+    double ms[2];
+    std::vector<float> results[2];
+    for (int stage = 0; stage < 2; ++stage)
+    {
+      std::vector<double> times;
+      for (int f = -3; f < frames; ++f)
+      {
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, source);
+        glBeginQuery(GL_TIME_ELAPSED, query);
+        if (stage == 0)
+        {
+          glUseProgram(fragment);
+          glUniform1i(glGetUniformLocation(fragment, "source"), 0);
+          glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+          glViewport(0, 0, w, h);
+          glBindVertexArray(vao);
+          glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
+        else
+        {
+          glUseProgram(compute);
+          glUniform1i(glGetUniformLocation(compute, "source"), 0);
+          glBindImageTexture(0, target, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+          glDispatchCompute((w + 15) / 16, (h + 15) / 16, 1);
+          glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
+        }
+        glEndQuery(GL_TIME_ELAPSED);
+        GLuint64 ns = 0;
+        glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+        if (f >= 0)
+        {
+          times.push_back(1e-6 * static_cast<double>(ns));
+        }
+      }
+      ms[stage] = vtkBloomMedian(times);
+      // The last run's output, to check that both stages computed the same thing.
+      results[stage].resize(pixels.size());
+      glBindTexture(GL_TEXTURE_2D, target);
+      glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, results[stage].data());
+    }
+    if (results[0] != results[1])
+    {
+      std::printf("the fragment and compute outputs differ\n");
+      return 1;
+    }
+    std::printf("| %d-tap horizontal filter | %.4f ms (%.0f GB/s) | %.4f ms (%.0f GB/s) | %.1f | "
+                "%.1f |\n",
+      taps, ms[0], mb / ms[0], ms[1], mb / ms[1], ms[0] / ms[1], mb);
+    glDeleteProgram(fragment);
+    glDeleteProgram(compute);
+  }
+  glUseProgram(0);
+  glBindVertexArray(0);
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  glDeleteVertexArrays(1, &vao);
+  glDeleteFramebuffers(1, &fbo);
+  glDeleteQueries(1, &query);
+  const GLuint textures[] = { source, target };
+  glDeleteTextures(2, textures);
+  return 0;
+}

@@ -1,0 +1,217 @@
+// vtkBloomPass's chain as compute shaders (OpenGL 4.3): the same vtkBloomPassFS.glsl compiled
+// with COMPUTE, one invocation per output sample, written with imageStore. On a GPU whose
+// fragment shading runs on part of the chip only (an NVIDIA H100: docs/gpu.md), a compute pass
+// does the same work many times faster. VTK 9.1's shader classes have no compute stage, so the
+// programs are plain OpenGL; their uniforms go through vtkBloomPassChainRunner::Uniforms.
+#include "vtkBloomPassChainRunner.h"
+
+#include "vtkBloomPassFS.h"
+#include "vtkBloomPassResources.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <string>
+
+//------------------------------------------------------------------------------
+int vtkBloomPassChainRunner::Uniforms::Location(const char* name)
+{
+  if (this->Program)
+  {
+    return this->Program->IsUniformUsed(name) ? 0 : -1;
+  }
+  auto found = this->Locations->find(name);
+  if (found == this->Locations->end())
+  {
+    found = this->Locations->emplace(name, glGetUniformLocation(this->Raw, name)).first;
+  }
+  return found->second;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::Uniforms::Int(const char* name, int value)
+{
+  const int at = this->Location(name);
+  if (at >= 0 && this->Program)
+  {
+    this->Program->SetUniformi(name, value);
+  }
+  else if (at >= 0)
+  {
+    glUniform1i(at, value);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::Uniforms::Float(const char* name, double value)
+{
+  const int at = this->Location(name);
+  if (at >= 0 && this->Program)
+  {
+    this->Program->SetUniformf(name, static_cast<float>(value));
+  }
+  else if (at >= 0)
+  {
+    glUniform1f(at, static_cast<float>(value));
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::Uniforms::Int2(const char* name, const int values[2])
+{
+  const int at = this->Location(name);
+  if (at >= 0 && this->Program)
+  {
+    this->Program->SetUniform2i(name, values);
+  }
+  else if (at >= 0)
+  {
+    glUniform2i(at, values[0], values[1]);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::Uniforms::Float2(const char* name, const float values[2])
+{
+  const int at = this->Location(name);
+  if (at >= 0 && this->Program)
+  {
+    this->Program->SetUniform2f(name, values);
+  }
+  else if (at >= 0)
+  {
+    glUniform2f(at, values[0], values[1]);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::Uniforms::Float3(const char* name, const double values[3])
+{
+  const float v[3] = { static_cast<float>(values[0]), static_cast<float>(values[1]),
+    static_cast<float>(values[2]) };
+  const int at = this->Location(name);
+  if (at >= 0 && this->Program)
+  {
+    this->Program->SetUniform3f(name, v);
+  }
+  else if (at >= 0)
+  {
+    glUniform3f(at, v[0], v[1], v[2]);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::Uniforms::Ints(const char* name, int count, const int* values)
+{
+  const int at = this->Location(name);
+  if (at >= 0 && this->Program)
+  {
+    this->Program->SetUniform1iv(name, count, values);
+  }
+  else if (at >= 0)
+  {
+    glUniform1iv(at, count, values);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::Uniforms::Floats(const char* name, int count, const float* values)
+{
+  const int at = this->Location(name);
+  if (at >= 0 && this->Program)
+  {
+    this->Program->SetUniform1fv(name, count, values);
+  }
+  else if (at >= 0)
+  {
+    glUniform1fv(at, count, values);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::ComputeSupported()
+{
+  if (this->ComputeSupport == 0)
+  {
+    GLint major = 0, minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    this->ComputeSupport = major * 10 + minor >= 43 && glDispatchCompute ? 1 : -1;
+  }
+  return this->ComputeSupport > 0;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::Computes(vtkBloomPassTarget* target, const PassSpec& spec)
+{
+  // The composite draws into the window (or the captured result) and the bright pass under an
+  // occlusion query counts fragments: both stay fragment passes.
+  return this->UseCompute && target && spec.Step != STEP_COMPOSITE &&
+    !(spec.DiscardZero && this->CountingSamples) && this->ComputeSupported();
+}
+
+//------------------------------------------------------------------------------
+vtkBloomPassChainRunner::ComputeProgram* vtkBloomPassChainRunner::Compute(
+  const std::string& variant, bool blend)
+{
+  const bool half = this->Resources.ChainIsFast;
+  const std::string header = std::string("#version 430 core\n#define COMPUTE 1\n#define BLEND ") +
+    (blend ? "1" : "0") + "\n#define IMAGE_FORMAT " + (half ? "rgba16f" : "rgba32f") + "\n";
+  ComputeProgram& program = this->ComputePrograms[header + variant];
+  if (program.Id)
+  {
+    return &program;
+  }
+  std::string text = vtkBloomPassFS;
+  vtkShaderProgram::Substitute(text, "//VTK::System::Dec", header);
+  vtkShaderProgram::Substitute(text, "//VTK::Output::Dec", "");
+  vtkShaderProgram::Substitute(text, "//BLOOM::Constants", ShaderConstants());
+  vtkShaderProgram::Substitute(text, "//BLOOM::Variant", variant);
+  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
+  const char* source = text.c_str();
+  glShaderSource(shader, 1, &source, nullptr);
+  glCompileShader(shader);
+  GLint compiled = 0, linked = 0;
+  glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
+  const GLuint id = glCreateProgram();
+  glAttachShader(id, shader);
+  glLinkProgram(id);
+  glGetProgramiv(id, GL_LINK_STATUS, &linked);
+  if (!compiled || !linked)
+  {
+    char log[4096] = { 0 };
+    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
+    vtkErrorWithObjectMacro(this->Owner, << "Could not build the bloom compute program:\n"
+                                         << log << "\n"
+                                         << variant);
+    glDeleteShader(shader);
+    glDeleteProgram(id);
+    this->ComputePrograms.erase(header + variant);
+    return nullptr;
+  }
+  glDeleteShader(shader);
+  program.Id = id;
+  return &program;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::Dispatch(vtkBloomPassTarget& target, bool blend, const Box& rect)
+{
+  const GLenum format = this->Resources.ChainIsFast ? GL_RGBA16F : GL_RGBA32F;
+  glBindImageTexture(
+    0, target.Color->GetHandle(), 0, GL_FALSE, 0, blend ? GL_READ_WRITE : GL_WRITE_ONLY, format);
+  glDispatchCompute((rect.X1 - rect.X0 + 15) / 16, (rect.Y1 - rect.Y0 + 15) / 16, 1);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::EndCompute()
+{
+  // The next pass reads the target by texelFetch or imageLoad, clears it or reads it back.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+    GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  // VTK's shader cache must know that its last program is no longer bound.
+  this->Resources.Context->GetShaderCache()->ReleaseCurrentShader();
+}

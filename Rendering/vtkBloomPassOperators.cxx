@@ -1,0 +1,196 @@
+// The GPU form of vtkBloomPass's operators (see vtkBloomPassChainRunner.h): the operator
+// tables uploaded as textures, the translation-invariant interiors evaluated from uniforms, the
+// fast mode's bilinear pairs of taps, and the segments a pass draws per axis.
+#include "vtkBloomPassChainRunner.h"
+
+#include "vtkBloomLinearOperator.h"
+#include "vtkBloomPassResources.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkTextureObject.h"
+#include "vtk_glew.h"
+
+#include <algorithm>
+#include <sstream>
+//------------------------------------------------------------------------------
+vtkBloomPassChainRunner::Interior vtkBloomPassChainRunner::Interior::Find(
+  const vtkBloomLinearOperator& op)
+{
+  const int width = op.Width;
+  auto weight = [&op, width](int j, int k)
+  { return static_cast<float>(op.Weights[static_cast<size_t>(j) * width + k]); };
+  // Too short an interior is not worth its own draw. A stride of 0 (an input of one
+  // sample) would leave the shader independent of the fragment's position, so
+  // FindInvariantRange refuses it and the table evaluates such an operator.
+  const int minimum = 8;
+  for (int period : { 1, 2 })
+  {
+    const vtkBloomLinearOperator::InvariantRange range = op.FindInvariantRange(period, minimum);
+    if (range.Begin == range.End)
+    {
+      continue;
+    }
+    const int begin = range.Begin, end = range.End, stride = range.Stride;
+    // Drop the band's zero padding common to every phase.
+    int lo = width, hi = 0;
+    for (int ph = 0; ph < period; ++ph)
+    {
+      for (int k = 0; k < width; ++k)
+      {
+        if (weight(begin + ph, k) != 0.0f)
+        {
+          lo = std::min(lo, k);
+          hi = std::max(hi, k + 1);
+        }
+      }
+    }
+    if (hi <= lo || hi - lo > 31) // a bit per tap in Defines()
+    {
+      continue;
+    }
+    Interior interior;
+    interior.Begin = begin;
+    interior.End = end;
+    interior.Period = period;
+    interior.Stride = stride;
+    interior.Taps = hi - lo;
+    for (int ph = 0; ph < 2; ++ph)
+    {
+      interior.First[ph] = op.First[begin + std::min(ph, period - 1)] + lo;
+    }
+    bool positive = true;
+    for (int ph = 0; ph < period; ++ph)
+    {
+      for (int k = lo; k < hi; ++k)
+      {
+        interior.Weights.push_back(weight(begin + ph, k));
+        positive &= interior.Weights.back() >= 0.0f;
+      }
+    }
+    // Bilinear pairs need weights of one sign: a fetch between two texels weights them with
+    // 1 - f and f.
+    if (positive)
+    {
+      interior.Pairs = (interior.Taps + 1) / 2;
+      for (int ph = 0; ph < period; ++ph)
+      {
+        const float* row = interior.Weights.data() + ph * interior.Taps;
+        for (int m = 0; m < interior.Pairs; ++m)
+        {
+          const float w0 = row[2 * m];
+          const float w1 = 2 * m + 1 < interior.Taps ? row[2 * m + 1] : 0.0f;
+          const float sum = w0 + w1;
+          interior.PairWeights.push_back(sum);
+          interior.PairOffsets.push_back(2.0f * m + (sum > 0.0f ? w1 / sum : 0.0f));
+        }
+      }
+    }
+    return interior;
+  }
+  return Interior();
+}
+
+//------------------------------------------------------------------------------
+std::string vtkBloomPassChainRunner::Interior::Defines(const char* axis, bool linear) const
+{
+  // Bit k of ANY: tap (or pair) k is non-zero in some phase (else it is compiled out); of
+  // ALL: in every phase (no run-time test of its weight).
+  const int count = linear ? this->Pairs : this->Taps;
+  const std::vector<float>& weights = linear ? this->PairWeights : this->Weights;
+  unsigned int any = 0, all = (1u << count) - 1;
+  for (int ph = 0; ph < this->Period; ++ph)
+  {
+    for (int k = 0; k < count; ++k)
+    {
+      if (weights[ph * count + k] != 0.0f)
+      {
+        any |= 1u << k;
+      }
+      else
+      {
+        all &= ~(1u << k);
+      }
+    }
+  }
+  std::ostringstream os;
+  os << "#define " << axis << "_PERIOD " << this->Period << "\n#define " << axis << "_STRIDE "
+     << this->Stride << "\n#define " << axis << "_TAPS " << this->Taps << "\n#define " << axis
+     << "_ANY " << any << "u\n#define " << axis << "_ALL " << all << "u\n#define " << axis
+     << "_LINEAR " << (linear ? 1 : 0) << "\n#define " << axis << "_ROW " << count << "\n";
+  return os.str();
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkBloomPassChainRunner::OperatorTexture(const vtkBloomLinearOperator& op)
+{
+  auto found = this->Operators.find(&op);
+  if (found != this->Operators.end())
+  {
+    return found->second;
+  }
+  // Row j: First[j] then the band's weights; exact in float for indices below 2^24.
+  const int columns = op.Width + 1;
+  std::vector<float> rows(static_cast<size_t>(columns) * op.OutputSize);
+  for (int j = 0; j < op.OutputSize; ++j)
+  {
+    float* row = rows.data() + static_cast<size_t>(j) * columns;
+    row[0] = static_cast<float>(op.First[j]);
+    for (int k = 0; k < op.Width; ++k)
+    {
+      row[k + 1] = static_cast<float>(op.Weights[static_cast<size_t>(j) * op.Width + k]);
+    }
+  }
+  vtkNew<vtkTextureObject> texture;
+  texture->SetContext(this->Resources.Context);
+  texture->SetInternalFormat(GL_R32F);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->Create2DFromRaw(columns, op.OutputSize, 1, VTK_FLOAT, rows.data());
+  this->Operators[&op] = texture.Get();
+  return texture;
+}
+
+//------------------------------------------------------------------------------
+const vtkBloomPassChainRunner::Interior& vtkBloomPassChainRunner::InteriorOf(
+  const vtkBloomLinearOperator& op)
+{
+  auto found = this->Interiors.find(&op);
+  if (found == this->Interiors.end())
+  {
+    found = this->Interiors.emplace(&op, Interior::Find(op)).first;
+  }
+  return found->second;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkBloomPassChainRunner::Segment> vtkBloomPassChainRunner::Segments(
+  const vtkBloomLinearOperator* op, int size)
+{
+  if (!op)
+  {
+    return { { 0, size, OP_IDENTITY } };
+  }
+  const Interior& interior = this->InteriorOf(*op);
+  if (interior.End <= interior.Begin)
+  {
+    return { { 0, op->OutputSize, OP_TABLE } };
+  }
+  std::vector<Segment> segments;
+  if (interior.Begin > 0)
+  {
+    segments.push_back({ 0, interior.Begin, OP_TABLE });
+  }
+  segments.push_back({ interior.Begin, interior.End, OP_PERIODIC });
+  if (interior.End < op->OutputSize)
+  {
+    segments.push_back({ interior.End, op->OutputSize, OP_TABLE });
+  }
+  return segments;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::Linear(const PassSpec& spec, const vtkBloomLinearOperator* op)
+{
+  // The bright pass reads the scene, which is sanitized and masked sample by sample: exact.
+  return this->Fast && op && !spec.ReadsSource && this->InteriorOf(*op).Pairs > 0;
+}
