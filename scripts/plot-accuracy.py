@@ -13,19 +13,10 @@ import csv
 import sys
 from collections import OrderedDict
 
-from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY
-from vtkmodules.vtkCommonCore import vtkFloatArray
-from vtkmodules.vtkCommonDataModel import vtkTable
-from vtkmodules.vtkIOImage import vtkPNGWriter
+from vtkmodules.vtkChartsCore import vtkChart
 from vtkmodules.vtkRenderingContext2D import vtkPen
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
-from vtkmodules.vtkViewsContext2D import vtkContextView
-import vtkmodules.vtkRenderingContextOpenGL2  # noqa: F401 (context device)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (render window)
 
-COLOURS = [(31, 119, 180), (255, 127, 14), (44, 160, 44), (214, 39, 40), (148, 103, 189),
-           (140, 86, 75), (227, 119, 194), (127, 127, 127), (188, 189, 34), (23, 190, 207),
-           (0, 0, 0), (255, 187, 120), (0, 128, 128), (128, 0, 0)]
+from vtkbloom_charts import COLOURS, log_log_chart, save_png, xy_table
 
 
 def main():
@@ -40,32 +31,12 @@ def main():
                 points_only.add(row["method"])
             curves.setdefault(row["method"], []).append(
                 (float(row["ms_per_mp"]), max(float(row["max_abs"]), 1e-12)))
-    view = vtkContextView()
-    view.GetRenderWindow().SetSize(1100, 700)
-    view.GetRenderWindow().SetOffScreenRendering(1)
-    view.GetRenderer().SetBackground(1.0, 1.0, 1.0)
-    chart = vtkChartXY()
-    view.GetScene().AddItem(chart)
-    chart.SetShowLegend(True)
-    chart.SetTitle("Gaussian methods, bloom pyramids and the GPU pass: error against time "
-                   "(1920x1080 RGBA)")
-    for axis, title in ((vtkAxis.BOTTOM, "time per megapixel (ms)"),
-                        (vtkAxis.LEFT, "max abs error / peak")):
-        chart.GetAxis(axis).SetLogScale(True)
-        chart.GetAxis(axis).SetTitle(title)
+    view, chart = log_log_chart(
+        "Gaussian methods, bloom pyramids and the GPU pass: error against time (1920x1080 RGBA)",
+        "time per megapixel (ms)", "max abs error / peak", (1100, 700))
     for index, (name, points) in enumerate(curves.items()):
         # Points stay in sigma (or level) order, so a curve runs from narrow to wide.
-        table = vtkTable()
-        x = vtkFloatArray()
-        x.SetName("time " + name)
-        y = vtkFloatArray()
-        y.SetName(name)
-        table.AddColumn(x)
-        table.AddColumn(y)
-        table.SetNumberOfRows(len(points))
-        for r, (t, e) in enumerate(points):
-            table.SetValue(r, 0, t)
-            table.SetValue(r, 1, e)
+        table = xy_table(name, points)
         colour = COLOURS[index % len(COLOURS)]
         if name in points_only:
             # One marker per preset: the presets are not a sequence.
@@ -82,16 +53,7 @@ def main():
         if name.startswith("pyramid"):
             line.GetPen().SetLineType(vtkPen.DASH_LINE)
         line.SetMarkerStyle(4 if name.startswith("pyramid") else 2)
-    view.GetRenderWindow().Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(view.GetRenderWindow())
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    writer = vtkPNGWriter()
-    writer.SetFileName(target)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
-
+    save_png(view, target)
 
 if __name__ == "__main__":
     main()

@@ -14,31 +14,9 @@ import csv
 import sys
 from collections import OrderedDict
 
-from vtkmodules.vtkChartsCore import vtkAxis, vtkChart, vtkChartXY
-from vtkmodules.vtkCommonCore import vtkFloatArray
-from vtkmodules.vtkCommonDataModel import vtkTable
-from vtkmodules.vtkIOImage import vtkPNGWriter
-from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
-from vtkmodules.vtkViewsContext2D import vtkContextView
-import vtkmodules.vtkRenderingContextOpenGL2  # noqa: F401 (context device)
-import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (render window)
+from vtkmodules.vtkChartsCore import vtkChart
 
-COLOURS = [(31, 119, 180), (255, 127, 14), (44, 160, 44), (214, 39, 40), (148, 103, 189)]
-
-
-def table(name, points):
-    t = vtkTable()
-    x = vtkFloatArray()
-    x.SetName("time " + name)
-    y = vtkFloatArray()
-    y.SetName(name)
-    t.AddColumn(x)
-    t.AddColumn(y)
-    t.SetNumberOfRows(len(points))
-    for r, (a, b) in enumerate(points):
-        t.SetValue(r, 0, a)
-        t.SetValue(r, 1, b)
-    return t
+from vtkbloom_charts import COLOURS, log_log_chart, save_png, xy_table
 
 
 def main():
@@ -48,45 +26,27 @@ def main():
         for row in csv.DictReader(f):
             presets.setdefault(row["preset"], {})[row["quality"]] = (
                 float(row["gpu_ms_over_floor"]), float(row["rel_l2_vs_reference"]))
-    view = vtkContextView()
-    view.GetRenderWindow().SetSize(1000, 650)
-    view.GetRenderWindow().SetOffScreenRendering(1)
-    view.GetRenderer().SetBackground(1.0, 1.0, 1.0)
-    chart = vtkChartXY()
-    view.GetScene().AddItem(chart)
-    chart.SetShowLegend(True)
-    chart.SetTitle("vtkBloomPass on an NVIDIA H100, 3840x2160: exact pass (square) and fast "
-                   "mode (cross)")
-    for axis, title in ((vtkAxis.BOTTOM, "bloom over the floor, GPU time (ms)"),
-                        (vtkAxis.LEFT, "relative L2 against vtkImageBloom REFERENCE")):
-        chart.GetAxis(axis).SetLogScale(True)
-        chart.GetAxis(axis).SetTitle(title)
+    view, chart = log_log_chart(
+        "vtkBloomPass on an NVIDIA H100, 3840x2160: exact pass (square) and fast mode (cross)",
+        "bloom over the floor, GPU time (ms)", "relative L2 against vtkImageBloom REFERENCE",
+        (1000, 650))
     for index, (preset, rows) in enumerate(presets.items()):
         colour = COLOURS[index % len(COLOURS)]
         both = [rows[q] for q in ("exact", "fast") if q in rows]
         line = chart.AddPlot(vtkChart.LINE)
-        line.SetInputData(table(preset, both), 0, 1)
+        line.SetInputData(xy_table(preset, both), 0, 1)
         line.SetColor(colour[0], colour[1], colour[2], 255)
         line.SetWidth(1.5)
         line.SetMarkerStyle(0)
         for quality, marker in (("exact", 3), ("fast", 1)):
             if quality in rows:
                 points = chart.AddPlot(vtkChart.POINTS)
-                points.SetInputData(table(preset + " " + quality, [rows[quality]]), 0, 1)
+                points.SetInputData(xy_table(preset + " " + quality, [rows[quality]]), 0, 1)
                 points.SetColor(colour[0], colour[1], colour[2], 255)
                 points.SetMarkerStyle(marker)
                 points.SetMarkerSize(14.0)
                 points.SetLegendVisibility(False)
-    view.GetRenderWindow().Render()
-    grab = vtkWindowToImageFilter()
-    grab.SetInput(view.GetRenderWindow())
-    grab.ReadFrontBufferOff()
-    grab.Update()
-    writer = vtkPNGWriter()
-    writer.SetFileName(target)
-    writer.SetInputConnection(grab.GetOutputPort())
-    writer.Write()
-
+    save_png(view, target)
 
 if __name__ == "__main__":
     main()
