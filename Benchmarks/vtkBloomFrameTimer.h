@@ -47,8 +47,8 @@ public:
     ALTERNATIVE ///< a second vtkBloomPass (Alternative), to compare two settings frame by frame
   };
 
-  /// An offscreen window of width x height showing `scene`; false for an unknown scene.
-  bool Setup(const std::string& scene, int width, int height)
+  /// The offscreen window of width x height, its renderer, and the three passes' delegates.
+  void AttachWindow(int width, int height)
   {
     this->Window->SetOffScreenRendering(1);
     this->Window->SetMultiSamples(0);
@@ -57,6 +57,12 @@ public:
     this->Bloom->SetDelegatePass(this->Steps);
     this->Alternative->SetDelegatePass(this->Steps);
     this->FloatCopy->SetDelegatePass(this->Steps);
+  }
+
+  /// An offscreen window of width x height showing `scene`; false for an unknown scene.
+  bool Setup(const std::string& scene, int width, int height)
+  {
+    this->AttachWindow(width, height);
     if (!vtkBloomBuildExampleScene(scene, this->Renderer, this->Bloom))
     {
       return false;
@@ -76,13 +82,7 @@ public:
    */
   void SetupSparse(double fraction, int width, int height)
   {
-    this->Window->SetOffScreenRendering(1);
-    this->Window->SetMultiSamples(0);
-    this->Window->SetSize(width, height);
-    this->Window->AddRenderer(this->Renderer);
-    this->Bloom->SetDelegatePass(this->Steps);
-    this->Alternative->SetDelegatePass(this->Steps);
-    this->FloatCopy->SetDelegatePass(this->Steps);
+    this->AttachWindow(width, height);
     this->Renderer->SetBackground(0.25, 0.25, 0.25);
     vtkCamera* camera = this->Renderer->GetActiveCamera();
     camera->ParallelProjectionOn();

@@ -310,6 +310,11 @@ private:
 
   /// The compute program of one variant (vtkBloomPassFS.glsl with COMPUTE), made on first use.
   ComputeProgram* Compute(const std::string& variant, bool blend);
+  /**
+   * Compile and link one compute shader; 0 when either fails, with the compiler's log in
+   * `log` (when given). Shared by the chain's compute passes and the region's reduction.
+   */
+  static unsigned int BuildComputeProgram(const char* source, std::string* log);
 
   /// Bind `target` as image unit 0 and dispatch one invocation per sample of `rect`.
   void Dispatch(vtkBloomPassTarget& target, bool blend, const Box& rect);

@@ -169,31 +169,45 @@ vtkBloomPassChainRunner::ComputeProgram* vtkBloomPassChainRunner::Compute(
   vtkShaderProgram::Substitute(text, "//VTK::Output::Dec", "");
   vtkShaderProgram::Substitute(text, "//BLOOM::Constants", ShaderConstants());
   vtkShaderProgram::Substitute(text, "//BLOOM::Variant", variant);
+  std::string log;
+  const GLuint id = BuildComputeProgram(text.c_str(), &log);
+  if (!id)
+  {
+    vtkErrorWithObjectMacro(this->Owner, << "Could not build the bloom compute program:\n"
+                                         << log << "\n"
+                                         << variant);
+    this->ComputePrograms.erase(header + variant);
+    return nullptr;
+  }
+  program.Id = id;
+  return &program;
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkBloomPassChainRunner::BuildComputeProgram(const char* source, std::string* log)
+{
   const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-  const char* source = text.c_str();
   glShaderSource(shader, 1, &source, nullptr);
   glCompileShader(shader);
   GLint compiled = 0, linked = 0;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
-  const GLuint id = glCreateProgram();
-  glAttachShader(id, shader);
-  glLinkProgram(id);
-  glGetProgramiv(id, GL_LINK_STATUS, &linked);
+  GLuint program = glCreateProgram();
+  glAttachShader(program, shader);
+  glLinkProgram(program);
+  glGetProgramiv(program, GL_LINK_STATUS, &linked);
   if (!compiled || !linked)
   {
-    char log[4096] = { 0 };
-    glGetShaderInfoLog(shader, sizeof(log), nullptr, log);
-    vtkErrorWithObjectMacro(this->Owner, << "Could not build the bloom compute program:\n"
-                                         << log << "\n"
-                                         << variant);
-    glDeleteShader(shader);
-    glDeleteProgram(id);
-    this->ComputePrograms.erase(header + variant);
-    return nullptr;
+    if (log)
+    {
+      char text[4096] = { 0 };
+      glGetShaderInfoLog(shader, sizeof(text), nullptr, text);
+      *log = text;
+    }
+    glDeleteProgram(program);
+    program = 0;
   }
   glDeleteShader(shader);
-  program.Id = id;
-  return &program;
+  return program;
 }
 
 //------------------------------------------------------------------------------

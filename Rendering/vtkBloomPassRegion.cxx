@@ -136,20 +136,9 @@ bool vtkBloomPassChainRunner::MeasureBrightRegionByCompute(Box& box)
   if (this->ComputeState == 0)
   {
     this->ComputeState = -1;
-    const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-    const char* text = vtkBloomPassReduceCS;
-    glShaderSource(shader, 1, &text, nullptr);
-    glCompileShader(shader);
-    GLint compiled = 0, linked = 0;
-    glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
-    const GLuint program = glCreateProgram();
-    glAttachShader(program, shader);
-    glLinkProgram(program);
-    glGetProgramiv(program, GL_LINK_STATUS, &linked);
-    glDeleteShader(shader);
-    if (!compiled || !linked)
+    const GLuint program = BuildComputeProgram(vtkBloomPassReduceCS, nullptr);
+    if (!program)
     {
-      glDeleteProgram(program);
       return false; // the fragment passes then
     }
     this->ReduceProgram = program;
