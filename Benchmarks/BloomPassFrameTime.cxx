@@ -8,6 +8,8 @@
 //   BloomPassFrameTime --profile [SCENE [WIDTH HEIGHT [FRAMES [PRESET]]]]
 //   BloomPassFrameTime --info      the window class and the OpenGL vendor, renderer and version
 //   BloomPassFrameTime --fast ...  as above, with vtkBloomPass::QUALITY_FAST
+//   BloomPassFrameTime --fragment ...  as above, every pass a fragment pass
+//                                  (vtkBloomPass::UseComputeShadersOff; with --fast or alone)
 //   BloomPassFrameTime --quality SCENE WIDTH HEIGHT FRAMES [CSV]
 //   BloomPassFrameTime --sparse WIDTH HEIGHT FRAMES [fast]
 //   BloomPassFrameTime --sync SCENE WIDTH HEIGHT FRAMES
@@ -51,7 +53,8 @@
 
 namespace
 {
-bool Fast = false; // --fast
+bool Fast = false;     // --fast
+bool Fragment = false; // --fragment
 
 std::vector<std::string> Expand(const std::string& name, const std::vector<std::string>& all)
 {
@@ -69,6 +72,7 @@ bool TimeFrames(const std::string& scene, const std::string& preset, int width, 
     return false;
   }
   timer.Bloom->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
+  timer.Bloom->SetUseComputeShaders(!Fragment);
   // Selective scenes also render their emitters; measure the plain scene pass for all.
   const vtkBloomFrameTimer::Kind kinds[] = { vtkBloomFrameTimer::PLAIN,
     vtkBloomFrameTimer::FLOAT_COPY, vtkBloomFrameTimer::BLOOM };
@@ -117,6 +121,7 @@ bool ProfilePasses(
     return false;
   }
   timer.Bloom->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
+  timer.Bloom->SetUseComputeShaders(!Fragment);
   // Unprofiled frames first: the whole bloom frame and the floor, for the totals.
   std::vector<double> floorGPU, frameGPU;
   for (int f = -2; f < frames; ++f)
@@ -143,10 +148,10 @@ bool ProfilePasses(
     }
   }
   vtkBloomPass* bloom = timer.Bloom;
-  std::printf("\n%s, preset %s%s, %dx%d, %s precision: %d GPU passes of the chain and the "
+  std::printf("\n%s, preset %s%s%s, %dx%d, %s precision: %d GPU passes of the chain and the "
               "composite (the profile also lists the scene render)\n\n",
-    scene.c_str(), preset.c_str(), Fast ? " (fast mode)" : "", width, height,
-    bloom->GetFloatPrecision() == vtkBloomPass::FLOAT32 ? "float32" : "float16",
+    scene.c_str(), preset.c_str(), Fast ? " (fast mode)" : "", Fragment ? " (fragment passes)" : "",
+    width, height, bloom->GetFloatPrecision() == vtkBloomPass::FLOAT32 ? "float32" : "float16",
     bloom->GetNumberOfPasses());
   std::printf("| # | pass | size | GPU time | MB | GB/s |\n|---|---|---|---|---|---|\n");
   double total = 0.0, chain = 0.0, bytes = 0.0, chainBytes = 0.0;
@@ -404,9 +409,10 @@ int main(int argc, char* argv[])
       ? 0
       : 1;
   }
-  if (argc > 1 && std::strcmp(argv[1], "--fast") == 0)
+  while (
+    argc > 1 && (std::strcmp(argv[1], "--fast") == 0 || std::strcmp(argv[1], "--fragment") == 0))
   {
-    Fast = true;
+    (std::strcmp(argv[1], "--fast") == 0 ? Fast : Fragment) = true;
     --argc;
     ++argv;
   }

@@ -1,6 +1,8 @@
 // The same full-screen work as a fragment-shader pass and as a compute dispatch, timed by
 // the GPU (GL_TIME_ELAPSED, median of FRAMES runs): a 1-tap (a copy) and a 9-tap horizontal
-// filter of an RGBA16F image into another, the kind of pass vtkBloomPass's chain is made of.
+// filter of an RGBA16F image into another, the kind of pass vtkBloomPass's chain is made of;
+// then the copy into an RGBA8 texture (a window's colour buffer, where the composite writes)
+// as fragments, as a blit and as a compute pass, whose outputs must be the same bytes.
 // It measures what bounds a chain of fragment passes on a GPU whose fragment shading runs on
 // part of the chip only (an NVIDIA H100: docs/gpu.md).
 //
@@ -65,12 +67,12 @@ GLuint Link(std::vector<GLuint> shaders)
   return program;
 }
 
-GLuint Texture(int w, int h, const std::vector<float>* data)
+GLuint Texture(int w, int h, const std::vector<float>* data, GLenum format = GL_RGBA16F)
 {
   GLuint t = 0;
   glGenTextures(1, &t);
   glBindTexture(GL_TEXTURE_2D, t);
-  glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, w, h);
+  glTexStorage2D(GL_TEXTURE_2D, 1, format, w, h);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
   glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   if (data)
@@ -183,13 +185,89 @@ int main(int argc, char* argv[])
     glDeleteProgram(fragment);
     glDeleteProgram(compute);
   }
+
+  // The last step of a composite: the copy into an RGBA8 colour texture (VTK's render
+  // framebuffer), as fragments, as glBlitFramebuffer and as a compute pass with imageStore.
+  const GLuint colour = Texture(w, h, nullptr, GL_RGBA8);
+  GLuint read = 0, draw = 0;
+  glGenFramebuffers(1, &read);
+  glBindFramebuffer(GL_FRAMEBUFFER, read);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, source, 0);
+  glGenFramebuffers(1, &draw);
+  glBindFramebuffer(GL_FRAMEBUFFER, draw);
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
+  const GLuint fragment = Link({ Compile(GL_VERTEX_SHADER, StageThroughputVS),
+    Compile(GL_FRAGMENT_SHADER, WithTaps(StageThroughputFS, 1)) });
+  std::string text = WithTaps(StageThroughputCS, 1);
+  text.replace(text.find("rgba16f"), 7, "rgba8");
+  const GLuint compute = Link({ Compile(GL_COMPUTE_SHADER, text) });
+  const double mb8 = 12.0 * w * h * 1e-6; // 8 bytes read, 4 written a sample
+  const char* ways[] = { "fragment shader", "glBlitFramebuffer", "compute shader" };
+  std::vector<unsigned char> results[3];
+  std::printf("\n%dx%d RGBA16F into RGBA8 (a window's colour texture), median of %d\n\n| copy "
+              "| GPU time | GB/s |\n|---|---|---|\n",
+    w, h, frames);
+  for (int way = 0; way < 3; ++way)
+  {
+    std::vector<double> times;
+    for (int f = -3; f < frames; ++f)
+    {
+      glActiveTexture(GL_TEXTURE0);
+      glBindTexture(GL_TEXTURE_2D, source);
+      glBeginQuery(GL_TIME_ELAPSED, query);
+      if (way == 0)
+      {
+        glUseProgram(fragment);
+        glUniform1i(glGetUniformLocation(fragment, "source"), 0);
+        glBindFramebuffer(GL_FRAMEBUFFER, draw);
+        glViewport(0, 0, w, h);
+        glBindVertexArray(vao);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+      }
+      else if (way == 1)
+      {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, read);
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw);
+        glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+      }
+      else
+      {
+        glUseProgram(compute);
+        glUniform1i(glGetUniformLocation(compute, "source"), 0);
+        glBindImageTexture(0, colour, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
+        glDispatchCompute((w + 15) / 16, (h + 15) / 16, 1);
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
+          GL_TEXTURE_UPDATE_BARRIER_BIT);
+      }
+      glEndQuery(GL_TIME_ELAPSED);
+      GLuint64 ns = 0;
+      glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+      if (f >= 0)
+      {
+        times.push_back(1e-6 * static_cast<double>(ns));
+      }
+    }
+    const double ms = vtkBloomMedian(times);
+    results[way].resize(static_cast<size_t>(w) * h * 4);
+    glBindTexture(GL_TEXTURE_2D, colour);
+    glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, results[way].data());
+    std::printf("| %s | %.4f ms | %.0f |\n", ways[way], ms, mb8 / ms);
+  }
+  if (results[0] != results[1] || results[0] != results[2])
+  {
+    std::printf("the three RGBA8 outputs differ\n");
+    return 1;
+  }
+  glDeleteProgram(fragment);
+  glDeleteProgram(compute);
   glUseProgram(0);
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
   glDeleteVertexArrays(1, &vao);
-  glDeleteFramebuffers(1, &fbo);
+  const GLuint framebuffers[] = { fbo, read, draw };
+  glDeleteFramebuffers(3, framebuffers);
   glDeleteQueries(1, &query);
-  const GLuint textures[] = { source, target };
-  glDeleteTextures(2, textures);
+  const GLuint textures[] = { source, target, colour };
+  glDeleteTextures(3, textures);
   return 0;
 }

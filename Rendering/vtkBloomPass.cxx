@@ -369,7 +369,6 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   const bool bloom =
     in.Runner.Run(this->Parameters, selective ? res.Emitter.Color : res.Scene.Color, selective);
   this->LastBloomSkipped = !bloom;
-  in.Report(this);
   const int zero[2] = { 0, 0 };
   const int origin[2] = { x, y };
   if (this->CaptureResult)
@@ -383,6 +382,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     state->PopFramebufferBindings();
     in.Runner.Composite(nullptr, origin, bloom);
   }
+  in.Report(this);
   this->NumberOfPasses = in.Runner.Passes;
   if (this->ProfilePasses)
   {
@@ -447,9 +447,9 @@ bool vtkBloomPass::ApplyToImage(
   state->vtkglDisable(GL_SCISSOR_TEST);
   const bool bloom = in.Runner.Run(this->Parameters, res.Scene.Color, false);
   this->LastBloomSkipped = !bloom;
-  in.Report(this);
   const int zero[2] = { 0, 0 };
   in.Runner.Composite(&res.Result, zero, bloom);
+  in.Report(this);
   state->PopFramebufferBindings();
   this->NumberOfPasses = in.Runner.Passes;
   if (this->ProfilePasses)

@@ -55,8 +55,11 @@
  * is exact to float rounding: the two names share only their intent).
  *
  * Compute shaders. Where the context has OpenGL 4.3, the chain's passes into its own targets
- * run as compute shaders compiled from the same shader file (UseComputeShaders, default on);
- * the composite into the framebuffer stays a fragment pass.
+ * run as compute shaders compiled from the same shader file (UseComputeShaders, default on).
+ * So does the composite into the framebuffer the pass was called with, where that
+ * framebuffer's colour buffer is a single-sample RGBA8, RGBA16F or RGBA32F texture (VTK's own
+ * render framebuffer without multisampling, vtkToneMappingPass's and vtkFramebufferPass's
+ * targets) and the context has OpenGL 4.5; else it is a fragment pass.
  *
  * With CaptureResult on, the bloomed image is also kept in a float texture after each render,
  * and ReadSceneImage() / ReadResultImage() return the un-bloomed float render and the bloomed
@@ -140,9 +143,11 @@ public:
   /**
    * Run the chain's passes into its own targets, and the bright region's reduction, as compute
    * shaders where the context has OpenGL 4.3 (default on); off, or without OpenGL 4.3, they are
-   * fragment passes. The composite is always a fragment pass. Both compute the same sums: the
-   * results agree to float rounding (tested). On an NVIDIA H100, which shades fragments on a
-   * few of its multiprocessors only, the compute passes are many times faster (docs/gpu.md).
+   * fragment passes. The composite into the framebuffer is a compute pass too where that
+   * framebuffer's colour buffer is a texture it can write (see the class description). Both
+   * compute the same sums: the results agree to float rounding (tested). On an NVIDIA H100, which
+   * shades fragments on a few of its multiprocessors only, the compute passes are many times faster
+   * (docs/gpu.md).
    */
   vtkSetMacro(UseComputeShaders, bool);
   vtkGetMacro(UseComputeShaders, bool);

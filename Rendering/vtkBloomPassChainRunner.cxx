@@ -173,7 +173,9 @@ void vtkBloomPassChainRunner::Pass(
   {
     this->PrepareTarget(*target, spec.Region, width, height);
   }
-  if (target)
+  const ImageTarget image = this->ComputeTarget(target, origin, spec, width, height);
+  const bool compute = image.Texture != 0;
+  if (target && !compute)
   {
     target->FBO->Bind();
     target->FBO->ActivateDrawBuffer(0);
@@ -254,7 +256,6 @@ void vtkBloomPassChainRunner::Pass(
   {
     draws.push_back({ rect, OP_IDENTITY, OP_IDENTITY, true });
   }
-  const bool compute = this->Computes(target, spec);
   for (const Draw& draw : draws)
   {
     PassSpec variant = spec;
@@ -264,7 +265,7 @@ void vtkBloomPassChainRunner::Pass(
     vtkOpenGLQuadHelper* quad = nullptr;
     if (compute)
     {
-      ComputeProgram* program = this->Compute(text, spec.Blend);
+      ComputeProgram* program = this->Compute(text, spec.Blend, image.Format);
       if (!program)
       {
         continue;
@@ -327,7 +328,8 @@ void vtkBloomPassChainRunner::Pass(
     this->SetStepUniforms(u, spec.Step);
     if (compute)
     {
-      this->Dispatch(*target, spec.Blend, draw.Rect);
+      u.Int2("targetOffset", image.Offset);
+      this->Dispatch(image, spec.Blend, draw.Rect);
     }
     else
     {

@@ -63,8 +63,9 @@ public:
 
   /**
    * Run the chain's passes into its targets as compute shaders where the context has OpenGL
-   * 4.3 (vtkBloomPassCompute.cxx; vtkBloomPass::UseComputeShaders), and the bright region's
-   * reduction as one dispatch; else, and for the composite, fragment passes.
+   * 4.3 (vtkBloomPassCompute.cxx; vtkBloomPass::UseComputeShaders), the bright region's
+   * reduction as one dispatch, and the composite too where the framebuffer's colour buffer
+   * can be written as an image (FramebufferImage); else fragment passes.
    */
   bool UseCompute = true;
   int ComputePasses = 0; ///< passes drawn as compute since it was last set to 0
@@ -305,19 +306,51 @@ private:
   bool ComputeSupported();
   int ComputeSupport = 0; ///< 0 not asked, 1 yes, -1 no
 
-  /// Whether `spec` into `target` runs as a compute pass.
-  bool Computes(vtkBloomPassTarget* target, const PassSpec& spec);
+  int GLVersion = 0; ///< major * 10 + minor, asked with ComputeSupport
 
-  /// The compute program of one variant (vtkBloomPassFS.glsl with COMPUTE), made on first use.
-  ComputeProgram* Compute(const std::string& variant, bool blend);
+  /**
+   * Where a compute pass writes: level `Level` of the texture `Texture`, bound as image unit 0
+   * in `Format` (GL_RGBA8, GL_RGBA16F or GL_RGBA32F), the pass's output sample (0, 0) at
+   * `Offset`. A zero `Texture`: the pass draws fragments.
+   */
+  struct ImageTarget
+  {
+    unsigned int Texture = 0;
+    int Level = 0;
+    unsigned int Format = 0;
+    int Offset[2] = { 0, 0 };
+  };
+
+  /**
+   * Where `spec`, `width` x `height` samples into `target` (or into the bound framebuffer at
+   * `origin` when null), runs as a compute pass: `target`'s texture, or the bound framebuffer's
+   * colour texture (FramebufferImage); none when compute is off or unsupported.
+   */
+  ImageTarget ComputeTarget(
+    vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec, int width, int height);
+
+  /**
+   * The bound draw framebuffer's colour buffer as an image, when a compute pass writes it as a
+   * fragment pass would: a single-sample 2D texture level in GL_RGBA8, GL_RGBA16F or
+   * GL_RGBA32F that holds `origin` + `width` x `height`, every channel writable (VTK's render
+   * framebuffer, and the float targets of vtkToneMappingPass and vtkFramebufferPass). Needs
+   * OpenGL 4.5 to ask a texture's target and format.
+   */
+  bool FramebufferImage(const int origin[2], int width, int height, ImageTarget& image);
+
+  /**
+   * The compute program of one variant (vtkBloomPassFS.glsl with COMPUTE) that writes an
+   * image of `format`, made on first use.
+   */
+  ComputeProgram* Compute(const std::string& variant, bool blend, unsigned int format);
   /**
    * Compile and link one compute shader; 0 when either fails, with the compiler's log in
    * `log` (when given). Shared by the chain's compute passes and the region's reduction.
    */
   static unsigned int BuildComputeProgram(const char* source, std::string* log);
 
-  /// Bind `target` as image unit 0 and dispatch one invocation per sample of `rect`.
-  void Dispatch(vtkBloomPassTarget& target, bool blend, const Box& rect);
+  /// Bind `image` as image unit 0 and dispatch one invocation per sample of `rect`.
+  void Dispatch(const ImageTarget& image, bool blend, const Box& rect);
 
   /// After a pass's dispatches: their writes visible to what reads the target next.
   void EndCompute();

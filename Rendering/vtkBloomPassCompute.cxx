@@ -1,8 +1,10 @@
 // vtkBloomPass's chain as compute shaders (OpenGL 4.3): the same vtkBloomPassFS.glsl compiled
 // with COMPUTE, one invocation per output sample, written with imageStore. On a GPU whose
 // fragment shading runs on part of the chip only (an NVIDIA H100: docs/gpu.md), a compute pass
-// does the same work many times faster. VTK 9.1's shader classes have no compute stage, so the
-// programs are plain OpenGL; their uniforms go through vtkBloomPassChainRunner::Uniforms.
+// does the same work many times faster. The composite writes the framebuffer it was called
+// with the same way, where that framebuffer's colour buffer is a texture (FramebufferImage).
+// VTK 9.1's shader classes have no compute stage, so the programs are plain OpenGL; their
+// uniforms go through vtkBloomPassChainRunner::Uniforms.
 #include "vtkBloomPassChainRunner.h"
 
 #include "vtkBloomPassFS.h"
@@ -138,27 +140,103 @@ bool vtkBloomPassChainRunner::ComputeSupported()
     GLint major = 0, minor = 0;
     glGetIntegerv(GL_MAJOR_VERSION, &major);
     glGetIntegerv(GL_MINOR_VERSION, &minor);
-    this->ComputeSupport = major * 10 + minor >= 43 && glDispatchCompute ? 1 : -1;
+    this->GLVersion = major * 10 + minor;
+    this->ComputeSupport = this->GLVersion >= 43 && glDispatchCompute ? 1 : -1;
   }
   return this->ComputeSupport > 0;
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassChainRunner::Computes(vtkBloomPassTarget* target, const PassSpec& spec)
+vtkBloomPassChainRunner::ImageTarget vtkBloomPassChainRunner::ComputeTarget(
+  vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec, int width, int height)
 {
-  // The composite draws into the window (or the captured result) and the bright pass under an
-  // occlusion query counts fragments: both stay fragment passes.
-  return this->UseCompute && target && spec.Step != STEP_COMPOSITE &&
-    !(spec.DiscardZero && this->CountingSamples) && this->ComputeSupported();
+  // The bright pass under an occlusion query counts fragments: it stays a fragment pass.
+  ImageTarget image;
+  if (!this->UseCompute || (spec.DiscardZero && this->CountingSamples) || !this->ComputeSupported())
+  {
+    return image;
+  }
+  if (target)
+  {
+    image.Texture = target->Color->GetHandle();
+    image.Format = target->Color->GetInternalFormat(VTK_FLOAT, 4, false);
+  }
+  else if (!this->FramebufferImage(origin, width, height, image))
+  {
+    image = ImageTarget();
+  }
+  return image;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::FramebufferImage(
+  const int origin[2], int width, int height, ImageTarget& image)
+{
+  // A fragment pass into the window's framebuffer runs on the GPU's graphics units, which on
+  // an NVIDIA H100 are a few of its multiprocessors: there a full-screen copy takes 0.59 ms at
+  // 3840x2160 as fragments (a blit too) and 0.06 ms as a compute pass (docs/gpu.md). The
+  // compute pass must write what the fragments would: no blending (Pass() turns it off), no
+  // scissor (vtkBloomPass::Render turns it off), and everything else checked here.
+  if (this->GLVersion < 45 || !glGetTextureParameteriv || !glGetTextureLevelParameteriv)
+  {
+    return false;
+  }
+  GLint framebuffer = 0, samples = 0, buffer = GL_NONE;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+  glGetIntegerv(GL_SAMPLES, &samples);
+  glGetIntegerv(GL_DRAW_BUFFER0, &buffer);
+  if (framebuffer == 0 || samples != 0 || buffer < GL_COLOR_ATTACHMENT0 ||
+    buffer > GL_COLOR_ATTACHMENT15)
+  {
+    return false;
+  }
+  GLint type = GL_NONE, name = 0, level = 0, layered = GL_FALSE;
+  const GLenum attachment = static_cast<GLenum>(buffer);
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  if (type != GL_TEXTURE)
+  {
+    return false;
+  }
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, &level);
+  glGetFramebufferAttachmentParameteriv(
+    GL_DRAW_FRAMEBUFFER, attachment, GL_FRAMEBUFFER_ATTACHMENT_LAYERED, &layered);
+  GLint kind = GL_NONE, format = GL_NONE, size[2] = { 0, 0 };
+  glGetTextureParameteriv(static_cast<GLuint>(name), GL_TEXTURE_TARGET, &kind);
+  if (kind != GL_TEXTURE_2D || layered != GL_FALSE)
+  {
+    return false;
+  }
+  const GLuint texture = static_cast<GLuint>(name);
+  glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_INTERNAL_FORMAT, &format);
+  glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_WIDTH, &size[0]);
+  glGetTextureLevelParameteriv(texture, level, GL_TEXTURE_HEIGHT, &size[1]);
+  GLboolean mask[4] = { GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE };
+  glGetBooleanv(GL_COLOR_WRITEMASK, mask);
+  if ((format != GL_RGBA8 && format != GL_RGBA16F && format != GL_RGBA32F) || origin[0] < 0 ||
+    origin[1] < 0 || origin[0] + width > size[0] || origin[1] + height > size[1] || !mask[0] ||
+    !mask[1] || !mask[2] || !mask[3])
+  {
+    return false;
+  }
+  image.Texture = texture;
+  image.Level = level;
+  image.Format = static_cast<unsigned int>(format);
+  image.Offset[0] = origin[0];
+  image.Offset[1] = origin[1];
+  return true;
 }
 
 //------------------------------------------------------------------------------
 vtkBloomPassChainRunner::ComputeProgram* vtkBloomPassChainRunner::Compute(
-  const std::string& variant, bool blend)
+  const std::string& variant, bool blend, unsigned int format)
 {
-  const bool half = this->Resources.ChainIsFast;
+  const char* layout = format == GL_RGBA8 ? "rgba8" : format == GL_RGBA16F ? "rgba16f" : "rgba32f";
   const std::string header = std::string("#version 430 core\n#define COMPUTE 1\n#define BLEND ") +
-    (blend ? "1" : "0") + "\n#define IMAGE_FORMAT " + (half ? "rgba16f" : "rgba32f") + "\n";
+    (blend ? "1" : "0") + "\n#define IMAGE_FORMAT " + layout + "\n";
   ComputeProgram& program = this->ComputePrograms[header + variant];
   if (program.Id)
   {
@@ -211,20 +289,20 @@ unsigned int vtkBloomPassChainRunner::BuildComputeProgram(const char* source, st
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassChainRunner::Dispatch(vtkBloomPassTarget& target, bool blend, const Box& rect)
+void vtkBloomPassChainRunner::Dispatch(const ImageTarget& image, bool blend, const Box& rect)
 {
-  const GLenum format = this->Resources.ChainIsFast ? GL_RGBA16F : GL_RGBA32F;
-  glBindImageTexture(
-    0, target.Color->GetHandle(), 0, GL_FALSE, 0, blend ? GL_READ_WRITE : GL_WRITE_ONLY, format);
+  glBindImageTexture(0, image.Texture, image.Level, GL_FALSE, 0,
+    blend ? GL_READ_WRITE : GL_WRITE_ONLY, image.Format);
   glDispatchCompute((rect.X1 - rect.X0 + 15) / 16, (rect.Y1 - rect.Y0 + 15) / 16, 1);
 }
 
 //------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::EndCompute()
 {
-  // The next pass reads the target by texelFetch or imageLoad, clears it or reads it back.
+  // The next pass reads the target by texelFetch or imageLoad, clears it or reads it back;
+  // after the composite, VTK draws into the framebuffer, blits it or reads its pixels.
   glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
-    GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+    GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   // VTK's shader cache must know that its last program is no longer bound.
   this->Resources.Context->GetShaderCache()->ReleaseCurrentShader();

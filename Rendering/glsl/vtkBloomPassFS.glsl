@@ -39,8 +39,10 @@
 
   COMPUTE: the same pass as a compute shader (OpenGL 4.3; vtkBloomPass::UseComputeShaders),
   one invocation per output sample of the draw's region, written with imageStore into the
-  target bound as image unit 0 (IMAGE_FORMAT); BLEND adds to what the target holds, as the
-  fragment pass's GL_ONE, GL_ONE blending does.
+  target bound as image unit 0 (IMAGE_FORMAT) at targetOffset (the composite's origin in the
+  framebuffer's colour texture, else 0); BLEND adds to what the target holds, as the fragment
+  pass's GL_ONE, GL_ONE blending does. Into GL_RGBA8 the store clamps and rounds as a fragment
+  output does.
 =========================================================================*/
 
 //VTK::Output::Dec
@@ -48,6 +50,7 @@
 #ifdef COMPUTE
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(IMAGE_FORMAT, binding = 0) uniform image2D target;
+uniform ivec2 targetOffset; // where the output sample (0, 0) lies in the target
 #else
 in vec2 texCoord;
 #endif
@@ -407,9 +410,9 @@ void main()
 #endif
 #ifdef COMPUTE
 #if BLEND
-  result += imageLoad(target, p);
+  result += imageLoad(target, targetOffset + p);
 #endif
-  imageStore(target, p, result);
+  imageStore(target, targetOffset + p, result);
 #else
   gl_FragData[0] = result;
 #endif

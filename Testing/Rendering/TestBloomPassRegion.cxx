@@ -5,6 +5,7 @@
 #include "vtkBloomPass.h"
 
 #include "vtkFloatArray.h"
+#include "vtkFramebufferPass.h"
 #include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"
@@ -15,11 +16,15 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSmartPointer.h"
+#include "vtkTextureObject.h"
+#include "vtkUnsignedCharArray.h"
 #include "vtk_glew.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -315,6 +320,149 @@ TEST(RenderingBloomPassCompute, ComputeAndFragmentPassesAgree)
       EXPECT_GT(ColourRelativeL2(fragment, input), 1e-3) << what;
     }
   }
+}
+
+//------------------------------------------------------------------------------
+// Whether the context can write a framebuffer's colour texture from a compute pass (OpenGL
+// 4.5, vtkBloomPassChainRunner::FramebufferImage).
+bool ComposesByCompute()
+{
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  return major * 10 + minor >= 45;
+}
+
+//------------------------------------------------------------------------------
+// The composite writes the framebuffer the pass was called with. Into VTK's render
+// framebuffer without multisampling (a texture) it is a compute pass that writes at the
+// renderer's origin; with multisampling a fragment pass. Either way the window holds the
+// captured float result rounded to 8 bits, and the renderer beside it keeps its pixels.
+TEST(RenderingBloomPassCompute, CompositeWritesTheWindowAsFragmentsWould)
+{
+  const int width = 160, height = 90, left = 40; // the bloom's renderer: x >= left
+  for (const int samples : { 0, 4 })
+  {
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetMultiSamples(samples);
+    window->SetSize(width, height);
+    vtkNew<vtkRenderer> beside;
+    beside->SetViewport(0.0, 0.0, 0.25, 1.0);
+    beside->SetBackground(0.2, 0.4, 0.6);
+    vtkNew<vtkRenderer> renderer;
+    renderer->SetViewport(0.25, 0.0, 1.0, 1.0);
+    vtkNew<vtkBloomPass> bloom;
+    vtkNew<vtkRenderStepsPass> steps;
+    bloom->SetDelegatePass(steps);
+    ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", renderer, bloom));
+    bloom->CaptureResultOn();
+    renderer->SetPass(bloom);
+    window->AddRenderer(beside);
+    window->AddRenderer(renderer);
+    window->Render();
+    EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+    vtkNew<vtkImageData> result;
+    ASSERT_TRUE(bloom->ReadResultImage(result));
+    int dims[3];
+    result->GetDimensions(dims);
+    ASSERT_EQ(dims[0], width - left);
+    ASSERT_EQ(dims[1], height);
+    vtkNew<vtkUnsignedCharArray> pixels;
+    window->GetPixelData(0, 0, width - 1, height - 1, 0, pixels, 0);
+    const unsigned char* rgb = pixels->GetPointer(0);
+    const float* bloomed = static_cast<const float*>(result->GetScalarPointer());
+    int largest = 0, differ = 0, lit = 0;
+    for (int y = 0; y < height; ++y)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        for (int c = 0; c < 3; ++c)
+        {
+          const int got = rgb[3 * (y * width + x) + c];
+          if (x < left)
+          {
+            const int background[3] = { 51, 102, 153 };
+            ASSERT_EQ(got, background[c]) << x << " " << y << " " << samples;
+            continue;
+          }
+          const float v = bloomed[4 * (y * (width - left) + x - left) + c];
+          const int expected =
+            static_cast<int>(std::lround(std::min(std::max(v, 0.0f), 1.0f) * 255.0f));
+          largest = std::max(largest, std::abs(got - expected));
+          differ += got != expected;
+          lit += expected > 0;
+        }
+      }
+    }
+    // A rounding of the last bit at most: the fragment output and imageStore convert alike.
+    EXPECT_LE(largest, 1) << samples;
+    EXPECT_LE(differ, lit / 100) << samples;
+    EXPECT_GT(lit, (width - left) * height) << samples;
+    if (ComposesByCompute())
+    {
+      // The chain, the composite into the captured result, and the copy into the window: all
+      // compute but the copy into the multisampled framebuffer.
+      EXPECT_EQ(bloom->GetLastComputePasses(), bloom->GetNumberOfPasses() - (samples ? 1 : 0))
+        << samples;
+    }
+    bloom->ReleaseGraphicsResources(window);
+  }
+}
+
+//------------------------------------------------------------------------------
+// Into another pass's float framebuffer (vtkFramebufferPass, RGBA32F), the composite writes
+// what it writes into the captured result, bit for bit where both are compute passes.
+TEST(RenderingBloomPassCompute, CompositeIntoAFloatFramebufferIsTheResult)
+{
+  const int width = 120, height = 80;
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(width, height);
+  vtkNew<vtkRenderer> renderer;
+  window->AddRenderer(renderer);
+  vtkNew<vtkBloomPass> bloom;
+  vtkNew<vtkRenderStepsPass> steps;
+  bloom->SetDelegatePass(steps);
+  ASSERT_TRUE(vtkBloomBuildExampleScene("field-lines", renderer, bloom));
+  vtkNew<vtkFramebufferPass> framebuffer;
+  framebuffer->SetColorFormat(vtkTextureObject::Float32);
+  framebuffer->SetDelegatePass(bloom);
+  renderer->SetPass(framebuffer);
+
+  // The composite straight into vtkFramebufferPass's texture, then into the captured result.
+  window->Render();
+  const int passes = bloom->GetNumberOfPasses(), computed = bloom->GetLastComputePasses();
+  std::vector<float> direct(static_cast<size_t>(width) * height * 4);
+  vtkTextureObject* texture = framebuffer->GetColorTexture();
+  ASSERT_EQ(texture->GetWidth(), static_cast<unsigned int>(width));
+  texture->Bind();
+  glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_FLOAT, direct.data());
+  texture->Deactivate();
+  bloom->CaptureResultOn();
+  window->Render();
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  vtkNew<vtkImageData> result;
+  ASSERT_TRUE(bloom->ReadResultImage(result));
+  const float* captured = static_cast<const float*>(result->GetScalarPointer());
+  double num = 0.0, den = 0.0;
+  int above = 0;
+  for (size_t i = 0; i < direct.size(); ++i)
+  {
+    num += (static_cast<double>(direct[i]) - captured[i]) * (direct[i] - captured[i]);
+    den += static_cast<double>(captured[i]) * captured[i];
+    above += (i % 4 != 3 && captured[i] > 1.0f) ? 1 : 0;
+  }
+  EXPECT_GT(above, 0) << "the result must be HDR, or the float framebuffer is not exercised";
+  EXPECT_LE(std::sqrt(num / den), 1e-6);
+  if (ComposesByCompute())
+  {
+    EXPECT_EQ(computed, passes);
+    EXPECT_EQ(std::memcmp(direct.data(), captured, direct.size() * sizeof(float)), 0);
+  }
+  bloom->ReleaseGraphicsResources(window);
+  framebuffer->ReleaseGraphicsResources(window);
 }
 
 //------------------------------------------------------------------------------
