@@ -22,6 +22,7 @@
 
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,49 @@ GLuint Texture(int w, int h, const std::vector<float>* data, GLenum format = GL_
   }
   return t;
 }
+
+// The median GPU time (GL_TIME_ELAPSED) of `work` over `frames` runs, after three warm-ups.
+double MedianGPUTime(GLuint query, GLuint source, int frames, const std::function<void()>& work)
+{
+  std::vector<double> times;
+  for (int f = -3; f < frames; ++f)
+  {
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, source);
+    glBeginQuery(GL_TIME_ELAPSED, query);
+    work();
+    glEndQuery(GL_TIME_ELAPSED);
+    GLuint64 ns = 0;
+    glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+    if (f >= 0)
+    {
+      times.push_back(1e-6 * static_cast<double>(ns));
+    }
+  }
+  return vtkBloomMedian(times);
+}
+
+// One full-screen fragment pass of `program` (sampler "source" on unit 0) into `fbo`.
+void Draw(GLuint program, GLuint fbo, GLuint vao, int w, int h)
+{
+  glUseProgram(program);
+  glUniform1i(glGetUniformLocation(program, "source"), 0);
+  glBindFramebuffer(GL_FRAMEBUFFER, fbo);
+  glViewport(0, 0, w, h);
+  glBindVertexArray(vao);
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+// The same work as a compute dispatch of `program` into `image` (in `format`).
+void Dispatch(GLuint program, GLuint image, GLenum format, int w, int h)
+{
+  glUseProgram(program);
+  glUniform1i(glGetUniformLocation(program, "source"), 0);
+  glBindImageTexture(0, image, 0, GL_FALSE, 0, GL_WRITE_ONLY, format);
+  glDispatchCompute((w + 15) / 16, (h + 15) / 16, 1);
+  glMemoryBarrier(
+    GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+}
 }
 
 int main(int argc, char* argv[])
@@ -137,38 +181,18 @@ int main(int argc, char* argv[])
     std::vector<float> results[2];
     for (int stage = 0; stage < 2; ++stage)
     {
-      std::vector<double> times;
-      for (int f = -3; f < frames; ++f)
-      {
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, source);
-        glBeginQuery(GL_TIME_ELAPSED, query);
-        if (stage == 0)
+      ms[stage] = MedianGPUTime(query, source, frames,
+        [&]()
         {
-          glUseProgram(fragment);
-          glUniform1i(glGetUniformLocation(fragment, "source"), 0);
-          glBindFramebuffer(GL_FRAMEBUFFER, fbo);
-          glViewport(0, 0, w, h);
-          glBindVertexArray(vao);
-          glDrawArrays(GL_TRIANGLES, 0, 3);
-        }
-        else
-        {
-          glUseProgram(compute);
-          glUniform1i(glGetUniformLocation(compute, "source"), 0);
-          glBindImageTexture(0, target, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
-          glDispatchCompute((w + 15) / 16, (h + 15) / 16, 1);
-          glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT);
-        }
-        glEndQuery(GL_TIME_ELAPSED);
-        GLuint64 ns = 0;
-        glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
-        if (f >= 0)
-        {
-          times.push_back(1e-6 * static_cast<double>(ns));
-        }
-      }
-      ms[stage] = vtkBloomMedian(times);
+          if (stage == 0)
+          {
+            Draw(fragment, fbo, vao, w, h);
+          }
+          else
+          {
+            Dispatch(compute, target, GL_RGBA16F, w, h);
+          }
+        });
       // The last run's output, to check that both stages computed the same thing.
       results[stage].resize(pixels.size());
       glBindTexture(GL_TEXTURE_2D, target);
@@ -209,45 +233,24 @@ int main(int argc, char* argv[])
     w, h, frames);
   for (int way = 0; way < 3; ++way)
   {
-    std::vector<double> times;
-    for (int f = -3; f < frames; ++f)
-    {
-      glActiveTexture(GL_TEXTURE0);
-      glBindTexture(GL_TEXTURE_2D, source);
-      glBeginQuery(GL_TIME_ELAPSED, query);
-      if (way == 0)
+    const double ms = MedianGPUTime(query, source, frames,
+      [&]()
       {
-        glUseProgram(fragment);
-        glUniform1i(glGetUniformLocation(fragment, "source"), 0);
-        glBindFramebuffer(GL_FRAMEBUFFER, draw);
-        glViewport(0, 0, w, h);
-        glBindVertexArray(vao);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
-      }
-      else if (way == 1)
-      {
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, read);
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw);
-        glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-      }
-      else
-      {
-        glUseProgram(compute);
-        glUniform1i(glGetUniformLocation(compute, "source"), 0);
-        glBindImageTexture(0, colour, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA8);
-        glDispatchCompute((w + 15) / 16, (h + 15) / 16, 1);
-        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT |
-          GL_TEXTURE_UPDATE_BARRIER_BIT);
-      }
-      glEndQuery(GL_TIME_ELAPSED);
-      GLuint64 ns = 0;
-      glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
-      if (f >= 0)
-      {
-        times.push_back(1e-6 * static_cast<double>(ns));
-      }
-    }
-    const double ms = vtkBloomMedian(times);
+        if (way == 0)
+        {
+          Draw(fragment, draw, vao, w, h);
+        }
+        else if (way == 1)
+        {
+          glBindFramebuffer(GL_READ_FRAMEBUFFER, read);
+          glBindFramebuffer(GL_DRAW_FRAMEBUFFER, draw);
+          glBlitFramebuffer(0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+        }
+        else
+        {
+          Dispatch(compute, colour, GL_RGBA8, w, h);
+        }
+      });
     results[way].resize(static_cast<size_t>(w) * h * 4);
     glBindTexture(GL_TEXTURE_2D, colour);
     glGetTexImage(GL_TEXTURE_2D, 0, GL_RGBA, GL_UNSIGNED_BYTE, results[way].data());
