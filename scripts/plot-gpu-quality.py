@@ -8,7 +8,8 @@ quality.csv is written by `BloomPassFrameTime --quality SCENE WIDTH HEIGHT FRAME
 run). x: the bloom's GPU time over the float-target-plus-copy floor; y: relative L2 of the
 colour against vtkImageBloom REFERENCE (double) on the same float render. One colour per
 preset; a square for the exact pass, a cross for the fast mode, a line joining the two. Log-log,
-with VTK's vtkChartXY, headless (needs an X display: xvfb-run), like scripts/plot-accuracy.py.
+with VTK's vtkChartXY, headless (needs an X display: xvfb-run), like scripts/plot-accuracy.py;
+where a bloom costs less than the floor (a negative time) vtkChartXY keeps x linear.
 """
 import csv
 import sys
