@@ -76,6 +76,7 @@ void vtkBloomPassChainRunner::ReleaseGraphicsResources(vtkWindow* w)
   }
   this->Programs.clear();
   this->ReleaseCompute();
+  this->ReleaseCostTiming();
   if (this->Query)
   {
     glDeleteQueries(1, &this->Query);
@@ -441,6 +442,16 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
     --this->FramesUntilProbe;
     restrict = false;
   }
+  else if (restrict && this->CostTimingSupported() && --this->FramesUntilExplore <= 0)
+  {
+    // Now and then the full chain while the region pays, so that its cost stays known.
+    this->FramesUntilExplore = ExploreInterval;
+    restrict = false;
+  }
+  if (this->Restrict)
+  {
+    this->BeginCostTiming(restrict);
+  }
   this->CompositeRestricted = false;
   this->ComputedSamples = this->FullSamples = 0.0;
   this->Coverage = 1.0;
@@ -711,7 +722,7 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
 void vtkBloomPassChainRunner::EndCoverage(bool measured)
 {
   this->Coverage = this->FullSamples > 0.0 ? this->ComputedSamples / this->FullSamples : 1.0;
-  if (measured && this->Coverage >= DenseCoverage)
+  if (measured && (this->Coverage >= DenseCoverage || !this->RegionPays()))
   {
     this->FramesUntilProbe = ProbeInterval - 1;
   }
@@ -746,6 +757,7 @@ void vtkBloomPassChainRunner::Composite(vtkBloomPassTarget* target, const int or
     }
   }
   this->Pass(target, origin, composite);
+  this->EndCostTiming();
 }
 
 //------------------------------------------------------------------------------

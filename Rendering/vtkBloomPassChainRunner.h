@@ -240,14 +240,53 @@ private:
   void PrepareTarget(vtkBloomPassTarget& target, const Box* region, int width, int height);
 
   /**
-   * Coverage of the last evaluation; when it was measured and at least DenseCoverage, the
-   * next ProbeInterval - 1 evaluations run the full chain without measuring the region.
+   * Coverage of the last evaluation; when it was measured, and it is at least DenseCoverage or
+   * the region does not pay (RegionPays), the next ProbeInterval - 1 evaluations run the full
+   * chain without measuring the region.
    */
   void EndCoverage(bool measured);
   static constexpr double DenseCoverage = 0.25;
   static constexpr int ProbeInterval = 8;
   int FramesUntilProbe = 0;
 
+  /**
+   * What the region costs against the full chain. Its read-back makes the CPU wait for the GPU
+   * and leaves the GPU idle while the rest of the chain is submitted; a GPU that runs the whole
+   * chain faster than that (an NVIDIA H100: docs/gpu.md) is better off with the full chain,
+   * while on Mesa's llvmpipe, whose passes cost in proportion to their samples, the region is
+   * the saving. Each content-aware evaluation is timed by two GPU timestamps, from the start of
+   * the chain to the end of the composite, read back frames later without waiting, and
+   * averaged per kind (RegionCost with the region measured, FullCost without). While the
+   * region pays, one evaluation in ExploreInterval runs the full chain to keep FullCost
+   * current. The output is the same bits either way.
+   */
+  bool RegionPays() const;
+  void BeginCostTiming(bool measured);
+  void EndCostTiming();
+  void CollectCostTimings();
+  bool CostTimingSupported();
+  void ReleaseCostTiming();
+  struct CostSlot
+  {
+    unsigned int Queries[2] = { 0, 0 };
+    bool Measured = false; ///< the evaluation measured the region
+    bool Pending = false;  ///< both timestamps issued, not read yet
+  };
+  static constexpr int CostSlots = 4;
+  static constexpr int ExploreInterval = 32;
+  CostSlot CostTimings[CostSlots];
+  int NextCostSlot = 0;
+  bool CostTimingOpen = false;
+  int CostTimingSupport = 0; ///< 0 not asked, 1 yes, -1 no
+  int FramesUntilExplore = ExploreInterval;
+
+public:
+  /// Average GPU milliseconds of a content-aware evaluation with and without the region
+  /// measured; negative until timed (RegionPays).
+  double RegionCost = -1.0;
+  double FullCost = -1.0;
+
+private:
   /// The region of the bloom term within the composite's output; outside it the bloom is zero.
   Box CompositeRegion;
   bool CompositeRestricted = false;

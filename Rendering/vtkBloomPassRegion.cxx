@@ -201,6 +201,106 @@ void vtkBloomPassChainRunner::ReleaseCompute()
 }
 
 //------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::CostTimingSupported()
+{
+  if (this->CostTimingSupport == 0)
+  {
+    GLint bits = 0;
+    if (glQueryCounter && glGetQueryiv)
+    {
+      glGetQueryiv(GL_TIMESTAMP, GL_QUERY_COUNTER_BITS, &bits);
+    }
+    this->CostTimingSupport = bits > 0 ? 1 : -1;
+  }
+  return this->CostTimingSupport > 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::BeginCostTiming(bool measured)
+{
+  // Timestamps rather than GL_TIME_ELAPSED, which cannot nest: a caller may time the frame.
+  if (!this->CostTimingSupported())
+  {
+    return;
+  }
+  this->CollectCostTimings();
+  CostSlot& slot = this->CostTimings[this->NextCostSlot];
+  if (slot.Pending)
+  {
+    return; // every slot still in flight: this evaluation goes untimed rather than wait
+  }
+  if (!slot.Queries[0])
+  {
+    glGenQueries(2, slot.Queries);
+  }
+  glQueryCounter(slot.Queries[0], GL_TIMESTAMP);
+  slot.Measured = measured;
+  this->CostTimingOpen = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::EndCostTiming()
+{
+  if (!this->CostTimingOpen)
+  {
+    return;
+  }
+  CostSlot& slot = this->CostTimings[this->NextCostSlot];
+  glQueryCounter(slot.Queries[1], GL_TIMESTAMP);
+  slot.Pending = true;
+  this->NextCostSlot = (this->NextCostSlot + 1) % CostSlots;
+  this->CostTimingOpen = false;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::CollectCostTimings()
+{
+  for (CostSlot& slot : this->CostTimings)
+  {
+    GLint available = 0;
+    if (slot.Pending)
+    {
+      glGetQueryObjectiv(slot.Queries[1], GL_QUERY_RESULT_AVAILABLE, &available);
+    }
+    if (!available)
+    {
+      continue;
+    }
+    GLuint64 start = 0, end = 0;
+    glGetQueryObjectui64v(slot.Queries[0], GL_QUERY_RESULT, &start);
+    glGetQueryObjectui64v(slot.Queries[1], GL_QUERY_RESULT, &end);
+    slot.Pending = false;
+    const double ms = end >= start ? 1e-6 * static_cast<double>(end - start) : 0.0;
+    double& average = slot.Measured ? this->RegionCost : this->FullCost;
+    average = average < 0.0 ? ms : 0.75 * average + 0.25 * ms;
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::RegionPays() const
+{
+  return this->RegionCost < 0.0 || this->FullCost < 0.0 || this->RegionCost <= this->FullCost;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::ReleaseCostTiming()
+{
+  for (CostSlot& slot : this->CostTimings)
+  {
+    if (slot.Queries[0])
+    {
+      glDeleteQueries(2, slot.Queries);
+    }
+    slot = CostSlot();
+  }
+  this->NextCostSlot = 0;
+  this->CostTimingOpen = false;
+  this->CostTimingSupport = 0;
+  this->RegionCost = this->FullCost = -1.0;
+  this->FramesUntilExplore = ExploreInterval;
+}
+
+//------------------------------------------------------------------------------
 vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::MeasureBrightRegion()
 {
   vtkBloomPassResources& res = this->Resources;

@@ -505,3 +505,42 @@ TEST(RenderingBloomPassRegion, DenseRegionIsMeasuredEveryEighthRender)
     EXPECT_TRUE(SameBits(first, output)) << "render " << render;
   }
 }
+
+//------------------------------------------------------------------------------
+// A small region is measured on the first render, whose cost is not known yet. Later renders
+// follow what the GPU's timestamps say the region costs against the full chain: measured
+// every render while it pays, every 8th when it does not, and at least one render in 32 runs
+// the full chain either way (the timing's own probe). Every render gives the same bits.
+TEST(RenderingBloomPassRegion, SmallRegionFollowsItsMeasuredCost)
+{
+  vtkSmartPointer<vtkImageData> input = SparseImage(960, 540, { { 470, 476, 260, 264 } });
+  Gpu gpu;
+  vtkSmartPointer<vtkImageData> first;
+  int full = 0;
+  for (int render = 0; render < 40; ++render)
+  {
+    vtkSmartPointer<vtkImageData> output = gpu.Apply(input);
+    int region[4];
+    gpu.Pass->GetLastBrightRegion(region);
+    const bool measured = region[1] > region[0];
+    if (render == 0)
+    {
+      EXPECT_TRUE(measured);
+    }
+    if (measured)
+    {
+      EXPECT_LT(gpu.Pass->GetLastChainCoverage(), 0.25) << "render " << render;
+    }
+    else
+    {
+      EXPECT_EQ(gpu.Pass->GetLastChainCoverage(), 1.0) << "render " << render;
+      ++full;
+    }
+    if (!first)
+    {
+      first = output;
+    }
+    EXPECT_TRUE(SameBits(first, output)) << "render " << render;
+  }
+  EXPECT_GE(full, 1);
+}
