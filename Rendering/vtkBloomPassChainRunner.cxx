@@ -120,6 +120,7 @@ vtkOpenGLQuadHelper* vtkBloomPassChainRunner::Program(const std::string& variant
       variant.rfind("#define REDUCE", 0) == 0 ? vtkBloomPassReduceFS : vtkBloomPassFS;
     vtkShaderProgram::Substitute(fs, "//BLOOM::Constants", ShaderConstants());
     vtkShaderProgram::Substitute(fs, "//BLOOM::Variant", variant);
+    this->CompiledProgram = true;
     quad.reset(new vtkOpenGLQuadHelper(this->Resources.Context,
       vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
   }

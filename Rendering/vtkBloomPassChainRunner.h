@@ -256,9 +256,10 @@ private:
    * while on Mesa's llvmpipe, whose passes cost in proportion to their samples, the region is
    * the saving. Each content-aware evaluation is timed by two GPU timestamps, from the start of
    * the chain to the end of the composite, read back frames later without waiting, and
-   * averaged per kind (RegionCost with the region measured, FullCost without). While the
-   * region pays, one evaluation in ExploreInterval runs the full chain to keep FullCost
-   * current. The output is the same bits either way.
+   * averaged per kind (RegionCost with the region measured, FullCost without); an evaluation
+   * that compiled a program is not timed. While the region pays, the 4th evaluation and then
+   * one in ExploreInterval run the full chain to learn FullCost. The output is the same bits
+   * either way.
    */
   bool RegionPays() const;
   void BeginCostTiming(bool measured);
@@ -278,7 +279,9 @@ private:
   int NextCostSlot = 0;
   bool CostTimingOpen = false;
   int CostTimingSupport = 0; ///< 0 not asked, 1 yes, -1 no
-  int FramesUntilExplore = ExploreInterval;
+  static constexpr int FirstExplore = 4;
+  int FramesUntilExplore = FirstExplore;
+  bool CompiledProgram = false; ///< a program was made since BeginCostTiming
 
 public:
   /// Average GPU milliseconds of a content-aware evaluation with and without the region

@@ -258,6 +258,7 @@ vtkBloomPassChainRunner::ComputeProgram* vtkBloomPassChainRunner::Compute(
     return nullptr;
   }
   program.Id = id;
+  this->CompiledProgram = true;
   return &program;
 }
 

@@ -236,13 +236,16 @@ void vtkBloomPassChainRunner::BeginCostTiming(bool measured)
   glQueryCounter(slot.Queries[0], GL_TIMESTAMP);
   slot.Measured = measured;
   this->CostTimingOpen = true;
+  this->CompiledProgram = false;
 }
 
 //------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::EndCostTiming()
 {
-  if (!this->CostTimingOpen)
+  if (!this->CostTimingOpen || this->CompiledProgram)
   {
+    // Compiling a program stalls the GPU far longer than the chain runs: not a sample.
+    this->CostTimingOpen = false;
     return;
   }
   CostSlot& slot = this->CostTimings[this->NextCostSlot];
@@ -272,7 +275,7 @@ void vtkBloomPassChainRunner::CollectCostTimings()
     slot.Pending = false;
     const double ms = end >= start ? 1e-6 * static_cast<double>(end - start) : 0.0;
     double& average = slot.Measured ? this->RegionCost : this->FullCost;
-    average = average < 0.0 ? ms : 0.75 * average + 0.25 * ms;
+    average = average < 0.0 ? ms : 0.5 * (average + ms);
   }
 }
 
@@ -297,7 +300,7 @@ void vtkBloomPassChainRunner::ReleaseCostTiming()
   this->CostTimingOpen = false;
   this->CostTimingSupport = 0;
   this->RegionCost = this->FullCost = -1.0;
-  this->FramesUntilExplore = ExploreInterval;
+  this->FramesUntilExplore = FirstExplore;
 }
 
 //------------------------------------------------------------------------------
