@@ -242,13 +242,23 @@ void vtkBloomPassChainRunner::BeginCostTiming(bool measured)
 //------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::EndCostTiming()
 {
-  if (!this->CostTimingOpen || this->CompiledProgram)
+  if (!this->CostTimingOpen)
   {
-    // Compiling a program stalls the GPU far longer than the chain runs: not a sample.
-    this->CostTimingOpen = false;
     return;
   }
   CostSlot& slot = this->CostTimings[this->NextCostSlot];
+  if (this->CompiledProgram)
+  {
+    // Compiling a program stalls the GPU far longer than the chain runs: not a sample. The
+    // first full chain compiles the programs of the operators' borders the region had left
+    // out; time the next one instead.
+    this->CostTimingOpen = false;
+    if (!slot.Measured)
+    {
+      this->FramesUntilExplore = 1;
+    }
+    return;
+  }
   glQueryCounter(slot.Queries[1], GL_TIMESTAMP);
   slot.Pending = true;
   this->NextCostSlot = (this->NextCostSlot + 1) % CostSlots;
