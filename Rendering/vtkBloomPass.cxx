@@ -392,6 +392,18 @@ void vtkBloomPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
+double vtkBloomPass::GetRegionCost() const
+{
+  return this->Internals->Runner.RegionCost;
+}
+
+//------------------------------------------------------------------------------
+double vtkBloomPass::GetFullCost() const
+{
+  return this->Internals->Runner.FullCost;
+}
+
+//------------------------------------------------------------------------------
 bool vtkBloomPass::ApplyToImage(
   vtkOpenGLRenderWindow* window, vtkImageData* input, vtkImageData* output)
 {

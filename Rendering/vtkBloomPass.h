@@ -246,6 +246,16 @@ public:
    */
   vtkGetMacro(LastChainCoverage, double);
 
+  /**
+   * What the content-aware chain has measured of its own cost: the average GPU milliseconds of
+   * an evaluation, from the start of the chain to the end of the composite, with the bright
+   * region measured (its read-back's wait included) and with the full chain; negative until
+   * timed (GPU timestamps, read frames later without waiting). Where the full chain is the
+   * cheaper, the region is measured every 8th render only (docs/rendering.md).
+   */
+  double GetRegionCost() const;
+  double GetFullCost() const;
+
   ///@{
   /**
    * Per-pass GPU profile, for benchmarks (off by default). With ProfilePasses on, every GPU
