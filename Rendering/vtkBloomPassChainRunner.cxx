@@ -471,10 +471,13 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
   bright.Y = c.SourceIsIdentity ? nullptr : &c.Source.Y;
   bright.Step = STEP_THRESHOLD;
   bright.ReadsSource = true;
-  // Restricted, the bright region's reduction also tells whether the bloom is empty. Either
-  // way the zero samples are not written (the level is cleared first): fewer writes.
+  // Restricted, the bright region's reduction also tells whether the bloom is empty. As
+  // fragments, the zero samples are not written (the level is cleared first): fewer writes. A
+  // compute bright pass that no query counts writes its zeros instead: a clear goes through
+  // the graphics units, and on an NVIDIA H100 the cleared level then costs the compute passes
+  // about 0.5 ms (docs/gpu.md).
   const bool query = skipEmpty && !this->Restrict;
-  bright.DiscardZero = skipEmpty;
+  bright.DiscardZero = skipEmpty && (query || !this->UseCompute || !this->ComputeSupported());
   bright.Name = "bright";
   bright.Level = 0;
   if (bright.DiscardZero)
