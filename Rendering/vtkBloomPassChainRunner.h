@@ -79,6 +79,11 @@ public:
   int BrightRegion[4] = { 0, 0, 0, 0 };
   double Coverage = 1.0;
 
+  /// Average GPU milliseconds of a content-aware evaluation with and without the region
+  /// measured; negative until timed (RegionPays).
+  double RegionCost = -1.0;
+  double FullCost = -1.0;
+
   /**
    * out = keep * scene + Strength * Tint * bloom into `target`, or into the bound framebuffer
    * at `origin` when `target` is null.
@@ -283,13 +288,6 @@ private:
   int FramesUntilExplore = FirstExplore;
   bool CompiledProgram = false; ///< a program was made since BeginCostTiming
 
-public:
-  /// Average GPU milliseconds of a content-aware evaluation with and without the region
-  /// measured; negative until timed (RegionPays).
-  double RegionCost = -1.0;
-  double FullCost = -1.0;
-
-private:
   /// The region of the bloom term within the composite's output; outside it the bloom is zero.
   Box CompositeRegion;
   bool CompositeRestricted = false;
