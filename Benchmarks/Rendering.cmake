@@ -6,7 +6,7 @@ if (NOT VTKBLOOM_ENABLE_RENDERING)
 endif ()
 add_executable(BloomPassFrameTime BloomPassFrameTime.cxx)
 target_link_libraries(BloomPassFrameTime PRIVATE vtkbloom_scenes VTKBloom::RenderingBloom
-  VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonCore VTK::opengl vtkbloom_build_flags)
+  VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonCore ${vtkbloom_opengl_modules} vtkbloom_build_flags)
 vtk_module_autoinit(TARGETS BloomPassFrameTime MODULES VTK::RenderingOpenGL2)
 
 # The same full-screen pass as a fragment shader and as a compute shader (OpenGL 4.3):
@@ -21,6 +21,6 @@ foreach (stage IN ITEMS VS FS CS)
 endforeach ()
 add_executable(ShaderStageThroughput ShaderStageThroughput.cxx ${stage_shaders})
 target_include_directories(ShaderStageThroughput PRIVATE "${CMAKE_CURRENT_BINARY_DIR}")
-target_link_libraries(ShaderStageThroughput PRIVATE VTK::RenderingOpenGL2 VTK::RenderingCore
-  VTK::CommonCore VTK::opengl vtkbloom_build_flags)
+target_link_libraries(ShaderStageThroughput PRIVATE VTKBloom::RenderingBloom VTK::RenderingOpenGL2 VTK::RenderingCore
+  VTK::CommonCore ${vtkbloom_opengl_modules} vtkbloom_build_flags)
 vtk_module_autoinit(TARGETS ShaderStageThroughput MODULES VTK::RenderingOpenGL2)

@@ -15,10 +15,10 @@
 #include "StageThroughputFS.h"
 #include "StageThroughputVS.h"
 
+#include "vtkBloomVTKCompat.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderWindow.h"
-#include "vtk_glew.h"
 
 #include <cstdio>
 #include <cstdlib>

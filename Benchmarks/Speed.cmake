@@ -39,5 +39,5 @@ endif ()
 if (EXISTS "${CMAKE_CURRENT_LIST_DIR}/Speed/ChainSpeedGPU.cxx" AND TARGET VTKBloom::RenderingBloom)
   target_sources(BloomChainSpeed PRIVATE "${CMAKE_CURRENT_LIST_DIR}/Speed/ChainSpeedGPU.cxx")
   target_link_libraries(BloomChainSpeed PRIVATE VTKBloom::RenderingBloom vtkbloom_scenes
-    VTK::RenderingOpenGL2 VTK::RenderingCore VTK::opengl)
+    VTK::RenderingOpenGL2 VTK::RenderingCore ${vtkbloom_opengl_modules})
 endif ()

@@ -16,6 +16,7 @@
 #include "vtkBloomExampleScenes.h"
 #include "vtkBloomMedian.h"
 #include "vtkBloomPass.h"
+#include "vtkBloomVTKCompat.h"
 #include "vtkCamera.h"
 #include "vtkFramebufferPass.h"
 #include "vtkImageBloom.h"
@@ -28,7 +29,6 @@
 #include "vtkRenderer.h"
 #include "vtkSphereSource.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <chrono>
 #include <cmath>

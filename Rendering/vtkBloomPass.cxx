@@ -3,6 +3,7 @@
 #include "vtkActor.h"
 #include "vtkBloomPassChainRunner.h"
 #include "vtkBloomPassResources.h"
+#include "vtkBloomVTKCompat.h"
 #include "vtkDataArray.h"
 #include "vtkImageBloom.h"
 #include "vtkImageData.h"
@@ -20,7 +21,6 @@
 #include "vtkRenderState.h"
 #include "vtkRenderer.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <cmath>
@@ -334,6 +334,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     in.Runner.BeginProfiledSpan();
   }
   in.RenderDelegate(this, s, res.Scene, s->GetPropArray(), s->GetPropArrayCount(), false);
+  this->SceneRendered(s, res.Scene.Color);
   if (this->ProfilePasses)
   {
     in.Runner.EndProfiledSpan("scene", w, h, sceneBytes);
@@ -390,6 +391,9 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   }
   vtkOpenGLCheckErrorMacro("failed after vtkBloomPass::Render");
 }
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::SceneRendered(const vtkRenderState*, vtkTextureObject*) {}
 
 //------------------------------------------------------------------------------
 double vtkBloomPass::GetRegionCost() const

@@ -83,6 +83,8 @@ class vtkImageData;
 class vtkOpenGLRenderWindow;
 class vtkProp;
 class vtkPropCollection;
+class vtkRenderState;
+class vtkTextureObject;
 
 class VTKRENDERINGBLOOM_EXPORT vtkBloomPass : public vtkImageProcessingPass
 {
@@ -291,6 +293,15 @@ public:
 protected:
   vtkBloomPass();
   ~vtkBloomPass() override;
+
+  /**
+   * Called once the delegate has rendered the scene into the pass's float target, before the
+   * chain reads it. `sceneColor` is that target's colour texture (RGBA16F or RGBA32F, the
+   * renderer's tiled size). The default does nothing; a subclass whose delegate delivers the
+   * scene elsewhere writes it here: ParaView's bloom view uploads the float image that IceT
+   * composited from every rank (vtkPVBloomPass).
+   */
+  virtual void SceneRendered(const vtkRenderState* s, vtkTextureObject* sceneColor);
 
   vtkSmartPointer<vtkImageBloom> Parameters;
   vtkPropCollection* Emitters;

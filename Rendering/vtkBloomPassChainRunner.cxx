@@ -7,6 +7,7 @@
 #include "vtkBloomPassFS.h"
 #include "vtkBloomPassReduceFS.h"
 #include "vtkBloomPassResources.h"
+#include "vtkBloomVTKCompat.h"
 #include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkNew.h"
@@ -18,7 +19,6 @@
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <iomanip>

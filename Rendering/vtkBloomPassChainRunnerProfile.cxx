@@ -6,7 +6,7 @@
 
 #include "vtkBloomChain.h"
 #include "vtkBloomPassResources.h"
-#include "vtk_glew.h"
+#include "vtkBloomVTKCompat.h"
 
 #include <string>
 

@@ -9,11 +9,11 @@
 
 #include "vtkBloomPassFS.h"
 #include "vtkBloomPassResources.h"
+#include "vtkBloomVTKCompat.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <string>
 

@@ -5,10 +5,10 @@
 
 #include "vtkBloomLinearOperator.h"
 #include "vtkBloomPassResources.h"
+#include "vtkBloomVTKCompat.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <sstream>

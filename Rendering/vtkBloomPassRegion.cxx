@@ -9,6 +9,7 @@
 #include "vtkBloomLinearOperator.h"
 #include "vtkBloomPassReduceCS.h"
 #include "vtkBloomPassResources.h"
+#include "vtkBloomVTKCompat.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -16,7 +17,6 @@
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 #include <algorithm>
 #include <vector>

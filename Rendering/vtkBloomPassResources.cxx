@@ -2,6 +2,7 @@
 // chain's targets (see vtkBloomPassResources.h).
 #include "vtkBloomPassResources.h"
 
+#include "vtkBloomVTKCompat.h"
 #include "vtkDataArray.h"
 #include "vtkImageBloom.h"
 #include "vtkImageData.h"
@@ -9,7 +10,6 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkTextureObject.h"
-#include "vtk_glew.h"
 
 //------------------------------------------------------------------------------
 vtkBloomPassSavedState::vtkBloomPassSavedState(vtkOpenGLState* state)

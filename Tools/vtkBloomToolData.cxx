@@ -1,6 +1,7 @@
 #include "vtkBloomToolData.h"
 
 #include "vtkBloomPass.h"
+#include "vtkBloomVTKCompat.h"
 #include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
 
@@ -10,7 +11,6 @@
 #include <vtkCellDataToPointData.h>
 #include <vtkColorTransferFunction.h>
 #include <vtkCompositeDataSet.h>
-#include <vtkCompositePolyDataMapper2.h>
 #include <vtkContourFilter.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetMapper.h>
@@ -439,7 +439,7 @@ void DataScene::Build(vtkDataObject* data, const std::string& name, const DataSc
       // Block by block (each keeps its own arrays), drawn by the composite mapper.
       d.Surface->SetInputConnection(source->GetOutputPort());
       source = d.Surface;
-      d.Mapper = vtkSmartPointer<vtkCompositePolyDataMapper2>::New();
+      d.Mapper = vtkSmartPointer<vtkBloomCompositePolyDataMapper>::New();
     }
     else
     {

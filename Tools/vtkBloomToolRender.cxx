@@ -3,6 +3,7 @@
 #include "vtkBloomExampleScenes.h"
 #include "vtkBloomPass.h"
 #include "vtkBloomToolImageIO.h"
+#include "vtkBloomVTKCompat.h"
 
 #include <vtkDataObject.h>
 #include <vtkImageData.h>
@@ -71,6 +72,20 @@ struct Stage
   ~Stage() { this->Window->ReleaseGraphicsResources(this->Window); }
 };
 
+}
+
+//------------------------------------------------------------------------------
+void RequireOpenGLWindow()
+{
+  std::string why;
+  if (!vtkBloomCheckOpenGLWindow(why))
+  {
+    throw RunError{ why };
+  }
+}
+
+namespace
+{
 void CheckOutput(const std::string& output)
 {
   const std::string ext = Extension(output);
@@ -130,6 +145,7 @@ int RenderScene(const std::string& scene, const std::string& output, const Rende
       ".pvd)" };
   }
   CheckOutput(output);
+  RequireOpenGLWindow();
   ErrorCollector errors;
   ProgressBar progress;
   Stage stage(options, errors);
@@ -149,6 +165,7 @@ int RenderScene(const std::string& scene, const std::string& output, const Rende
 int RenderData(const std::string& path, const std::string& output, const RenderOptions& options)
 {
   CheckOutput(output);
+  RequireOpenGLWindow();
   const DatasetFiles files = ResolveDataset(path);
   const size_t count = files.Files.size();
   // Outputs never replace an input, and a series never writes over one of its own frames.

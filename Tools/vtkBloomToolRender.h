@@ -27,6 +27,9 @@ struct RenderOptions
   std::function<void(vtkBloomPass*)> ConfigureBloom;
 };
 
+/// Throws RunError where VTK would crash making the render window (vtkBloomCheckOpenGLWindow).
+void RequireOpenGLWindow();
+
 /// Render the example scene `scene` to `output`. Throws UsageError or RunError.
 int RenderScene(const std::string& scene, const std::string& output, const RenderOptions& options);
 

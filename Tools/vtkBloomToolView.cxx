@@ -4,6 +4,7 @@
 #include "vtkBloomPass.h"
 #include "vtkBloomToolImageIO.h"
 #include "vtkBloomToolRender.h"
+#include "vtkBloomVTKCompat.h"
 #include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
 
@@ -27,7 +28,6 @@
 #include <vtkTextActor.h>
 #include <vtkTextProperty.h>
 #include <vtkWindowToImageFilter.h>
-#include <vtk_glew.h>
 
 // Last: Xlib defines macros (Status, Bool, None, True, False) that VTK's headers use as names.
 #include <X11/Xlib.h>
@@ -305,6 +305,7 @@ int View(const std::string& input, const RenderOptions& options, const std::stri
       "; use 'vtk-bloom render " + input + " OUT.png' to write an image without one" };
   }
   XCloseDisplay(connection);
+  RequireOpenGLWindow();
 
   Viewer viewer;
   viewer.Options = options;
@@ -354,7 +355,7 @@ int View(const std::string& input, const RenderOptions& options, const std::stri
   viewer.Status->GetTextProperty()->SetFontSize(14);
   viewer.Status->GetTextProperty()->SetColor(0.75, 0.75, 0.75);
   viewer.Status->SetDisplayPosition(10, 10);
-  viewer.Renderer->AddActor2D(viewer.Status);
+  viewer.Renderer->AddViewProp(viewer.Status);
   viewer.Help->SetInput(HelpText);
   viewer.Help->GetTextProperty()->SetFontSize(14);
   viewer.Help->GetTextProperty()->SetColor(0.75, 0.75, 0.75);
@@ -362,7 +363,7 @@ int View(const std::string& input, const RenderOptions& options, const std::stri
   viewer.Help->GetPositionCoordinate()->SetCoordinateSystemToNormalizedDisplay();
   viewer.Help->GetPositionCoordinate()->SetValue(0.02, 0.95);
   viewer.Help->SetVisibility(false);
-  viewer.Renderer->AddActor2D(viewer.Help);
+  viewer.Renderer->AddViewProp(viewer.Help);
 
   viewer.Interactor->Initialize();
   vtkImageBloom* p = viewer.Pass->GetParameters();

@@ -1,11 +1,12 @@
 #!/usr/bin/env bash
-# Build the vtk-bloom ParaView plugin (ParaView/) against Debian 12's ParaView 5.11 and the
-# VTK 9.2 it carries, beside the project's own VTK 9.1 build:
+# Build the vtk-bloom ParaView plugin (ParaView/) against the ParaView of this system: Debian
+# 12's ParaView 5.11 and the VTK 9.2 it carries, beside the project's own VTK 9.1 build; or,
+# inside the sid root (scripts/sid-root.sh), ParaView 6.1 on the system VTK 9.6:
 #
 #   bash scripts/build-paraview-plugin.sh [BUILD_DIR]     (default: build-paraview)
 #
 # scripts/paraview-env.sh installs and sets up ParaView (cached) and runs CMake in its
-# environment. The plugin is BUILD_DIR/lib/paraview-5.11/plugins/VTKBloom/VTKBloom.so;
+# environment. The plugin is BUILD_DIR/lib/paraview-X.Y/plugins/VTKBloom/VTKBloom.so;
 # scripts/pvbatch.sh loads it.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -18,6 +19,6 @@ jobs=${VTKBLOOM_JOBS:-$(nproc)}
 bash scripts/paraview-env.sh cmake -S ParaView -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   "${launcher[@]}" ${VTKBLOOM_PARAVIEW_CMAKE_ARGS:-}
 bash scripts/paraview-env.sh cmake --build "$build" -j "$jobs"
-plugin=$build/lib/paraview-5.11/plugins/VTKBloom/VTKBloom.so
-[ -f "$plugin" ] || { echo "build-paraview-plugin: $plugin was not built" >&2; exit 1; }
+plugin=$(ls "$build"/lib/paraview-*/plugins/VTKBloom/VTKBloom.so 2>/dev/null | head -n 1)
+[ -n "$plugin" ] || { echo "build-paraview-plugin: no VTKBloom.so was built in $build" >&2; exit 1; }
 echo "build-paraview-plugin: $plugin"

@@ -3,6 +3,12 @@
 # Idempotent: packages already present are skipped by apt itself.
 set -euo pipefail
 
+# The package names below are Debian 12's. The sid root (scripts/sid-root.sh) installs its own.
+if ! grep -q '^12\.' /etc/debian_version 2>/dev/null; then
+  echo "install-deps: not Debian 12 ($(cat /etc/debian_version 2>/dev/null)); nothing installed"
+  exit 0
+fi
+
 packages=(
   build-essential cmake ninja-build pkg-config ccache
   libvtk9-dev vtk9 python3-vtk9 python3-numpy python3-pytest

@@ -1,10 +1,9 @@
 #!/usr/bin/env bash
-# Make Debian 12's ParaView 5.11 usable beside Debian's VTK 9.1, then run a command in that
-# environment:
+# Make ParaView usable beside the system VTK, then run a command in that environment:
 #
 #   bash scripts/paraview-env.sh [COMMAND [ARGS...]]
 #
-# The set-up is idempotent and cached:
+# On Debian 12 (ParaView 5.11 beside VTK 9.1) the set-up is idempotent and cached:
 # - apt: paraview-dev (ParaView's libraries, CMake package, pvbatch, and the VTK 9.2 it carries),
 #   Open MPI, and the Qt development packages its CMake package asks for, all without
 #   recommends. With recommends apt would remove libvtk9-dev and python3-vtk9.
@@ -19,7 +18,31 @@
 # vtkmodules is ParaView's (VTK 9.2) instead of VTK 9.1's, with PYTHONPATH set to the unpacked
 # package. Nothing outside that namespace changes, so the project's VTK 9.1 build, its tests and
 # /usr/bin/python3's `import vtk` keep working beside it.
+#
+# Where ParaView and its Python come as ordinary packages beside the system VTK (ParaView 6.1
+# in Debian sid, built on sid's VTK 9.6; see scripts/sid-root.sh), none of that is needed:
+# COMMAND runs as it is, with only the Open MPI settings below.
 set -euo pipefail
+
+# Open MPI refuses root unless told, and must not look for more slots than the cores. Open MPI
+# 4 (Debian 12) reads OMPI_MCA_rmaps_base_oversubscribe; Open MPI 6 (PRRTE, sid) reads
+# PRTE_MCA_rmaps_default_mapping_policy.
+mpi_env() {
+  export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  export PRTE_ALLOW_RUN_AS_ROOT=1 PRTE_ALLOW_RUN_AS_ROOT_CONFIRM=1
+  export OMPI_MCA_rmaps_base_oversubscribe=1
+  export PRTE_MCA_rmaps_default_mapping_policy=:oversubscribe
+}
+
+if ! grep -q '^12\.' /etc/debian_version 2>/dev/null; then
+  if ! dpkg-query -W -f='${Status}' python3-paraview 2>/dev/null | grep -q "install ok installed"; then
+    echo "paraview-env: ParaView's Python (python3-paraview) is not installed here" >&2
+    exit 1
+  fi
+  [ $# -eq 0 ] && exit 0
+  mpi_env
+  exec "$@"
+fi
 
 cache=${VTKBLOOM_CACHE:-$HOME/.cache/vtk-bloom}
 pvpy=$cache/paraview-python
@@ -74,9 +97,7 @@ link "$pvpy/usr/lib/x86_64-linux-gnu/vtk/hierarchy/ParaView" /usr/lib/x86_64-lin
 [ $# -eq 0 ] && exit 0
 
 export PYTHONPATH=$pvpy$dist${PYTHONPATH:+:$PYTHONPATH}
-# Open MPI refuses root unless told, and must not look for more slots than the cores.
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-export OMPI_MCA_rmaps_base_oversubscribe=1
+mpi_env
 exec $SUDO unshare -m -- /bin/sh -c '
   mount --bind "$1" "$2" || exit 1
   shift 2

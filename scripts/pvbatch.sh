@@ -25,16 +25,20 @@ esac
 [ $# -ge 1 ] || { echo "usage: pvbatch.sh [-n N] SCRIPT.py [ARGS...]" >&2; exit 2; }
 
 build=${VTKBLOOM_PARAVIEW_BUILD:-$root/build-paraview}
-plugins=$build/lib/paraview-5.11/plugins/VTKBloom
-if [ ! -f "$plugins/VTKBloom.so" ]; then
+plugin() { ls "$build"/lib/paraview-*/plugins/VTKBloom/VTKBloom.so 2>/dev/null | head -n 1; }
+if [ -z "$(plugin)" ]; then
   bash "$root/scripts/build-paraview-plugin.sh" "$build" >&2
 fi
+plugins=$(dirname "$(plugin)")
 
 export PV_PLUGIN_PATH=$plugins${PV_PLUGIN_PATH:+:$PV_PLUGIN_PATH}
 run=(pvbatch)
 [ "$ranks" -gt 1 ] && run=(mpiexec -n "$ranks" "${run[@]}")
+# ParaView 5.11 renders through X only; ParaView 6 (VTK 9.6) falls back to EGL with no display.
 xvfb=()
-[ -n "${DISPLAY:-}" ] || xvfb=(bash "$root/scripts/with-xvfb.sh")
+case $plugins in
+  */paraview-5.*) [ -n "${DISPLAY:-}" ] || xvfb=(bash "$root/scripts/with-xvfb.sh") ;;
+esac
 # Open MPI's shared-memory transport needs no network; keep it off the host's interfaces.
 export OMPI_MCA_btl=self,vader
 exec bash "$root/scripts/paraview-env.sh" "${xvfb[@]}" "${run[@]}" "$@"

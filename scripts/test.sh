@@ -15,6 +15,12 @@
 #                                  through whichever EGL driver the machine has: Mesa's
 #                                  (llvmpipe) on a machine with no GPU. Not part of the default
 #                                  run.
+#   bash scripts/test.sh --sid     VTK 9.6 and ParaView 6.1, stock, in a Debian sid root
+#                                  (scripts/sid-root.sh makes it once and caches it): the
+#                                  whole suite in build-sid/ with no display (VTK picks EGL),
+#                                  the tests that need a window again through X under Xvfb,
+#                                  then the ParaView 6.1 plugin in build-paraview-sid/ and its
+#                                  tests. Not part of the default run; .ci/run runs it.
 #   bash scripts/test.sh --asan    AddressSanitizer + UndefinedBehaviorSanitizer build in
 #                                  build-asan/ (system VTK, under Xvfb)
 #   bash scripts/test.sh --fuzz [S] the OpenEXR reader's libFuzzer target for S seconds
@@ -23,8 +29,8 @@
 # they fail.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-bash "$root/scripts/install-deps.sh"
 mode=${1:-all}
+[ "$mode" = --in-sid-root ] || bash "$root/scripts/install-deps.sh"
 
 run_x11() {
   local build=$1
@@ -56,6 +62,27 @@ run_paraview() {
     "$root/build-paraview/Testing"
 }
 
+# VTK 9.6 and ParaView 6.1: the same steps as the legs above, run inside the sid root
+# (test.sh --in-sid-root), in build folders of their own.
+run_sid() {
+  bash "$root/scripts/sid-root.sh" bash "$root/scripts/test.sh" --in-sid-root
+}
+
+run_in_sid_root() {
+  bash "$root/scripts/configure.sh" "$root/build-sid" -DCMAKE_BUILD_TYPE=Release \
+    -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
+  echo "test: running the suite against VTK 9.6 (no DISPLAY: VTK chooses EGL)"
+  env -u DISPLAY -u WAYLAND_DISPLAY ctest --test-dir "$root/build-sid" --output-on-failure \
+    -j"$(nproc)"
+  echo "test: the tests that open a window, again against VTK 9.6 through X (private Xvfb)"
+  bash "$root/scripts/with-xvfb.sh" ctest --test-dir "$root/build-sid" --output-on-failure \
+    -j"$(nproc)" -R '^(Rendering|CommandLineData[.]View)'
+  bash "$root/scripts/build-paraview-plugin.sh" "$root/build-paraview-sid"
+  echo "test: running the ParaView 6.1 plugin's tests (pvbatch, 1 to 4 MPI ranks)"
+  VTKBLOOM_PARAVIEW_BUILD="$root/build-paraview-sid" /usr/bin/python3 \
+    "$root/ParaView/Testing/run_tests.py" "$root/build-sid" "$root/build-paraview-sid/Testing"
+}
+
 case "$mode" in
   all)
     run_x11 "$root/build" -DCMAKE_BUILD_TYPE=Release -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
@@ -74,6 +101,12 @@ case "$mode" in
   --egl)
     run_headless egl
     ;;
+  --sid)
+    run_sid
+    ;;
+  --in-sid-root)
+    run_in_sid_root
+    ;;
   --asan)
     export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
     export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
@@ -84,7 +117,7 @@ case "$mode" in
     bash "$root/scripts/fuzz.sh" "${2:-120}"
     ;;
   *)
-    echo "usage: bash scripts/test.sh [--x11 | --paraview | --osmesa | --egl | --asan | --fuzz [SECONDS]]" >&2
+    echo "usage: bash scripts/test.sh [--x11 | --paraview | --osmesa | --egl | --sid | --asan | --fuzz [SECONDS]]" >&2
     exit 2
     ;;
 esac

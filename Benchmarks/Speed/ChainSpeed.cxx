@@ -516,6 +516,19 @@ double TriadBandwidth(int threads)
   return best;
 }
 
+// Whether a run failed or was skipped. Google Benchmark 1.8 replaced Run::error_occurred by
+// Run::skipped; the overload on int is taken where the member `skipped` exists.
+template <typename R>
+auto RunDidNotComplete(const R& r, int) -> decltype(static_cast<bool>(r.skipped))
+{
+  return static_cast<bool>(r.skipped);
+}
+template <typename R>
+bool RunDidNotComplete(const R& r, long)
+{
+  return r.error_occurred;
+}
+
 // Records every run's real time in ms (each repetition), then prints the summary table.
 class Recorder : public benchmark::ConsoleReporter
 {
@@ -524,7 +537,7 @@ public:
   {
     for (const auto& r : runs)
     {
-      if (!r.error_occurred && r.run_type == Run::RT_Iteration)
+      if (!RunDidNotComplete(r, 0) && r.run_type == Run::RT_Iteration)
       {
         std::string name = r.benchmark_name();
         const std::string suffix = "/real_time";

@@ -1,11 +1,14 @@
 #include "vtkPVBloomRenderView.h"
 
-#include "vtkBloomPass.h"
+#include "vtkIceTCompositePass.h"
+#include "vtkIceTSynchronizedRenderers.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
 #include "vtkPVImageBloom.h"
 #include "vtkPVSynchronizedRenderer.h"
+#include "vtkProcessModule.h"
 #include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
 
 vtkStandardNewMacro(vtkPVBloomRenderView);
 
@@ -21,6 +24,7 @@ vtkPVBloomRenderView::~vtkPVBloomRenderView()
   if (vtkRenderWindow* window = this->GetRenderWindow())
   {
     this->BloomPass->ReleaseGraphicsResources(window);
+    this->CompositeScenePass->ReleaseGraphicsResources(window);
   }
 }
 
@@ -65,6 +69,12 @@ int vtkPVBloomRenderView::GetBloomFloatPrecision()
 }
 
 //------------------------------------------------------------------------------
+bool vtkPVBloomRenderView::GetBloomLastSceneWasComposited()
+{
+  return this->BloomPass->GetLastSceneWasComposited();
+}
+
+//------------------------------------------------------------------------------
 bool vtkPVBloomRenderView::LocalProcessDisplaysImage()
 {
   if (this->InTileDisplayMode())
@@ -76,16 +86,49 @@ bool vtkPVBloomRenderView::LocalProcessDisplaysImage()
 }
 
 //------------------------------------------------------------------------------
+void vtkPVBloomRenderView::UpdateFloatComposite()
+{
+  vtkPVSynchronizedRenderer* sync = this->SynchronizedRenderers;
+  auto* icet = vtkIceTSynchronizedRenderers::SafeDownCast(sync->GetParallelSynchronizer());
+  vtkIceTCompositePass* composite = icet ? icet->GetIceTCompositePass() : nullptr;
+  vtkRenderPass* current = sync->GetRenderPass();
+  // Only where no other render pass (OSPRay, ANARI, value rendering) holds IceT's slot, and
+  // only in pvbatch: a server must hand its client the 8-bit image that float mode omits.
+  const bool use = composite && this->UseBloom && this->CompositeFloatColor &&
+    !this->GetMakingSelection() && !this->InTileDisplayMode() &&
+    composite->GetImageReductionFactor() <= 1 &&
+    vtkProcessModule::GetProcessType() == vtkProcessModule::PROCESS_BATCH &&
+    (current == nullptr || current == this->CompositeScenePass);
+  if (use)
+  {
+    // The background as the view set it, before ParaView clears it to black for IceT.
+    vtkRenderer* renderer = this->GetRenderer();
+    double rgb[3];
+    renderer->GetBackground(rgb);
+    this->BloomPass->SetCompositeBackground(rgb, renderer->GetBackgroundAlpha());
+    sync->SetRenderPass(this->CompositeScenePass);
+    composite->SetEnableFloatValuePass(true);
+  }
+  else if (current == this->CompositeScenePass)
+  {
+    sync->SetRenderPass(nullptr);
+    composite->SetEnableFloatValuePass(false);
+  }
+  this->BloomPass->SetCompositePass(use ? composite : nullptr);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVBloomRenderView::AboutToRenderOnLocalProcess(bool interactive)
 {
   this->Superclass::AboutToRenderOnLocalProcess(interactive);
+  this->UpdateFloatComposite();
   if (this->GetMakingSelection())
   {
     return; // ParaView emptied the slot for the selection render, and refills it afterwards.
   }
   vtkPVSynchronizedRenderer* sync = this->SynchronizedRenderers;
   vtkImageProcessingPass* slot = sync->GetImageProcessingPass();
-  vtkBloomPass* bloom = this->BloomPass;
+  vtkPVBloomPass* bloom = this->BloomPass;
   // ParaView's own pass in the slot (tone mapping), if any: bloom is never replaced by it
   // silently, it is spliced in as that pass's delegate.
   vtkImageProcessingPass* outer = (slot && slot != bloom) ? slot : nullptr;
@@ -119,6 +162,7 @@ void vtkPVBloomRenderView::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "UseBloom: " << this->UseBloom << "\n";
+  os << indent << "CompositeFloatColor: " << this->CompositeFloatColor << "\n";
   os << indent << "BloomPass:\n";
   this->BloomPass->PrintSelf(os, indent.GetNextIndent());
 }

@@ -14,8 +14,14 @@
  *   target. The bloom therefore runs on the whole composited image, never on one rank's
  *   partial image, so there are no seams at the ranks' boundaries. It runs on the rank that
  *   displays the image (rank 0; every rank in tile-display mode, where each tile blooms
- *   alone). IceT composites 8-bit colour, so in parallel the pass sees the image clamped to
- *   [0, 1]: use a threshold below 1 there.
+ *   alone).
+ * - HDR under MPI: IceT composites 8-bit colour, which would clamp the scene to [0, 1]. In
+ *   pvbatch (CompositeFloatColor on, the default) every rank renders through
+ *   vtkPVBloomCompositeScenePass into a float target, IceT composites RGBA32F, and
+ *   vtkPVBloomPass blooms that float image, over the renderer's single background colour: the
+ *   bloom under MPI is the serial one. IceT then leaves no 8-bit image, which a pvserver would
+ *   send to its client, so servers, tile displays, reduced interactive images and selection
+ *   renders keep the 8-bit composite.
  *
  * With ParaView's tone mapping on (UseToneMapping), the tone mapping pass stays outermost and
  * bloom becomes its delegate: bloom in linear HDR, then tone mapping. During a selection
@@ -28,11 +34,12 @@
 #ifndef vtkPVBloomRenderView_h
 #define vtkPVBloomRenderView_h
 
-#include "vtkNew.h" // For the pass and its parameters
+#include "vtkNew.h"                       // For the pass and its parameters
+#include "vtkPVBloomCompositeScenePass.h" // For the float composite
+#include "vtkPVBloomPass.h"               // For the pass
 #include "vtkPVRenderView.h"
 #include "vtkParaViewBloomModule.h" // For export macro
 
-class vtkBloomPass;
 class vtkImageBloom;
 class vtkPVImageBloom;
 
@@ -64,8 +71,18 @@ public:
   int GetBloomFloatPrecision();
   ///@}
 
+  ///@{
+  /// Composite float colour through IceT in pvbatch, so that HDR values bloom under MPI as in
+  /// serial (default on). See the class documentation for where it applies.
+  vtkSetMacro(CompositeFloatColor, bool);
+  vtkGetMacro(CompositeFloatColor, bool);
+  ///@}
+
+  /// Whether the last render bloomed the float image IceT composited (vtkPVBloomPass).
+  bool GetBloomLastSceneWasComposited();
+
   /// The pass, for tests and scripts that read its statistics.
-  vtkBloomPass* GetBloomPass() { return this->BloomPass; }
+  vtkPVBloomPass* GetBloomPass() { return this->BloomPass; }
 
 protected:
   vtkPVBloomRenderView();
@@ -77,8 +94,13 @@ protected:
   /// Whether this process shows the image that the bloom must process.
   bool LocalProcessDisplaysImage();
 
+  /// On every rank: IceT's render pass and colour format for the coming render.
+  void UpdateFloatComposite();
+
   bool UseBloom = true;
-  vtkNew<vtkBloomPass> BloomPass;
+  bool CompositeFloatColor = true;
+  vtkNew<vtkPVBloomPass> BloomPass;
+  vtkNew<vtkPVBloomCompositeScenePass> CompositeScenePass;
   vtkNew<vtkPVImageBloom> BloomParameters;
 
 private:

@@ -12,9 +12,12 @@ number of failed checks. Run by scripts/test.sh (the ParaView leg).
    1e-5 relative L2; the custom Bloom, the Gaussians, the bright pass and the pyramid steps
    equal the same filters run from VTK 9.1's Python within 1e-6.
 3. Errors: bloom_errors.py reports each bad parameter or input with its message, and exits 0.
-4. The bloom view: 1 and 3 ranks render the same image (IceT composites 8-bit colour: at most
-   2 levels apart, relative L2 below 1e-2), which differs clearly from the view with bloom off
-   and matches the baseline image Data/bloom-view.png the same way.
+4. The bloom view: 1 and 3 ranks render the same image (at most 2 levels apart, relative L2
+   below 1e-2), which differs clearly from the view with bloom off and matches the baseline
+   image Data/bloom-view.png the same way.
+5. HDR under MPI: bloom_view_hdr.py's scene reaches 6 and blooms only above 1. With 3 ranks
+   and IceT compositing float colour (the view's BloomCompositeFloatColor) the image equals
+   the serial one within 1e-3 relative L2; with IceT's 8-bit composite it does not.
 """
 import os
 import signal
@@ -216,6 +219,34 @@ if len(images) == 3:
     worst = float(np.abs(serial_view - baseline).max())
     check(error < 1e-2 and worst <= 2, 'view against the baseline image: relative L2 %.2e, max %g levels'
           % (error, worst))
+
+# 5. HDR under MPI: 3 ranks composite float colour through IceT and bloom as serial does.
+hdr = {}
+for ranks, float_composite, use_bloom in ((1, 1, 1), (3, 1, 1), (3, 0, 1), (1, 1, 0)):
+    png = os.path.join(out, 'hdr-%d-%d-%d.png' % (ranks, float_composite, use_bloom))
+    status, log = pvbatch(ranks, 'bloom_view_hdr.py', png, str(float_composite), str(use_bloom))
+    check(status == 0 and os.path.exists(png),
+          'bloom_view_hdr.py, %d rank(s), float composite %d, bloom %d (exit %d)'
+          % (ranks, float_composite, use_bloom, status))
+    if os.path.exists(png):
+        with open(png + '.txt') as f:
+            hdr[(ranks, float_composite, use_bloom)] = (load_png(png), int(f.read()))
+if len(hdr) == 4:
+    serial_hdr, _ = hdr[(1, 1, 1)]
+    float_hdr, composited = hdr[(3, 1, 1)]
+    clamped_hdr, clamped_composited = hdr[(3, 0, 1)]
+    plain_hdr, _ = hdr[(1, 1, 0)]
+    check(composited == 1 and clamped_composited == 0,
+          'the 3-rank bloom read IceT\'s float composite only where asked (%d, %d)'
+          % (composited, clamped_composited))
+    error = relative_l2(float_hdr, serial_hdr)
+    check(error <= 1e-3, 'HDR view, 3 ranks with float composite against 1: relative L2 %.2e'
+          % error)
+    halo = relative_l2(plain_hdr, serial_hdr)
+    check(halo > 0.1, 'the HDR view blooms (against bloom off: %.2e)' % halo)
+    clamped = relative_l2(clamped_hdr, serial_hdr)
+    check(clamped > 0.1, 'IceT\'s 8-bit composite loses the HDR bloom (against serial: %.2e)'
+          % clamped)
 
 print('run_tests: %d failure(s)' % failures)
 sys.exit(min(failures, 100))

@@ -5,6 +5,7 @@
 #include "vtkBloomTestSupport.h"
 
 #include "vtkActor.h"
+#include "vtkBloomVTKCompat.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
 #include "vtkDoubleArray.h"
@@ -25,7 +26,6 @@
 #include "vtkTesting.h"
 #include "vtkToneMappingPass.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtk_glew.h"
 
 #include <gtest/gtest.h>
 

@@ -11,6 +11,7 @@
 #include "vtkBloomPass.h"
 #include "vtkBloomTestSupport.h"
 
+#include "vtkBloomVTKCompat.h"
 #include "vtkDataArray.h"
 #include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
@@ -22,7 +23,6 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
 #include "vtkRenderWindow.h"
-#include "vtk_glew.h"
 
 #include <gtest/gtest.h>
 

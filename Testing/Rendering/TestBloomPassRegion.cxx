@@ -4,6 +4,7 @@
 #include "vtkBloomExampleScenes.h"
 #include "vtkBloomPass.h"
 
+#include "vtkBloomVTKCompat.h"
 #include "vtkFloatArray.h"
 #include "vtkFramebufferPass.h"
 #include "vtkImageBloom.h"
@@ -18,7 +19,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkTextureObject.h"
 #include "vtkUnsignedCharArray.h"
-#include "vtk_glew.h"
 
 #include <gtest/gtest.h>
 

@@ -14,6 +14,7 @@
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
 #include <vtkPointData.h>
+#include <vtkVersionMacros.h>
 
 #include <sys/wait.h>
 
@@ -307,5 +308,41 @@ TEST(CommandLine, RenderListsAndRendersTheExampleScenes)
   }
   EXPECT_GT(peak, 1.5) << "the render is not HDR";
   EXPECT_GT(sumAfter, sumBefore * 1.01) << "the bloom added no light";
+}
+
+// VTK 9.4 and later choose the render window at run time. Asked for an OSMesa window where
+// there is no libOSMesa (Mesa 25.1 removed it), or given an empty name, VTK 9.6 crashes; the
+// tool refuses instead, with one line that names the variable, and writes nothing.
+TEST(CommandLine, RenderRefusesAWindowVTKCannotMake)
+{
+#if VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 4, 0)
+  GTEST_SKIP() << "VTK " << VTK_VERSION << " fixes its render window when it is built";
+#else
+  const std::string out = vtkBloomTest::OutputPath("render-no-window.exr");
+  const std::string log = vtkBloomTest::OutputPath("render-no-window.txt");
+  const bool hasOSMesa = std::system("ldconfig -p | grep -q 'libOSMesa\\.so'") == 0;
+  for (const std::string& window : { std::string(), std::string("vtkOSOpenGLRenderWindow") })
+  {
+    const bool makeable = !window.empty() && hasOSMesa;
+    fs::remove(out);
+    const std::string command = "env VTK_DEFAULT_OPENGL_WINDOW=" + window + " " +
+      std::string(VTKBLOOM_TOOL) + " render --quiet --size 32x24 lit-spheres " + Quote(out) +
+      " >/dev/null 2>" + Quote(log);
+    const int status = std::system(command.c_str());
+    ASSERT_TRUE(WIFEXITED(status)) << "'" << window << "': the tool did not exit by itself";
+    std::ifstream in(log);
+    const std::string errors{ std::istreambuf_iterator<char>(in),
+      std::istreambuf_iterator<char>() };
+    if (makeable)
+    {
+      EXPECT_EQ(WEXITSTATUS(status), 0) << errors;
+      continue;
+    }
+    EXPECT_EQ(WEXITSTATUS(status), 1) << "'" << window << "': " << errors;
+    EXPECT_NE(errors.find("VTK_DEFAULT_OPENGL_WINDOW"), std::string::npos) << errors;
+    EXPECT_EQ(std::count(errors.begin(), errors.end(), '\n'), 1) << errors;
+    EXPECT_FALSE(fs::exists(out));
+  }
+#endif
 }
 #endif

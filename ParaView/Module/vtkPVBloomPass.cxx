@@ -1,0 +1,85 @@
+#include "vtkPVBloomPass.h"
+
+#include "vtkBloomVTKCompat.h"
+#include "vtkFloatArray.h"
+#include "vtkIceTCompositePass.h"
+#include "vtkObjectFactory.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLState.h"
+#include "vtkRenderState.h"
+#include "vtkRenderer.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+
+vtkStandardNewMacro(vtkPVBloomPass);
+
+//------------------------------------------------------------------------------
+vtkPVBloomPass::vtkPVBloomPass() = default;
+
+//------------------------------------------------------------------------------
+vtkPVBloomPass::~vtkPVBloomPass() = default;
+
+//------------------------------------------------------------------------------
+void vtkPVBloomPass::SetCompositePass(vtkIceTCompositePass* pass)
+{
+  if (this->CompositePass != pass)
+  {
+    this->CompositePass = pass;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVBloomPass::SetCompositeBackground(const double rgb[3], double alpha)
+{
+  const float rgba[4] = { static_cast<float>(rgb[0]), static_cast<float>(rgb[1]),
+    static_cast<float>(rgb[2]), static_cast<float>(alpha) };
+  std::copy(rgba, rgba + 4, this->CompositeBackground);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVBloomPass::SceneRendered(const vtkRenderState* s, vtkTextureObject* sceneColor)
+{
+  this->LastSceneWasComposited = false;
+  vtkFloatArray* composite =
+    this->CompositePass ? this->CompositePass->GetLastRenderedRGBA32F() : nullptr;
+  const int width = static_cast<int>(sceneColor->GetWidth());
+  const int height = static_cast<int>(sceneColor->GetHeight());
+  if (!composite || composite->GetNumberOfComponents() != 4 ||
+    composite->GetNumberOfTuples() != static_cast<vtkIdType>(width) * height)
+  {
+    return; // not the displaying process, or IceT reduced the image: the scene as rendered
+  }
+  // IceT composites over transparent black: the view's background goes behind it here, as a
+  // serial render clears to it.
+  const float* background = this->CompositeBackground;
+  const size_t count = 4 * static_cast<size_t>(width) * height;
+  this->Pixels.resize(count);
+  const float* top = composite->GetPointer(0);
+  for (size_t i = 0; i < count; i += 4)
+  {
+    const float behind = 1.0f - top[i + 3];
+    for (size_t c = 0; c < 4; ++c)
+    {
+      this->Pixels[i + c] = top[i + c] + behind * background[c];
+    }
+  }
+  auto* window = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
+  window->GetState()->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  sceneColor->Activate();
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, this->Pixels.data());
+  sceneColor->Deactivate();
+  this->LastSceneWasComposited = true;
+}
+
+//------------------------------------------------------------------------------
+void vtkPVBloomPass::PrintSelf(ostream& os, vtkIndent indent)
+{
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "CompositePass: " << this->CompositePass.GetPointer() << "\n";
+  os << indent << "CompositeBackground: " << this->CompositeBackground[0] << " "
+     << this->CompositeBackground[1] << " " << this->CompositeBackground[2] << " "
+     << this->CompositeBackground[3] << "\n";
+  os << indent << "LastSceneWasComposited: " << this->LastSceneWasComposited << "\n";
+}

@@ -1,0 +1,63 @@
+"""pvbatch script: an HDR scene in the bloom render view, saved as a screenshot.
+
+    scripts/pvbatch.sh [-n N] ParaView/Testing/bloom_view_hdr.py OUT.png [FLOAT_COMPOSITE [BLOOM]]
+
+The scene: a sphere split into pieces over the ranks in a dim blue, and in front of it three
+small spheres, all lit by a headlight of intensity 6 (ParaView clamps a property's Ambient to
+1, not a light's intensity), so that the small ones reach 3 to 6, on a grey background. Only
+what lies above 1 passes the threshold (1.0, knee 0), so a composite clamped to [0, 1], IceT's
+8-bit one, blooms nothing: the image under MPI is the serial one only if IceT composited float
+colour (FLOAT_COMPOSITE, default 1). OUT.png.txt receives whether the bloom read IceT's float
+composite (the view's BloomLastSceneWasComposited).
+"""
+import sys
+
+from paraview.simple import *  # noqa: F403
+
+out = sys.argv[1]
+float_composite = int(sys.argv[2]) if len(sys.argv) > 2 else 1
+use_bloom = int(sys.argv[3]) if len(sys.argv) > 3 else 1
+
+view = CreateView('BloomRenderView')
+view.ViewSize = [400, 300]
+view.OrientationAxesVisibility = 0
+view.UseFXAA = 0
+view.UseColorPaletteForBackground = 0
+view.Background = [0.2, 0.2, 0.25]
+view.UseBloom = use_bloom
+view.BloomThreshold = 1.0
+view.BloomKnee = 0.0
+view.BloomStrength = 0.5
+view.BloomCompositeFloatColor = float_composite
+view.BloomFloatPrecision = 32
+view.UseLight = 0          # no light kit: the headlight alone
+light = AddLight(view=view)
+light.Coords = 'Headlight'
+light.Intensity = 6.0
+
+
+def sphere(center, radius, color, resolution):
+    source = Sphere(Center=center, Radius=radius, ThetaResolution=resolution,
+                    PhiResolution=resolution)
+    display = Show(source, view)
+    display.AmbientColor = color
+    display.DiffuseColor = color
+    display.Ambient = 0.0
+    display.Diffuse = 1.0
+    return display
+
+
+sphere([0.0, 0.0, -2.0], 2.0, [0.02, 0.025, 0.075], 96)
+sphere([-1.2, 0.6, 1.0], 0.35, [1.0, 0.85, 0.4], 48)
+sphere([0.9, -0.5, 1.0], 0.25, [0.5, 1.0, 0.9], 48)
+sphere([0.2, 1.1, 0.5], 0.15, [1.0, 0.5, 0.9], 48)
+view.CameraPosition = [0.0, 0.0, 9.0]
+view.CameraFocalPoint = [0.0, 0.0, 0.0]
+view.CameraViewUp = [0.0, 1.0, 0.0]
+Render(view)
+SaveScreenshot(out, view, ImageResolution=[400, 300])
+view.UpdatePropertyInformation()
+composited = view.GetProperty('BloomLastSceneWasComposited').GetData()
+with open(out + '.txt', 'w') as f:
+    f.write('%d\n' % composited)
+print('bloom_view_hdr: wrote', out, 'composited', composited)
