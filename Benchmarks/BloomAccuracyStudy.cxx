@@ -494,7 +494,7 @@ void AddGpuRows(vtkImageData* frame, std::vector<Row>& rows, std::string& device
     if (!present)
     {
       std::cerr << "note: " << gl->GetClassName() << " needs an X display and DISPLAY='" << display
-                << "' names none (run under scripts/with-xvfb.sh): no GPU rows\n";
+                << "' names none (run under scripts/lib/with-xvfb.sh): no GPU rows\n";
       return;
     }
   }

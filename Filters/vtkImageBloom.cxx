@@ -27,7 +27,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <initializer_list>
 #include <limits>
+#include <string>
 
 vtkStandardNewMacro(vtkImageBloom);
 
@@ -512,6 +514,12 @@ void vtkImageBloom::PrintSelf(ostream& os, vtkIndent indent)
     }
     os << ")\n";
   };
+  // An enum's name, or its number where it has none.
+  auto named = [](int value, std::initializer_list<const char*> names) -> std::string
+  {
+    return value >= 0 && value < static_cast<int>(names.size()) ? *(names.begin() + value)
+                                                                : std::to_string(value);
+  };
   os << indent << "ThresholdMode: " << vtkImageBloomThreshold::GetModeName(this->ThresholdMode)
      << "\n";
   os << indent << "Threshold: " << this->Threshold << "\n";
@@ -521,13 +529,16 @@ void vtkImageBloom::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfLevels: " << this->NumberOfLevels << "\n";
   os << indent << "LimitLevelsToImageSize: " << (this->LimitLevelsToImageSize ? "On" : "Off")
      << "\n";
-  os << indent << "DownsampleKernel: " << this->DownsampleKernel << "\n";
+  os << indent
+     << "DownsampleKernel: " << named(this->DownsampleKernel, { "Jimenez13", "Box", "Binomial" })
+     << "\n";
   os << indent << "KarisAverage: " << (this->KarisAverage ? "On" : "Off") << "\n";
   os << indent << "BlurKernel: " << (this->BlurKernel == BLUR_CUSTOM ? "Custom" : "Gaussian")
      << "\n";
   os << indent << "BlurStandardDeviation: " << this->BlurStandardDeviation << "\n";
   os << indent << "BlurRadius: " << this->BlurRadius << "\n";
-  os << indent << "BlurGaussianKind: " << this->BlurGaussianKind << "\n";
+  os << indent << "BlurGaussianKind: "
+     << named(this->BlurGaussianKind, { "Sampled", "Integrated", "Discrete" }) << "\n";
   os << indent << "BlurHalfKernel: ";
   list(this->BlurHalfKernel);
   os << indent << "BlurTapSpacing: " << this->BlurTapSpacing << "\n";
@@ -550,20 +561,33 @@ void vtkImageBloom::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "RestrictToBrightRegion: " << (this->RestrictToBrightRegion ? "On" : "Off")
      << "\n";
   os << indent << "UseAVX2: " << (this->UseAVX2 ? "On" : "Off") << "\n";
-  os << indent << "ConvolutionMode: " << this->ConvolutionMode << "\n";
+  os << indent
+     << "ConvolutionMode: " << named(this->ConvolutionMode, { "Automatic", "Direct", "FFT" })
+     << "\n";
   os << indent << "BloomMode: " << (this->BloomMode == BLOOM_PSF ? "PSF" : "Pyramid") << "\n";
-  os << indent << "PSFType: " << this->PSFType << "\n";
+  os << indent << "PSFType: " << named(this->PSFType, { "Airy", "Gaussians", "Image" }) << "\n";
   os << indent << "AiryRadius: " << this->AiryRadius << "\n";
   os << indent << "Wavelengths: (" << this->Wavelengths[0] << ", " << this->Wavelengths[1] << ", "
      << this->Wavelengths[2] << ")\n";
-  os << indent << "PSFGaussians: " << this->PSFGaussianSigmas.size() << "\n";
+  os << indent << "PSFGaussianSigmas: ";
+  list(this->PSFGaussianSigmas);
+  os << indent << "PSFGaussianWeights: ";
+  list(this->PSFGaussianWeights);
   os << indent << "PSFImage: " << this->PSFImage.Get() << "\n";
   os << indent << "PSFRadius: " << this->PSFRadius << "\n";
-  os << indent << "PSFBorderMode: " << this->PSFBorderMode << "\n";
+  os << indent << "PSFBorderMode: " << named(this->PSFBorderMode, { "Clamp", "Reflect", "Zero" })
+     << "\n";
   os << indent << "EnergyIn: " << this->EnergyIn << "\n";
   os << indent << "EnergyOut: " << this->EnergyOut << "\n";
   os << indent << "NumberOfBrightPixels: " << this->NumberOfBrightPixels << "\n";
   os << indent << "PeakLuminanceIn: " << this->PeakLuminanceIn << "\n";
   os << indent << "PeakLuminanceOut: " << this->PeakLuminanceOut << "\n";
   os << indent << "NumberOfLevelsUsed: " << this->NumberOfLevelsUsed << "\n";
+  os << indent << "LastRunWasFast: " << (this->LastRunWasFast ? "On" : "Off") << "\n";
+  os << indent << "LastBloomSkipped: " << (this->LastBloomSkipped ? "On" : "Off") << "\n";
+  os << indent << "LastPassedThrough: " << (this->LastPassedThrough ? "On" : "Off") << "\n";
+  os << indent << "LastLevelsBuilt: " << this->LastLevelsBuilt << "\n";
+  os << indent << "LastWorkspaceBytes: " << this->LastWorkspaceBytes << "\n";
+  os << indent << "LastFFTBlurs: " << this->LastFFTBlurs << "\n";
+  os << indent << "ChainSize: (" << this->ChainSize[0] << ", " << this->ChainSize[1] << ")\n";
 }

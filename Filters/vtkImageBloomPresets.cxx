@@ -25,8 +25,12 @@ bool vtkImageBloom::SetPreset(const char* name)
   const auto names = vtkImageBloom::GetPresetNames();
   if (std::find(names.begin(), names.end(), preset) == names.end())
   {
-    vtkErrorMacro(<< "Unknown bloom preset '" << preset
-                  << "'; expected webgpu-market, mip-atlas, ping-pong or crt-halfres.");
+    std::string expected;
+    for (const std::string& known : names)
+    {
+      expected += (expected.empty() ? "" : ", ") + known;
+    }
+    vtkErrorMacro(<< "Unknown bloom preset '" << preset << "'; expected " << expected << ".");
     return false;
   }
   // Shared defaults; each preset then states what it changes.

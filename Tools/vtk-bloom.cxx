@@ -67,11 +67,11 @@ image: HDR bloom (vtkImageBloom). A preset is applied first; options then overri
   --preset NAME          webgpu-market | mip-atlas | ping-pong | crt-halfres
   --exact                the double-precision REFERENCE chain, bit for bit PRESETS.md's
                          (default: the fused float32 FAST chain, within 1e-5 relative L2 of it)
-  --threshold T          bright-pass threshold
+  --threshold T          bright-pass threshold, >= 0
   --knee K               soft knee relative to the threshold, 0..1
   --mode M               smoothstep | quadratic | hard | per-channel | none
   --clamp-luminance L    firefly guard: largest luminance let through
-  --strength S           bloom strength (additive) or blend factor (lerp)
+  --strength S           bloom strength (additive) or blend factor (lerp), 0..1000
   --composite C          additive | lerp
   --tint R,G,B           bloom colour
   --levels N             number of pyramid levels (1..32)

@@ -557,6 +557,13 @@ void DataScene::Build(vtkDataObject* data, const std::string& name, const DataSc
     camera->SetViewUp(0.0, 0.0, 1.0);
   }
   renderer->ResetCamera();
+  TurnCamera(renderer, options);
+}
+
+//------------------------------------------------------------------------------
+void TurnCamera(vtkRenderer* renderer, const DataSceneOptions& options)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
   camera->Azimuth(options.Azimuth);
   camera->Elevation(options.Elevation);
   camera->OrthogonalizeViewUp();

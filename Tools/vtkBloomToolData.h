@@ -65,6 +65,10 @@ struct DataSceneOptions
   double Background[3] = { 0.02, 0.02, 0.03 };
 };
 
+/// Turn the renderer's camera by --azimuth and --elevation, then --zoom, about where the scene
+/// or dataset set it (datasets after --view), and reset the clipping range.
+void TurnCamera(vtkRenderer* renderer, const DataSceneOptions& options);
+
 /// Parse the value of --color-by (NAME or NAME:COMPONENT), --range and --emit-range (LO:HI),
 /// --contour (V1,V2,...) and --background (R,G,B) into `options`; UsageError when malformed.
 void ParseDataOption(

@@ -9,6 +9,8 @@
 #include <vtkImageData.h>
 #include <vtkNew.h>
 
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 namespace vtkBloomTool
@@ -131,14 +133,25 @@ void ApplyPSFOptions(Arguments& args, vtkImageBloom* bloom)
 void ApplyImageOptions(Arguments& args, vtkImageBloom* bloom)
 {
   std::string v;
-  if (args.Take("--preset", v) && !bloom->SetPreset(v.c_str()))
+  if (args.Take("--preset", v))
   {
-    throw UsageError{ "unknown preset '" + v +
-      "'; expected webgpu-market, mip-atlas, ping-pong or crt-halfres" };
+    // Checked here, so that the usage error is the only line (SetPreset would log its own).
+    const std::vector<std::string> presets = vtkImageBloom::GetPresetNames();
+    if (std::find(presets.begin(), presets.end(), v) == presets.end())
+    {
+      std::string names;
+      for (const std::string& name : presets)
+      {
+        names += (names.empty() ? "" : ", ") + name;
+      }
+      throw UsageError{ "--preset: unknown preset '" + v + "', expected one of " + names };
+    }
+    bloom->SetPreset(v.c_str());
   }
   if (args.Take("--threshold", v))
   {
-    bloom->SetThreshold(ParseDouble("--threshold", v));
+    // Above FLT_MAX no float pixel can pass; below 0 every pixel would, black ones included.
+    bloom->SetThreshold(ParseDoubleIn("--threshold", v, 0.0, FLT_MAX));
   }
   if (args.Take("--knee", v))
   {
@@ -169,7 +182,8 @@ void ApplyImageOptions(Arguments& args, vtkImageBloom* bloom)
   }
   if (args.Take("--strength", v))
   {
-    bloom->SetStrength(ParseDouble("--strength", v));
+    // A negative strength subtracts light; far above 1000 the sum overflows float.
+    bloom->SetStrength(ParseDoubleIn("--strength", v, 0.0, 1000.0));
   }
   if (args.Take("--composite", v))
   {

@@ -150,6 +150,7 @@ int RenderScene(const std::string& scene, const std::string& output, const Rende
   ProgressBar progress;
   Stage stage(options, errors);
   vtkBloomBuildExampleScene(scene, stage.Renderer, stage.Pass);
+  TurnCamera(stage.Renderer, options.Data);
   options.ConfigureBloom(stage.Pass);
   stage.Write(options, output, errors, progress);
   if (!options.Quiet)

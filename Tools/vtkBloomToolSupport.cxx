@@ -46,6 +46,19 @@ double ParseDouble(const std::string& option, const std::string& text)
 }
 
 //------------------------------------------------------------------------------
+double ParseDoubleIn(const std::string& option, const std::string& text, double lo, double hi)
+{
+  const double value = ParseDouble(option, text);
+  if (value < lo || value > hi)
+  {
+    std::ostringstream range;
+    range << option << " must be in [" << lo << ", " << hi << "], got " << text;
+    throw UsageError{ range.str() };
+  }
+  return value;
+}
+
+//------------------------------------------------------------------------------
 int ParseInt(const std::string& option, const std::string& text, int lo, int hi)
 {
   char* end = nullptr;

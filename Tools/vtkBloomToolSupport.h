@@ -32,6 +32,8 @@ std::string Lower(std::string s);
 std::string Extension(const std::string& path);
 
 double ParseDouble(const std::string& option, const std::string& text);
+/// A finite number in [lo, hi]; otherwise a UsageError naming the option and the range.
+double ParseDoubleIn(const std::string& option, const std::string& text, double lo, double hi);
 int ParseInt(const std::string& option, const std::string& text, int lo, int hi);
 std::vector<double> ParseList(const std::string& option, const std::string& text);
 int ParseChoice(

@@ -4,7 +4,7 @@
 #
 # vtkbloom_opengl_modules: what code that calls OpenGL itself links.
 #   VTK 9.1 to 9.3: the glew loader, and VTK::opengl, the system's libGL (or libOSMesa, or
-#   libEGL in the headless builds of scripts/build-debian-vtk.sh).
+#   libEGL in the headless builds of scripts/lib/build-debian-vtk.sh).
 #   VTK 9.4 and later: the glad loader, which opens libGL, libEGL or libOSMesa when a window is
 #   made: there is no VTK::opengl to link, and one VTK holds the X, EGL and OSMesa windows.
 if (TARGET VTK::glad)

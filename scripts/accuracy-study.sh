@@ -23,7 +23,7 @@ cmake -S "$root" -B "$build" -G Ninja "${launcher[@]}" -DCMAKE_BUILD_TYPE=Releas
 cmake --build "$build" --target BloomAccuracyStudy -- -j"$(nproc)"
 out="$build/accuracy-study"
 mkdir -p "$out"
-bash "$root/scripts/with-xvfb.sh" "$build/bin/BloomAccuracyStudy" "$out"
+bash "$root/scripts/lib/with-xvfb.sh" "$build/bin/BloomAccuracyStudy" "$out"
 mkdir -p "$root/docs/images"
 xvfb-run -a /usr/bin/python3 "$root/scripts/plot-accuracy.py" "$out/accuracy.csv" \
   "$root/docs/images/accuracy-vs-time.png"

@@ -7,10 +7,10 @@
 # The prefix is $VTKBLOOM_EGL_PREFIX, or ~/.cache/vtk-bloom/vtk-9.1-egl (work tree
 # $VTKBLOOM_EGL_WORK, or ~/.cache/vtk-bloom/egl-build). When the prefix already holds an
 # installed VTK, nothing is built. The first build takes about 20 minutes on two cores; ccache
-# makes later rebuilds take seconds. scripts/build-debian-vtk.sh does the work and says why its
+# makes later rebuilds take seconds. scripts/lib/build-debian-vtk.sh does the work and says why its
 # steps are needed.
 #
 # The same build renders on a GPU's EGL driver (NVIDIA's, through glvnd; scripts/gpu-pack.sh)
 # and, on a machine with no GPU, on Mesa's EGL with llvmpipe (`bash scripts/test.sh --egl`).
 set -euo pipefail
-exec bash "$(dirname "${BASH_SOURCE[0]}")/build-debian-vtk.sh" egl
+exec bash "$(dirname "${BASH_SOURCE[0]}")/lib/build-debian-vtk.sh" egl

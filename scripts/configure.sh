@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Configure and build vtk-bloom into a build directory.
-#   scripts/configure.sh BUILD_DIR [extra cmake arguments...]
+#   bash scripts/configure.sh BUILD_DIR [extra cmake arguments...]
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 build=$1

@@ -5,6 +5,9 @@
 # `apt-get download`) and .gpupack/vtk-bloom-gpu.tar.xz; results go to $OUT (default: a new
 # temporary directory):
 #
+#   OUT=DIR bash gpu-run.sh          (scripts/gpu-run.sh beside the pack; scripts/gpu-pack.sh)
+#
+#
 #   gpu.txt          the GPU, its driver and the OpenGL renderer the pass ran on
 #   ctest.log        ctest -R '^Rendering' (every rendering test), and ctest.xml (JUnit)
 #   frametime.md     BloomPassFrameTime: every scene and preset (or $PRESETS) at 1920x1080 and

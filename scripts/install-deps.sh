@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
 # Install every Debian 12 package vtk-bloom needs to build, test and run.
+#
+#   bash scripts/install-deps.sh
+#
 # Idempotent: packages already present are skipped by apt itself.
 set -euo pipefail
 

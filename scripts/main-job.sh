@@ -4,6 +4,8 @@
 # Writes output/*.png (before, after and side by side) and prints their paths.
 # The OSMesa VTK is built from Debian's source on first use (about 20 minutes, with progress)
 # and cached; see scripts/build-osmesa-vtk.sh.
+#
+#   bash scripts/main-job.sh
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 bash "$root/scripts/install-deps.sh"
@@ -26,16 +28,16 @@ fi
 "$tool" blur --radius 0 "$out/emissive-before.exr" "$out/emissive-before.png"
 "$tool" blur --radius 0 "$out/emissive-bloom.exr" "$out/emissive-bloom.png"
 echo "main-job: wrote $out/emissive-before.png and $out/emissive-bloom.png"
-/usr/bin/python3 "$root/scripts/side-by-side.py" "$out/emissive-comparison.png" \
+/usr/bin/python3 "$root/scripts/lib/side-by-side.py" "$out/emissive-comparison.png" \
   "$out/emissive-before.png" "$out/emissive-bloom.png"
 # The same scene with PSF bloom (the bright pass convolved with a point-spread function) instead
 # of the pyramid: the pyramid (left), an Airy diffraction pattern (centre), a sum of Gaussians.
 "$tool" image --psf airy --airy-radius 10 "$out/emissive-before.exr" "$out/emissive-psf-airy.png"
 "$tool" image --psf gaussians "$out/emissive-before.exr" "$out/emissive-psf-gaussians.png"
-/usr/bin/python3 "$root/scripts/side-by-side.py" --scale 0.5 "$out/psf-comparison.png" \
+/usr/bin/python3 "$root/scripts/lib/side-by-side.py" --scale 0.5 "$out/psf-comparison.png" \
   "$out/emissive-bloom.png" "$out/emissive-psf-airy.png" "$out/emissive-psf-gaussians.png"
 if [ -f "$candle" ]; then
-  /usr/bin/python3 "$root/scripts/side-by-side.py" --scale 0.5 "$out/candle-glass-comparison.png" \
+  /usr/bin/python3 "$root/scripts/lib/side-by-side.py" --scale 0.5 "$out/candle-glass-comparison.png" \
     "$out/candle-glass-before.png" "$out/candle-glass-bloom.png"
 fi
 echo "main-job: side-by-side comparisons in $out/*-comparison.png"
@@ -48,7 +50,7 @@ gpu_tool="$root/build-osmesa/bin/vtk-bloom"
 for scene in $("$gpu_tool" render --list); do
   env -u DISPLAY "$gpu_tool" render --no-bloom "$scene" "$out/$scene-before.png"
   env -u DISPLAY "$gpu_tool" render "$scene" "$out/$scene-bloom.png"
-  /usr/bin/python3 "$root/scripts/side-by-side.py" --scale 0.5 "$out/$scene-comparison.png" \
+  /usr/bin/python3 "$root/scripts/lib/side-by-side.py" --scale 0.5 "$out/$scene-comparison.png" \
     "$out/$scene-before.png" "$out/$scene-bloom.png"
   echo "main-job: rendered $scene: $out/$scene-comparison.png"
 done
@@ -61,6 +63,6 @@ env -u DISPLAY "$gpu_tool" render --no-bloom "${plate_options[@]}" "$out/heated-
   "$out/heated-plate-before.png"
 env -u DISPLAY "$gpu_tool" render "${plate_options[@]}" "$out/heated-plate.vtp" \
   "$out/heated-plate-bloom.png"
-/usr/bin/python3 "$root/scripts/side-by-side.py" --scale 0.5 "$out/heated-plate-comparison.png" \
+/usr/bin/python3 "$root/scripts/lib/side-by-side.py" --scale 0.5 "$out/heated-plate-comparison.png" \
   "$out/heated-plate-before.png" "$out/heated-plate-bloom.png"
 echo "main-job: rendered a dataset from a file: $out/heated-plate-comparison.png"

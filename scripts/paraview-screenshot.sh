@@ -29,6 +29,6 @@ wait "$gui" 2>/dev/null
 grep -i -E "error|traceback" "$3/paraview.log" >&2 || true
 exit 0
 CAPTURE
-bash "$root/scripts/paraview-env.sh" bash "$root/scripts/with-xvfb.sh" \
+bash "$root/scripts/lib/paraview-env.sh" bash "$root/scripts/lib/with-xvfb.sh" \
   bash "$tmp/capture.sh" "$root/ParaView/Examples/gui_scene.py" "$out" "$tmp"
 echo "paraview-screenshot: $out"

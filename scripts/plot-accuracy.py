@@ -10,13 +10,15 @@ markers without lines, one per preset; the double chain itself (error 0) is not 
 X display (xvfb-run) with Debian's VTK.
 """
 import csv
+import os
 import sys
 from collections import OrderedDict
 
 from vtkmodules.vtkChartsCore import vtkChart
 from vtkmodules.vtkRenderingContext2D import vtkPen
 
-from vtkbloom_charts import COLOURS, log_log_chart, save_png, xy_table
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'lib'))
+from vtkbloom_charts import COLOURS, log_log_chart, save_png, xy_table  # noqa: E402
 
 
 def main():

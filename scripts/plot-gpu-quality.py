@@ -12,12 +12,14 @@ with VTK's vtkChartXY, headless (needs an X display: xvfb-run), like scripts/plo
 where a bloom costs less than the floor (a negative time) vtkChartXY keeps x linear.
 """
 import csv
+import os
 import sys
 from collections import OrderedDict
 
 from vtkmodules.vtkChartsCore import vtkChart
 
-from vtkbloom_charts import COLOURS, log_log_chart, save_png, xy_table
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), 'lib'))
+from vtkbloom_charts import COLOURS, log_log_chart, save_png, xy_table  # noqa: E402
 
 
 def main():

@@ -10,7 +10,7 @@
 #
 # The plugin is built first if it is missing (scripts/build-paraview-plugin.sh; set
 # VTKBLOOM_PARAVIEW_BUILD for another build directory). Debian's ParaView renders through X
-# only, so without DISPLAY the run gets a private Xvfb (scripts/with-xvfb.sh). The exit status
+# only, so without DISPLAY the run gets a private Xvfb (scripts/lib/with-xvfb.sh). The exit status
 # is pvbatch's (mpiexec's).
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -37,8 +37,8 @@ run=(pvbatch)
 # ParaView 5.11 renders through X only; ParaView 6 (VTK 9.6) falls back to EGL with no display.
 xvfb=()
 case $plugins in
-  */paraview-5.*) [ -n "${DISPLAY:-}" ] || xvfb=(bash "$root/scripts/with-xvfb.sh") ;;
+  */paraview-5.*) [ -n "${DISPLAY:-}" ] || xvfb=(bash "$root/scripts/lib/with-xvfb.sh") ;;
 esac
 # Open MPI's shared-memory transport needs no network; keep it off the host's interfaces.
 export OMPI_MCA_btl=self,vader
-exec bash "$root/scripts/paraview-env.sh" "${xvfb[@]}" "${run[@]}" "$@"
+exec bash "$root/scripts/lib/paraview-env.sh" "${xvfb[@]}" "${run[@]}" "$@"

@@ -6,8 +6,9 @@
 #
 # The root is $VTKBLOOM_SID_ROOT, or ~/.cache/vtk-bloom/sid-root. It is made with debootstrap,
 # which comes from Debian's archive as a .deb and runs unpacked: the host's packages are not
-# touched. Making it takes about 10 minutes and 4.4 GB; later calls reuse it. A stamp holding
-# the package list says it is complete; a root whose stamp differs is finished by apt.
+# touched. Making it takes a few minutes (about 3 on the 2-core CI machine) and 4.5 GB; later
+# calls reuse it. A stamp holding the package list says it is complete; a root whose stamp
+# differs is finished by apt.
 #
 # COMMAND runs in a private mount namespace (nothing stays mounted on the host when it exits)
 # with /proc, /sys, /dev, the project and ../shared bound at the paths they have on the host,
@@ -97,7 +98,7 @@ link_paraview_modules() {
 }
 
 finish() {
-  echo "sid-root: installing ${#packages[@]} packages into $root (about 8 minutes)" >&2
+  echo "sid-root: installing ${#packages[@]} packages into $root (a few minutes)" >&2
   enter /bin/bash -c 'export DEBIAN_FRONTEND=noninteractive
     apt-get update -q && apt-get install -y -q --no-install-recommends "$@" && apt-get clean' \
     apt "${packages[@]}" >&2

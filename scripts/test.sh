@@ -37,7 +37,7 @@ run_x11() {
   shift
   bash "$root/scripts/configure.sh" "$build" "$@"
   echo "test: running the suite against the system VTK (X11, private Xvfb)"
-  bash "$root/scripts/with-xvfb.sh" ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
+  bash "$root/scripts/lib/with-xvfb.sh" ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
 }
 
 # The headless legs: the suite against Debian's VTK built for osmesa or egl (no X at all).
@@ -75,7 +75,7 @@ run_in_sid_root() {
   env -u DISPLAY -u WAYLAND_DISPLAY ctest --test-dir "$root/build-sid" --output-on-failure \
     -j"$(nproc)"
   echo "test: the tests that open a window, again against VTK 9.6 through X (private Xvfb)"
-  bash "$root/scripts/with-xvfb.sh" ctest --test-dir "$root/build-sid" --output-on-failure \
+  bash "$root/scripts/lib/with-xvfb.sh" ctest --test-dir "$root/build-sid" --output-on-failure \
     -j"$(nproc)" -R '^(Rendering|CommandLineData[.]View)'
   bash "$root/scripts/build-paraview-plugin.sh" "$root/build-paraview-sid"
   echo "test: running the ParaView 6.1 plugin's tests (pvbatch, 1 to 4 MPI ranks)"

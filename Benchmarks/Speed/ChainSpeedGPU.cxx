@@ -109,7 +109,7 @@ extern "C" void vtkBloomRegisterGPUBenchmarks()
   if (!headless && !std::getenv("DISPLAY"))
   {
     std::printf("GPU rows skipped: %s needs a display (build against the OSMesa VTK, or run "
-                "under scripts/with-xvfb.sh)\n",
+                "under scripts/lib/with-xvfb.sh)\n",
       probe->GetClassName());
     return;
   }

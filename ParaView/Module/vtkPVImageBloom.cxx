@@ -40,8 +40,12 @@ void vtkPVImageBloom::SetPreset(const char* name)
   const auto names = vtkImageBloom::GetPresetNames();
   if (preset != "custom" && std::find(names.begin(), names.end(), preset) == names.end())
   {
-    vtkErrorMacro(<< "Unknown bloom preset '" << preset
-                  << "'; expected custom, webgpu-market, mip-atlas, ping-pong or crt-halfres.");
+    std::string expected = "custom";
+    for (const std::string& known : names)
+    {
+      expected += ", " + known;
+    }
+    vtkErrorMacro(<< "Unknown bloom preset '" << preset << "'; expected " << expected << ".");
     return;
   }
   this->Preset = preset;

@@ -10,9 +10,13 @@ what lies above 1 passes the threshold (1.0, knee 0), so a composite clamped to 
 colour (FLOAT_COMPOSITE, default 1). OUT.png.txt receives whether the bloom read IceT's float
 composite (the view's BloomLastSceneWasComposited).
 """
+import os
 import sys
 
 from paraview.simple import *  # noqa: F403
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from spheres_scene import show_spheres  # noqa: E402
 
 out = sys.argv[1]
 float_composite = int(sys.argv[2]) if len(sys.argv) > 2 else 1
@@ -35,25 +39,7 @@ light = AddLight(view=view)
 light.Coords = 'Headlight'
 light.Intensity = 6.0
 
-
-def sphere(center, radius, color, resolution):
-    source = Sphere(Center=center, Radius=radius, ThetaResolution=resolution,
-                    PhiResolution=resolution)
-    display = Show(source, view)
-    display.AmbientColor = color
-    display.DiffuseColor = color
-    display.Ambient = 0.0
-    display.Diffuse = 1.0
-    return display
-
-
-sphere([0.0, 0.0, -2.0], 2.0, [0.02, 0.025, 0.075], 96)
-sphere([-1.2, 0.6, 1.0], 0.35, [1.0, 0.85, 0.4], 48)
-sphere([0.9, -0.5, 1.0], 0.25, [0.5, 1.0, 0.9], 48)
-sphere([0.2, 1.1, 0.5], 0.15, [1.0, 0.5, 0.9], 48)
-view.CameraPosition = [0.0, 0.0, 9.0]
-view.CameraFocalPoint = [0.0, 0.0, 0.0]
-view.CameraViewUp = [0.0, 1.0, 0.0]
+show_spheres(view, [0.02, 0.025, 0.075], lit=True)
 Render(view)
 SaveScreenshot(out, view, ImageResolution=[400, 300])
 view.UpdatePropertyInformation()

@@ -55,11 +55,7 @@ vtkSmartPointer<vtkImageData> RunPreset(const char* preset, vtkImageData* input)
 {
   vtkNew<vtkImageBloom> bloom;
   EXPECT_TRUE(bloom->SetPreset(preset));
-  bloom->SetInputData(input);
-  bloom->Update();
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(bloom->GetOutput());
-  return out;
+  return vtkBloomTest::RunAndCopy(bloom, input);
 }
 
 vtkSmartPointer<vtkImageData> RunBlur(int radius, double sigma, vtkImageData* input)
@@ -67,11 +63,7 @@ vtkSmartPointer<vtkImageData> RunBlur(int radius, double sigma, vtkImageData* in
   vtkNew<vtkImageSeparableGaussian> blur;
   blur->SetRadius(radius, radius, 0);
   blur->SetStandardDeviations(sigma, sigma, 0.0);
-  blur->SetInputData(input);
-  blur->Update();
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(blur->GetOutput());
-  return out;
+  return vtkBloomTest::RunAndCopy(blur, input);
 }
 
 class FiltersCalibration : public ::testing::TestWithParam<const char*>

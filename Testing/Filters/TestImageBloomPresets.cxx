@@ -34,11 +34,7 @@ vtkSmartPointer<vtkImageData> RunPreset(
   {
     *accepted = ok;
   }
-  bloom->SetInputData(input);
-  bloom->Update();
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(bloom->GetOutput());
-  return out;
+  return vtkBloomTest::RunAndCopy(bloom, input);
 }
 
 // R = G = B = the red channel, alpha kept: the RGB image a 1-2 component image stands for.

@@ -41,11 +41,7 @@ vtkSmartPointer<vtkImageData> Apply(vtkImageData* input, const ThresholdSettings
   filter->SetThreshold(s.Threshold);
   filter->SetKnee(s.Knee);
   filter->SetClampLuminance(s.ClampLuminance);
-  filter->SetInputData(input);
-  filter->Update();
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(filter->GetOutput());
-  return out;
+  return vtkBloomTest::RunAndCopy(filter, input);
 }
 
 // A 1-row image of the given pixels (nc components taken from each Pixel as ToImage does).

@@ -28,11 +28,7 @@ vtkSmartPointer<vtkImageData> Down(vtkImageData* input, int kernel, bool karis)
   vtkNew<vtkImagePyramidDown> filter;
   filter->SetKernel(kernel);
   filter->SetKarisAverage(karis);
-  filter->SetInputData(input);
-  filter->Update();
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(filter->GetOutput());
-  return out;
+  return vtkBloomTest::RunAndCopy(filter, input);
 }
 
 vtkSmartPointer<vtkImageData> Placed(const Texture& t, int components, int type)

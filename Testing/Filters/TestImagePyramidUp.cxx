@@ -29,12 +29,8 @@ vtkSmartPointer<vtkImageData> Up(vtkImageData* coarse, vtkImageData* fine, const
   filter->SetKernel(s.Kernel);
   filter->SetCoarseWeight(s.CoarseWeight);
   filter->SetFineWeight(s.FineWeight);
-  filter->SetInputData(coarse);
   filter->SetFineInputData(fine);
-  filter->Update();
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(filter->GetOutput());
-  return out;
+  return vtkBloomTest::RunAndCopy(filter, coarse);
 }
 
 Texture Expected(const Texture& coarse, const Texture& fine, const UpSettings& s)

@@ -43,11 +43,7 @@ vtkSmartPointer<vtkImageData> Smooth(vtkImageData* input, const Settings& s)
   filter->SetRadius(s.Radius[0], s.Radius[1], s.Radius[2]);
   filter->SetKernelType(s.Kind);
   filter->SetBorderMode(s.Border);
-  filter->SetInputData(input);
-  filter->Update();
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(filter->GetOutput());
-  return out;
+  return vtkBloomTest::RunAndCopy(filter, input);
 }
 
 // The radius the class documents for a negative Radius: ceil(4 sigma) (RadiusFactor 4).

@@ -37,11 +37,7 @@ vtkSmartPointer<vtkImageData> Smooth(
   filter->SetStandardDeviations(sx, sy, 0.0);
   filter->SetBorderMode(border);
   filter->SetSanitizeNonFinite(sanitize);
-  filter->SetInputData(input);
-  filter->Update();
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(filter->GetOutput());
-  return out;
+  return vtkBloomTest::RunAndCopy(filter, input);
 }
 
 // The 1-D impulse response of a method: a line of +/- 12 sigma + 32 with zero borders.

@@ -46,11 +46,7 @@ vtkSmartPointer<vtkImageData> Bloom(vtkImageData* input, bool sanitize,
   bloom->SetPreset(preset);
   bloom->SetSanitizeNonFinite(sanitize);
   bloom->SetClampLuminance(clampLuminance);
-  bloom->SetInputData(input);
-  bloom->Update();
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(bloom->GetOutput());
-  return out;
+  return vtkBloomTest::RunAndCopy(bloom, input);
 }
 
 vtkSmartPointer<vtkImageData> Gaussian(
@@ -61,11 +57,7 @@ vtkSmartPointer<vtkImageData> Gaussian(
   filter->SetStandardDeviations(sigma, sigma, 0.0);
   filter->SetBorderMode(border);
   filter->SetSanitizeNonFinite(sanitize);
-  filter->SetInputData(input);
-  filter->Update();
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(filter->GetOutput());
-  return out;
+  return vtkBloomTest::RunAndCopy(filter, input);
 }
 
 // Sanitize on: every output finite. Off: an output sample is non-finite exactly where the input

@@ -28,11 +28,7 @@ vtkSmartPointer<vtkImageData> RunWith(vtkImageData* input, const char* preset, i
   bloom->SetTrimPyramid(!(off == 2 || off == 4));
   bloom->SetRestrictToBrightRegion(!(off == 3 || off == 4));
   bloom->ComputeStatisticsOff();
-  bloom->SetInputData(input);
-  bloom->Update();
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(bloom->GetOutput());
-  return out;
+  return vtkBloomTest::RunAndCopy(bloom, input);
 }
 }
 

@@ -107,11 +107,7 @@ inline vtkSmartPointer<vtkImageData> RunBloom(vtkImageData* input, const std::st
   bloom->SetTrimPyramid(adaptive);
   bloom->SetRestrictToBrightRegion(adaptive);
   bloom->ComputeStatisticsOff();
-  bloom->SetInputData(input);
-  bloom->Update();
-  auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(bloom->GetOutput());
-  return out;
+  return vtkBloomTest::RunAndCopy(bloom, input);
 }
 
 // Relative L2 over the colour components only (alpha is compared bit for bit elsewhere).

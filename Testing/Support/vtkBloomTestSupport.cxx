@@ -1,6 +1,7 @@
 #include "vtkBloomTestSupport.h"
 
 #include <vtkDataArray.h>
+#include <vtkImageAlgorithm.h>
 #include <vtkPointData.h>
 
 #include <cctype>
@@ -13,6 +14,16 @@
 
 namespace vtkBloomTest
 {
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> RunAndCopy(vtkImageAlgorithm* filter, vtkImageData* input)
+{
+  filter->SetInputData(input);
+  filter->Update();
+  auto out = vtkSmartPointer<vtkImageData>::New();
+  out->DeepCopy(filter->GetOutput());
+  return out;
+}
+
 bool RunningInCI()
 {
   const char* ci = std::getenv("CI");

@@ -10,8 +10,13 @@
 #include <functional>
 #include <string>
 
+class vtkImageAlgorithm;
+
 namespace vtkBloomTest
 {
+/// Run `filter` on `input` and return a copy of its output, which outlives the filter.
+vtkSmartPointer<vtkImageData> RunAndCopy(vtkImageAlgorithm* filter, vtkImageData* input);
+
 /// True when the CI environment variable says we run under CI.
 bool RunningInCI();
 

@@ -193,6 +193,16 @@ TEST(CommandLine, UsageErrorsExitWithTwo)
   EXPECT_EQ(RunTool("frobnicate " + in + " " + out), 2);
   EXPECT_EQ(RunTool("image --preset nope " + in + " " + out, &errors), 2);
   EXPECT_NE(errors.find("unknown preset"), std::string::npos) << errors;
+  EXPECT_NE(errors.find("crt-halfres"), std::string::npos) << errors;
+  EXPECT_EQ(errors.find("ERR|"), std::string::npos)
+    << "VTK's own log before the message: " << errors;
+  // Values the filter would take but misuse: each refused with the option and its range.
+  for (const std::string bad : { "--strength -1", "--strength 1e40", "--threshold -1" })
+  {
+    EXPECT_EQ(RunTool("image " + bad + " " + in + " " + out, &errors), 2) << bad;
+    const std::string option = bad.substr(0, bad.find(' '));
+    EXPECT_NE(errors.find(option + " must be in ["), std::string::npos) << errors;
+  }
   EXPECT_EQ(RunTool("image --threshold abc " + in + " " + out), 2);
   EXPECT_EQ(RunTool("image --knee 2 " + in + " " + out), 2);
   EXPECT_EQ(RunTool("image --levels 0 " + in + " " + out), 2);
@@ -308,6 +318,30 @@ TEST(CommandLine, RenderListsAndRendersTheExampleScenes)
   }
   EXPECT_GT(peak, 1.5) << "the render is not HDR";
   EXPECT_GT(sumAfter, sumBefore * 1.01) << "the bloom added no light";
+}
+
+// --azimuth, --elevation and --zoom turn the camera of the built-in scenes as of datasets.
+TEST(CommandLine, CameraOptionsTurnTheExampleScenes)
+{
+  const std::string plain = vtkBloomTest::OutputPath("render-camera-plain.exr");
+  const std::string turned = vtkBloomTest::OutputPath("render-camera-turned.exr");
+  for (const auto& run : { std::make_pair(plain, std::string()),
+         std::make_pair(turned, std::string("--azimuth 60 --elevation 20 --zoom 1.5 ")) })
+  {
+    fs::remove(run.first);
+    ASSERT_EQ(RunTool("render --quiet --no-bloom --size 64x48 " + run.second + "lit-spheres " +
+                Quote(run.first)),
+      0);
+  }
+  const Pixels a = ReadEXR(plain), b = ReadEXR(turned);
+  ASSERT_EQ(a.Rgba.size(), b.Rgba.size());
+  double difference = 0.0, energy = 0.0;
+  for (size_t i = 0; i < a.Rgba.size(); ++i)
+  {
+    difference += std::abs(static_cast<double>(a.Rgba[i]) - b.Rgba[i]);
+    energy += std::abs(static_cast<double>(a.Rgba[i]));
+  }
+  EXPECT_GT(difference, 0.1 * energy) << "the camera options changed nothing";
 }
 
 // VTK 9.4 and later choose the render window at run time. Asked for an OSMesa window where

@@ -422,12 +422,12 @@ TEST(CommandLineData, ViewRespondsToItsSlider)
   const std::string prefix = Directory() + "/view";
   fs::remove(prefix + "-000.exr");
   fs::remove(prefix + "-001.exr");
-  // 400x300 window; the strength slider runs from x 0.70 to 0.95 at y 0.12 (normalized), its
+  // 400x300 window; the strength slider runs from x 0.70 to 0.95 at y 0.26 (normalized), its
   // handle at the preset's strength. Save (e), drag the handle to the right end, save again.
   const std::string events = Directory() + "/view-events.log";
   {
     const double strength = 1.0; // webgpu-market's, which the data scene keeps
-    const int y = static_cast<int>(0.12 * 300);
+    const int y = static_cast<int>(0.26 * 300);
     const int from = static_cast<int>((0.70 + 0.25 * strength / 3.0) * 400);
     const int to = static_cast<int>(0.95 * 400);
     std::ofstream log(events);

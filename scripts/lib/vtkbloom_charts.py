@@ -1,7 +1,7 @@
 """Shared by the plot scripts: log-log charts drawn with VTK's own vtkChartXY, saved as PNG.
 
 Needs an X display (xvfb-run) with Debian's VTK. Not a script: imported by
-scripts/plot-accuracy.py and scripts/plot-gpu-quality.py, which sit beside it.
+scripts/plot-accuracy.py and scripts/plot-gpu-quality.py, from this folder (scripts/lib).
 """
 from vtkmodules.vtkChartsCore import vtkAxis, vtkChartXY
 from vtkmodules.vtkCommonCore import vtkFloatArray

@@ -2,7 +2,7 @@
 # Build Debian's own VTK 9.1 source for one headless OpenGL backend into a cached prefix. The
 # common part of scripts/build-osmesa-vtk.sh and scripts/build-egl-vtk.sh; call those.
 #
-#   bash scripts/build-debian-vtk.sh osmesa|egl     prints the prefix on its last line
+#   bash scripts/lib/build-debian-vtk.sh osmesa|egl     prints the prefix on its last line
 #
 #   osmesa  $VTKBLOOM_OSMESA_PREFIX or ~/.cache/vtk-bloom/vtk-9.1-osmesa: OSMesa, no X
 #   egl     $VTKBLOOM_EGL_PREFIX or ~/.cache/vtk-bloom/vtk-9.1-egl: EGL (vtkEGLRenderWindow),
@@ -15,12 +15,12 @@
 # Why the extra steps:
 #  - Debian strips VTK's bundled glew, and the system libGLEW cannot initialise without a GLX or
 #    EGL context ("Missing GL version"). glew 2.2's own source, from `apt-get source glew`, is
-#    compiled into VTK with GLEW_OSMESA or GLEW_EGL (scripts/osmesa-vtkglew.cmake picks one) so
+#    compiled into VTK with GLEW_OSMESA or GLEW_EGL (scripts/lib/osmesa-vtkglew.cmake picks one) so
 #    that it asks OSMesa or EGL for entry points.
 #  - CMAKE_INSTALL_RPATH points at the prefix so that its libraries never resolve to the
 #    system's libvtk*-9.1 with the same SONAMEs.
 set -euo pipefail
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 backend=${1:-}
 case "$backend" in
   osmesa)
@@ -39,7 +39,7 @@ case "$backend" in
     gl_args=(-DVTK_OPENGL_HAS_OSMESA=OFF -DVTK_OPENGL_HAS_EGL=ON)
     ;;
   *)
-    echo "usage: bash scripts/build-debian-vtk.sh osmesa|egl" >&2
+    echo "usage: bash scripts/lib/build-debian-vtk.sh osmesa|egl" >&2
     exit 2
     ;;
 esac
@@ -120,7 +120,7 @@ mkdir -p "$vtkglew/src" "$vtkglew/include/GL"
 cp "$glew_src/src/glew.c" "$vtkglew/src/"
 cp "$glew_src"/include/GL/*.h "$vtkglew/include/GL/"
 cp "$glew_src/LICENSE.txt" "$vtkglew/LICENSE.txt"
-cp "$root/scripts/osmesa-vtkglew.cmake" "$vtkglew/CMakeLists.txt"
+cp "$root/scripts/lib/osmesa-vtkglew.cmake" "$vtkglew/CMakeLists.txt"
 
 # 5. Configure a minimal VTK: OpenGL through one headless backend only, system libraries where
 # Debian has them.

@@ -1,5 +1,5 @@
 # CMakeLists.txt for ThirdParty/glew/vtkglew in Debian's VTK 9.1 source, which strips the bundled
-# glew. scripts/build-debian-vtk.sh (the OSMesa and the EGL builds) copies glew 2.2's src/glew.c
+# glew. scripts/lib/build-debian-vtk.sh (the OSMesa and the EGL builds) copies glew 2.2's src/glew.c
 # and include/GL/*.h beside it. GLEW_OSMESA makes glew resolve entry points with
 # OSMesaGetProcAddress, GLEW_EGL with eglGetProcAddress, so neither build needs GLX.
 file(GLOB vtkglew_headers RELATIVE "${CMAKE_CURRENT_SOURCE_DIR}" include/GL/*.h)

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # Run a command with DISPLAY set to a private Xvfb server, started here and stopped afterwards.
-#   scripts/with-xvfb.sh COMMAND [ARGS...]
+#   scripts/lib/with-xvfb.sh COMMAND [ARGS...]
 # The system VTK 9.1 renders through X (GLX) only; the OSMesa build needs no display at all.
 set -euo pipefail
 display=""

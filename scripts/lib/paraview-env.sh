@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Make ParaView usable beside the system VTK, then run a command in that environment:
 #
-#   bash scripts/paraview-env.sh [COMMAND [ARGS...]]
+#   bash scripts/lib/paraview-env.sh [COMMAND [ARGS...]]
 #
 # On Debian 12 (ParaView 5.11 beside VTK 9.1) the set-up is idempotent and cached:
 # - apt: paraview-dev (ParaView's libraries, CMake package, pvbatch, and the VTK 9.2 it carries),
