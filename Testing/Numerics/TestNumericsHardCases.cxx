@@ -33,10 +33,7 @@ vtkSmartPointer<vtkImageData> ReadExr(const std::string& path)
 {
   vtkNew<vtkOpenEXRReader> reader;
   reader->SetFileName(path.c_str());
-  reader->Update();
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->DeepCopy(reader->GetOutput());
-  return image;
+  return vtkBloomTest::UpdateAndCopy(reader);
 }
 
 vtkSmartPointer<vtkImageData> Bloom(vtkImageData* input, bool sanitize,
@@ -371,10 +368,7 @@ TEST(NumericsHardCases, EverySizeEveryDepthKeepsConstants)
       {
         vtkNew<vtkImagePyramidDown> down;
         down->SetKernel(kernel);
-        down->SetInputData(current);
-        down->Update();
-        current = vtkSmartPointer<vtkImageData>::New();
-        current->DeepCopy(down->GetOutput());
+        current = vtkBloomTest::RunAndCopy(down, current);
         EXPECT_LE(vtkBloomHardCases::MaxRelativeDeviationFrom(current, value), 1e-6)
           << n << " down " << depth;
         chain.push_back(current);
@@ -383,11 +377,8 @@ TEST(NumericsHardCases, EverySizeEveryDepthKeepsConstants)
       {
         vtkNew<vtkImagePyramidUp> up;
         up->SetKernel(depth % 2);
-        up->SetInputData(current);
         up->SetFineInputData(chain[static_cast<size_t>(depth)]);
-        up->Update();
-        current = vtkSmartPointer<vtkImageData>::New();
-        current->DeepCopy(up->GetOutput());
+        current = vtkBloomTest::RunAndCopy(up, current);
         EXPECT_LE(vtkBloomHardCases::MaxRelativeDeviationFrom(current, value), 1e-6)
           << n << " up " << depth;
       }

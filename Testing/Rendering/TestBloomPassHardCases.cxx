@@ -89,10 +89,7 @@ vtkSmartPointer<vtkImageData> ReadExr(const std::string& path)
 {
   vtkNew<vtkOpenEXRReader> reader;
   reader->SetFileName(path.c_str());
-  reader->Update();
-  auto image = vtkSmartPointer<vtkImageData>::New();
-  image->DeepCopy(reader->GetOutput());
-  return image;
+  return vtkBloomTest::UpdateAndCopy(reader);
 }
 
 double Get(vtkImageData* image, vtkIdType p, int c)

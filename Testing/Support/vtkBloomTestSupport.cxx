@@ -15,15 +15,22 @@
 namespace vtkBloomTest
 {
 //------------------------------------------------------------------------------
-vtkSmartPointer<vtkImageData> RunAndCopy(vtkImageAlgorithm* filter, vtkImageData* input)
+vtkSmartPointer<vtkImageData> UpdateAndCopy(vtkImageAlgorithm* algorithm)
 {
-  filter->SetInputData(input);
-  filter->Update();
+  algorithm->Update();
   auto out = vtkSmartPointer<vtkImageData>::New();
-  out->DeepCopy(filter->GetOutput());
+  out->DeepCopy(algorithm->GetOutput());
   return out;
 }
 
+//------------------------------------------------------------------------------
+vtkSmartPointer<vtkImageData> RunAndCopy(vtkImageAlgorithm* filter, vtkImageData* input)
+{
+  filter->SetInputData(input);
+  return UpdateAndCopy(filter);
+}
+
+//------------------------------------------------------------------------------
 bool RunningInCI()
 {
   const char* ci = std::getenv("CI");

@@ -14,7 +14,11 @@ class vtkImageAlgorithm;
 
 namespace vtkBloomTest
 {
-/// Run `filter` on `input` and return a copy of its output, which outlives the filter.
+/// Update `algorithm` (a filter, or a reader with its file name set) and return a copy of its
+/// output, which outlives it.
+vtkSmartPointer<vtkImageData> UpdateAndCopy(vtkImageAlgorithm* algorithm);
+
+/// Run `filter` on `input` and return a copy of its output (UpdateAndCopy).
 vtkSmartPointer<vtkImageData> RunAndCopy(vtkImageAlgorithm* filter, vtkImageData* input);
 
 /// True when the CI environment variable says we run under CI.
