@@ -4,6 +4,7 @@
 #include <vtkCompositeDataSet.h>
 #include <vtkDataSet.h>
 #include <vtkGenericDataObjectReader.h>
+#include <vtkLogger.h>
 #include <vtkNew.h>
 #include <vtkOutputWindow.h>
 #include <vtkXMLDataElement.h>
@@ -198,9 +199,12 @@ vtkSmartPointer<vtkDataObject> ReadDataset(const std::string& file, ErrorCollect
 {
   // The readers make inner readers and parsers of their own, whose errors reach only the
   // output window: collect those too, and keep them off the terminal.
+  // VTK's logger writes them to stderr as well, before our message: off while reading.
   vtkOutputWindow* window = vtkOutputWindow::GetInstance();
   const int mode = window->GetDisplayMode();
   window->SetDisplayModeToNever();
+  const vtkLogger::Verbosity verbosity = vtkLogger::GetCurrentVerbosityCutoff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   const unsigned long tag = errors.Watch(window);
   vtkSmartPointer<vtkDataObject> data;
   if (Extension(file) == ".vtk")
@@ -230,6 +234,7 @@ vtkSmartPointer<vtkDataObject> ReadDataset(const std::string& file, ErrorCollect
   }
   window->RemoveObserver(tag);
   window->SetDisplayMode(mode);
+  vtkLogger::SetStderrVerbosity(verbosity);
   errors.ThrowIfAny("cannot read " + file + ":");
   if (!data)
   {

@@ -230,7 +230,18 @@ void ErrorCollector::OnError(vtkObject*, unsigned long, void* clientData, void* 
   {
     text = text.substr(pos + 3);
   }
-  while (!text.empty() && (text.back() == '\n' || text.back() == ' '))
+  // One line of printable text: VTK appends the request's dump to pipeline failures, and a
+  // reader quotes what it found, which in a garbage file is binary.
+  text = text.substr(0, text.find('\n'));
+  for (char& c : text)
+  {
+    c = std::isprint(static_cast<unsigned char>(c)) ? c : '?';
+  }
+  if (text.size() > 160)
+  {
+    text = text.substr(0, 157) + "...";
+  }
+  while (!text.empty() && text.back() == ' ')
   {
     text.pop_back();
   }

@@ -30,6 +30,8 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -396,6 +398,12 @@ TEST(CommandLineData, BadInputFailsWithItsMessageAndNoOutput)
       << c.Arguments << "\n"
       << errors;
     EXPECT_NE(errors.find(c.Message), std::string::npos) << c.Arguments << "\n" << errors;
+    // VTK's own log reaches the message or nowhere: no logger line ("ERR|"), no binary bytes.
+    EXPECT_EQ(errors.find("ERR|"), std::string::npos) << c.Arguments << "\n" << errors;
+    EXPECT_TRUE(std::all_of(errors.begin(), errors.end(),
+      [](char ch) { return ch == '\n' || std::isprint(static_cast<unsigned char>(ch)); }))
+      << c.Arguments << "\n"
+      << errors;
     EXPECT_FALSE(fs::exists(out)) << c.Arguments;
     EXPECT_FALSE(fs::exists(directory + "/out_0000.png")) << c.Arguments;
   }
