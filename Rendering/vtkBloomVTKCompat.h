@@ -7,7 +7,8 @@
  *   (vtk_glad.h), which loads libGL, libEGL or libOSMesa when a window is made.
  * - The composite mapper: vtkCompositePolyDataMapper2 (OpenGL2) became
  *   vtkCompositePolyDataMapper in VTK 9.3.
- * - The window chosen at run time (VTK 9.4 and later): vtkBloomCheckOpenGLWindow() turns the
+ * - The window chosen at run time (VTK 9.4 and later): vtkBloomPreferHeadlessWindow() names
+ *   the headless one where there is no display, and vtkBloomCheckOpenGLWindow() turns the
  *   crash of a missing OSMesa into a message.
  *
  * Private: not installed. Include it instead of vtk_glew.h or vtk_glad.h.
@@ -37,6 +38,34 @@ using vtkBloomCompositePolyDataMapper = vtkCompositePolyDataMapper;
 #include "vtkCompositePolyDataMapper2.h"
 using vtkBloomCompositePolyDataMapper = vtkCompositePolyDataMapper2;
 #endif
+
+/**
+ * With no X display, VTK 9.4 and later try X first, log a warning to stderr, then fall back
+ * to EGL and OSMesa. Where neither DISPLAY nor VTK_DEFAULT_OPENGL_WINDOW says anything, this
+ * names the headless window this machine can make (EGL, else OSMesa), so that VTK chooses it
+ * without the warning. VTK 9.1 fixes its window when it is built: nothing to do.
+ */
+inline void vtkBloomPreferHeadlessWindow()
+{
+#if VTKBLOOM_VTK_AT_LEAST(9, 4)
+  const char* display = std::getenv("DISPLAY");
+  if (std::getenv("VTK_DEFAULT_OPENGL_WINDOW") || (display && *display))
+  {
+    return;
+  }
+  const char* const choices[][2] = { { "libEGL.so.1", "vtkEGLRenderWindow" },
+    { "libOSMesa.so.8", "vtkOSOpenGLRenderWindow" } };
+  for (const auto& choice : choices)
+  {
+    if (void* handle = dlopen(choice[0], RTLD_LAZY | RTLD_LOCAL))
+    {
+      dlclose(handle);
+      setenv("VTK_DEFAULT_OPENGL_WINDOW", choice[1], 0);
+      return;
+    }
+  }
+#endif
+}
 
 /**
  * Whether a render window of the kind VTK will choose can be made; when not, `why` says so

@@ -77,6 +77,7 @@ struct Stage
 //------------------------------------------------------------------------------
 void RequireOpenGLWindow()
 {
+  vtkBloomPreferHeadlessWindow();
   std::string why;
   if (!vtkBloomCheckOpenGLWindow(why))
   {

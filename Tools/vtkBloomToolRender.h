@@ -27,7 +27,8 @@ struct RenderOptions
   std::function<void(vtkBloomPass*)> ConfigureBloom;
 };
 
-/// Throws RunError where VTK would crash making the render window (vtkBloomCheckOpenGLWindow).
+/// Names the headless window where there is no display (vtkBloomPreferHeadlessWindow), then
+/// throws RunError where VTK would crash making the window (vtkBloomCheckOpenGLWindow).
 void RequireOpenGLWindow();
 
 /// Render the example scene `scene` to `output`. Throws UsageError or RunError.

@@ -15,6 +15,7 @@ class OpenGLWindowEnvironment : public ::testing::Environment
 public:
   void SetUp() override
   {
+    vtkBloomPreferHeadlessWindow();
     std::string why;
     if (!vtkBloomCheckOpenGLWindow(why))
     {
