@@ -18,6 +18,7 @@
 
 #include "vtkVersionMacros.h"
 
+#include <cstddef>
 #include <cstdlib>
 #include <string>
 
@@ -39,6 +40,29 @@ using vtkBloomCompositePolyDataMapper = vtkCompositePolyDataMapper;
 using vtkBloomCompositePolyDataMapper = vtkCompositePolyDataMapper2;
 #endif
 
+#if VTKBLOOM_VTK_AT_LEAST(9, 4)
+/// The libraries VTK 9.4 and later load (dlopen) for the EGL and the OSMesa windows; for
+/// OSMesa the names it tries, in its order.
+inline constexpr const char* vtkBloomEGLLibraries[] = { "libEGL.so.1" };
+inline constexpr const char* vtkBloomOSMesaLibraries[] = { "libOSMesa.so.8", "libOSMesa.so.6",
+  "libOSMesa.so" };
+
+/// Whether one of `libraries` can be loaded, as VTK loads the window's GL library.
+template <size_t N>
+inline bool vtkBloomCanLoad(const char* const (&libraries)[N])
+{
+  for (const char* library : libraries)
+  {
+    if (void* handle = dlopen(library, RTLD_LAZY | RTLD_LOCAL))
+    {
+      dlclose(handle);
+      return true;
+    }
+  }
+  return false;
+}
+#endif
+
 /**
  * With no X display, VTK 9.4 and later try X first, log a warning to stderr, then fall back
  * to EGL and OSMesa. Where neither DISPLAY nor VTK_DEFAULT_OPENGL_WINDOW says anything, this
@@ -53,16 +77,13 @@ inline void vtkBloomPreferHeadlessWindow()
   {
     return;
   }
-  const char* const choices[][2] = { { "libEGL.so.1", "vtkEGLRenderWindow" },
-    { "libOSMesa.so.8", "vtkOSOpenGLRenderWindow" } };
-  for (const auto& choice : choices)
+  if (vtkBloomCanLoad(vtkBloomEGLLibraries))
   {
-    if (void* handle = dlopen(choice[0], RTLD_LAZY | RTLD_LOCAL))
-    {
-      dlclose(handle);
-      setenv("VTK_DEFAULT_OPENGL_WINDOW", choice[1], 0);
-      return;
-    }
+    setenv("VTK_DEFAULT_OPENGL_WINDOW", "vtkEGLRenderWindow", 0);
+  }
+  else if (vtkBloomCanLoad(vtkBloomOSMesaLibraries))
+  {
+    setenv("VTK_DEFAULT_OPENGL_WINDOW", "vtkOSOpenGLRenderWindow", 0);
   }
 #endif
 }
@@ -89,16 +110,8 @@ inline bool vtkBloomCheckOpenGLWindow(std::string& why)
           "vtkXOpenGLRenderWindow, vtkEGLRenderWindow or vtkOSOpenGLRenderWindow";
     return false;
   }
-  if (name == "vtkOSOpenGLRenderWindow")
+  if (name == "vtkOSOpenGLRenderWindow" && !vtkBloomCanLoad(vtkBloomOSMesaLibraries))
   {
-    for (const char* library : { "libOSMesa.so.8", "libOSMesa.so.6", "libOSMesa.so" })
-    {
-      if (void* handle = dlopen(library, RTLD_LAZY | RTLD_LOCAL))
-      {
-        dlclose(handle);
-        return true;
-      }
-    }
     why = "VTK_DEFAULT_OPENGL_WINDOW=vtkOSOpenGLRenderWindow, but libOSMesa is not installed "
           "(Mesa 25.1 removed it): use vtkEGLRenderWindow for headless rendering, or unset "
           "the variable";

@@ -12,7 +12,7 @@ vtkbloom_add_gtest(TestBloomPass OPENGL
   LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom VTKBloom::IOOpenEXR
     VTK::TestingRendering
     VTK::RenderingOpenGL2 VTK::RenderingCore VTK::FiltersSources VTK::CommonDataModel
-    VTK::CommonCore ${vtkbloom_opengl_modules})
+    VTK::CommonCore)
 vtk_module_autoinit(TARGETS TestBloomPass MODULES VTK::RenderingOpenGL2)
 target_compile_definitions(TestBloomPass PRIVATE
   VTKBLOOM_BASELINE_DIR="${vtkbloom_rendering_baselines}")
@@ -22,12 +22,12 @@ vtkbloom_add_gtest(TestBloomPassHardCases OPENGL
   SOURCES Rendering/TestBloomPassHardCases.cxx
   LIBRARIES vtkbloom_hardcases VTKBloom::RenderingBloom VTKBloom::FiltersBloom
     VTKBloom::IOOpenEXR VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonDataModel
-    VTK::CommonCore ${vtkbloom_opengl_modules})
+    VTK::CommonCore)
 vtk_module_autoinit(TARGETS TestBloomPassHardCases MODULES VTK::RenderingOpenGL2)
 
 # The content-aware chain against the full chain, bit for bit, and the fast mode.
 vtkbloom_add_gtest(TestBloomPassRegion OPENGL
   SOURCES Rendering/TestBloomPassRegion.cxx
   LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom
-    VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonDataModel VTK::CommonCore ${vtkbloom_opengl_modules})
+    VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonDataModel VTK::CommonCore)
 vtk_module_autoinit(TARGETS TestBloomPassRegion MODULES VTK::RenderingOpenGL2)

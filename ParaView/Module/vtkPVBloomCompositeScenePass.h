@@ -18,7 +18,6 @@
 #ifndef vtkPVBloomCompositeScenePass_h
 #define vtkPVBloomCompositeScenePass_h
 
-#include "vtkNew.h"                 // For the delegate
 #include "vtkParaViewBloomModule.h" // For export macro
 #include "vtkValuePass.h"
 

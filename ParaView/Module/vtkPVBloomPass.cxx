@@ -4,10 +4,6 @@
 #include "vtkFloatArray.h"
 #include "vtkIceTCompositePass.h"
 #include "vtkObjectFactory.h"
-#include "vtkOpenGLRenderWindow.h"
-#include "vtkOpenGLState.h"
-#include "vtkRenderState.h"
-#include "vtkRenderer.h"
 #include "vtkTextureObject.h"
 
 #include <algorithm>
@@ -39,7 +35,7 @@ void vtkPVBloomPass::SetCompositeBackground(const double rgb[3], double alpha)
 }
 
 //------------------------------------------------------------------------------
-void vtkPVBloomPass::SceneRendered(const vtkRenderState* s, vtkTextureObject* sceneColor)
+void vtkPVBloomPass::SceneRendered(const vtkRenderState*, vtkTextureObject* sceneColor)
 {
   this->LastSceneWasComposited = false;
   vtkFloatArray* composite =
@@ -65,9 +61,7 @@ void vtkPVBloomPass::SceneRendered(const vtkRenderState* s, vtkTextureObject* sc
       this->Pixels[i + c] = top[i + c] + behind * background[c];
     }
   }
-  auto* window = static_cast<vtkOpenGLRenderWindow*>(s->GetRenderer()->GetRenderWindow());
-  window->GetState()->vtkglPixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  sceneColor->Activate();
+  sceneColor->Activate(); // rows of RGBA floats are 16-byte aligned: any unpack alignment
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, this->Pixels.data());
   sceneColor->Deactivate();
   this->LastSceneWasComposited = true;

@@ -223,7 +223,10 @@ TEST(FiltersErrors, PrintSelfNamesParameters)
         "LimitLevelsToImageSize", "DownsampleKernel", "KarisAverage", "BlurKernel",
         "BlurStandardDeviation", "BlurRadius", "BlurGaussianKind", "BlurHalfKernel",
         "BlurTapSpacing", "BlurIterations", "UpsampleKernel", "AccumulateMode", "LevelWeights",
-        "CompositeMode", "Strength", "Tint" } },
+        "CompositeMode", "Strength", "Tint", "ConvolutionMode", "BloomMode", "PSFType",
+        "AiryRadius", "Wavelengths", "PSFGaussianSigmas", "PSFGaussianWeights", "PSFRadius",
+        "PSFBorderMode", "LastRunWasFast", "LastBloomSkipped", "LastLevelsBuilt",
+        "LastWorkspaceBytes", "LastFFTBlurs" } },
   };
   for (const auto& e : expected)
   {
@@ -239,6 +242,17 @@ TEST(FiltersErrors, PrintSelfNamesParameters)
   EXPECT_NE(Print(gaussian).find("Reflect"), std::string::npos);
   bloom->SetPreset("mip-atlas");
   EXPECT_NE(Print(bloom).find("0.52"), std::string::npos);
+  // Enums by name, not number.
+  bloom->SetDownsampleKernel(vtkImagePyramidDown::BINOMIAL);
+  bloom->SetConvolutionMode(vtkImageBloom::CONVOLUTION_FFT);
+  bloom->SetPSFType(vtkImageBloom::PSF_GAUSSIANS);
+  const std::string text = Print(bloom);
+  for (const char* named : { "DownsampleKernel: Binomial", "ConvolutionMode: FFT",
+         "PSFType: Gaussians", "PSFBorderMode: Reflect", "BlurGaussianKind: " })
+  {
+    EXPECT_NE(text.find(named), std::string::npos) << named << " in\n" << text;
+  }
+  EXPECT_EQ(text.find("BlurGaussianKind: 0"), std::string::npos) << text;
 }
 
 // Every filter reports progress through ProgressEvent, including intermediate values, and ends
