@@ -447,9 +447,10 @@ void AddFFTRows(vtkImageData* frame, const std::vector<double>& sigmas, std::vec
     return ms;
   };
   vtkNew<vtkImageData> reference, direct, fft;
-  bloom(vtkImageBloom::REFERENCE, vtkImageBloom::CONVOLUTION_DIRECT, reference);
-  const double directMs = bloom(vtkImageBloom::FAST, vtkImageBloom::CONVOLUTION_DIRECT, direct);
-  const double fftMs = bloom(vtkImageBloom::FAST, vtkImageBloom::CONVOLUTION_FFT, fft);
+  bloom(vtkImageBloom::REFERENCE, vtkBloomParameters::CONVOLUTION_DIRECT, reference);
+  const double directMs =
+    bloom(vtkImageBloom::FAST, vtkBloomParameters::CONVOLUTION_DIRECT, direct);
+  const double fftMs = bloom(vtkImageBloom::FAST, vtkBloomParameters::CONVOLUTION_FFT, fft);
   Row row = ChainRow("fft", "ping-pong FFT vs direct", "", Compare(fft, direct), fftMs);
   row.Note = Format(directMs, "%.1f");
   row.VarianceRatio = Compare(fft, reference).RelativeL2; // against the double chain

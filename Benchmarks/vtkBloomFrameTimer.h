@@ -130,7 +130,7 @@ public:
     {
       return false;
     }
-    vtkImageBloom* scene = this->Bloom->GetParameters();
+    vtkBloomParameters* scene = this->Bloom->GetParameters();
     parameters->SetThresholdMode(scene->GetThresholdMode());
     parameters->SetThreshold(scene->GetThreshold());
     parameters->SetKnee(scene->GetKnee());

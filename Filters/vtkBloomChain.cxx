@@ -1,7 +1,7 @@
 #include "vtkBloomChain.h"
 
 #include "vtkBloomImageOps.h"
-#include "vtkImageBloom.h"
+#include "vtkBloomParameters.h"
 #include "vtkImagePyramidDown.h"
 #include "vtkImagePyramidUp.h"
 
@@ -34,20 +34,12 @@ vtkBloomLinearOperator RepeatedConvolution(
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomChain::Build(vtkImageBloom* p, int width, int height)
+void vtkBloomChain::Build(vtkBloomParameters* p, int width, int height)
 {
   *this = vtkBloomChain();
   this->Width = width;
   this->Height = height;
-  this->ThresholdMode = p->GetThresholdMode();
-  this->Threshold = p->GetThreshold();
-  this->Knee = p->GetKnee();
-  this->ClampLuminance = p->GetClampLuminance();
   this->AccumulateMode = p->GetAccumulateMode();
-  this->CompositeMode = p->GetCompositeMode();
-  this->Strength = p->GetStrength();
-  this->Keep = this->CompositeMode == vtkImageBloom::LERP ? 1.0 - this->Strength : 1.0;
-  p->GetTint(this->Tint);
 
   const int full[2] = { width, height };
   const auto sizes = p->ComputeLevelSizes(width, height);
@@ -83,12 +75,12 @@ void vtkBloomChain::Build(vtkImageBloom* p, int width, int height)
       level.BlurPass.X = RepeatedConvolution(level.Size[0], blurTaps, iterations);
       level.BlurPass.Y = RepeatedConvolution(level.Size[1], blurTaps, iterations);
     }
-    if (this->AccumulateMode == vtkImageBloom::DIRECT && level.Weight != 0.0)
+    if (this->AccumulateMode == vtkBloomParameters::DIRECT && level.Weight != 0.0)
     {
       level.Full = Resample(level.Size, full, bilinear);
     }
   }
-  if (this->AccumulateMode != vtkImageBloom::DIRECT)
+  if (this->AccumulateMode != vtkBloomParameters::DIRECT)
   {
     for (size_t i = 0; i + 1 < this->Levels.size(); ++i)
     {
@@ -103,7 +95,7 @@ void vtkBloomChain::Build(vtkImageBloom* p, int width, int height)
       this->Source = Resample(full, this->Levels[0].Size, bilinear);
     }
     this->FinalIsIdentity =
-      this->AccumulateMode == vtkImageBloom::DIRECT || p->GetStartLevel() == 0;
+      this->AccumulateMode == vtkBloomParameters::DIRECT || p->GetStartLevel() == 0;
     if (!this->FinalIsIdentity)
     {
       this->Final = Resample(this->Levels[0].Size, full, bilinear);

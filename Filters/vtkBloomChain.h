@@ -1,8 +1,8 @@
 /**
  * @class   vtkBloomChain
- * @brief   The linear operators and parameters of one bloom evaluation, level by level.
+ * @brief   The linear operators of one bloom evaluation, level by level.
  *
- * vtkImageBloom's parameters describe a chain (bright pass, pyramid, per-level blur,
+ * A vtkBloomParameters describes a chain (bright pass, pyramid, per-level blur,
  * accumulation, composite); for a given image size that chain is a fixed list of separable
  * vtkBloomLinearOperator passes plus a few point-wise steps. vtkBloomChain::Build turns the
  * parameters into that list once, from the same kernel functions the CPU filters use, so the
@@ -19,6 +19,9 @@
  *   DIRECT:  bloom = sum_i w_i FullY FullX Lb_i                  (levels with w_i != 0)
  *   out     = keep I + Strength Tint bloom, keep = 1 - Strength for LERP, 1 for ADDITIVE.
  *
+ * The point-wise values (the threshold, the composite) are not copied here: the evaluators read
+ * them from the parameters the chain was built from.
+ *
  * An empty level list means that no level fits the image and the bloom is black.
  */
 
@@ -30,7 +33,7 @@
 
 #include <vector>
 
-class vtkImageBloom;
+class vtkBloomParameters;
 
 class VTKFILTERSBLOOM_EXPORT vtkBloomChain
 {
@@ -46,7 +49,7 @@ public:
   struct Level
   {
     int Size[2] = { 0, 0 };
-    double Weight = 1.0;    ///< w_i, vtkImageBloom::GetLevelWeight(i)
+    double Weight = 1.0;    ///< w_i, vtkBloomParameters::GetLevelWeight(i)
     std::vector<Term> Down; ///< from the previous level; empty for level 0
     bool Karis = false;     ///< combine Down with the Karis average
     bool Blur = false;      ///< false when the level does not contribute or nothing blurs
@@ -55,25 +58,17 @@ public:
     Term Full;              ///< DIRECT: this level to the full image size
   };
 
-  /// Build the chain for a width x height image (both >= 1) from a filter's parameters.
-  void Build(vtkImageBloom* parameters, int width, int height);
+  /// Build the chain for a width x height image (both >= 1) from the bloom's parameters.
+  void Build(vtkBloomParameters* parameters, int width, int height);
 
   int Width = 0;
   int Height = 0;
   bool SourceIsIdentity = true; ///< StartLevel 0: the bright pass reads the image itself
   Term Source;                  ///< full size to level 0 (bilinear fetch)
-  int ThresholdMode = 0;
-  double Threshold = 1.0;
-  double Knee = 0.5;
-  double ClampLuminance = 0.0;
   std::vector<Level> Levels;
   int AccumulateMode = 0;
   bool FinalIsIdentity = true; ///< CASCADE with StartLevel 0
   Term Final;                  ///< CASCADE: level 0 to the full size
-  int CompositeMode = 0;
-  double Strength = 1.0;
-  double Keep = 1.0; ///< weight of the input in the composite
-  double Tint[3] = { 1.0, 1.0, 1.0 };
 };
 
 #endif

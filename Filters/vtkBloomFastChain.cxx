@@ -7,6 +7,7 @@
 #include "vtkBloomImageOps.h"
 #include "vtkBloomKernels.h"
 #include "vtkBloomLinearOperator.h"
+#include "vtkBloomParameters.h"
 #include "vtkDataArray.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"
@@ -37,8 +38,8 @@
 
 namespace
 {
-const int AccumulateDirect = 1; // vtkImageBloom::DIRECT
-const int CompositeLerp = 1;    // vtkImageBloom::LERP
+const int AccumulateDirect = vtkBloomParameters::DIRECT;
+const int CompositeLerp = vtkBloomParameters::LERP;
 const float FloatMax = std::numeric_limits<float>::max();
 
 // A sample sanitized: NaN 0, +-Inf the finite extremes of T.
@@ -331,7 +332,7 @@ void vtkBloomFastChain::Internals::UpdateBlurFFT(const vtkBloomFastChainParamete
   this->FFTMode = p.ConvolutionMode;
   this->BlurFFT.clear();
   this->BlurFFT.resize(p.Chain->Levels.size());
-  if (p.ConvolutionMode == vtkBloomFastChain::CONVOLUTION_DIRECT)
+  if (p.ConvolutionMode == vtkBloomParameters::CONVOLUTION_DIRECT)
   {
     return;
   }
@@ -351,7 +352,7 @@ void vtkBloomFastChain::Internals::UpdateBlurFFT(const vtkBloomFastChainParamete
       {
         continue;
       }
-      if (p.ConvolutionMode == vtkBloomFastChain::CONVOLUTION_FFT ||
+      if (p.ConvolutionMode == vtkBloomParameters::CONVOLUTION_FFT ||
         fft->Cost() <
           vtkBloomFFTConvolution::DirectCost(*ops[a]) / vtkBloomFastChain::DirectSpeedup)
       {

@@ -83,8 +83,8 @@ struct vtkBloomFastChainParameters
   int DownsampleKernel = 0;
   bool KarisAverage = false;
   int BlurIterations = 1;
-  int AccumulateMode = 0; ///< vtkImageBloom::CASCADE or DIRECT
-  int CompositeMode = 0;  ///< vtkImageBloom::ADDITIVE or LERP
+  int AccumulateMode = 0; ///< vtkBloomParameters::CASCADE or DIRECT
+  int CompositeMode = 0;  ///< vtkBloomParameters::ADDITIVE or LERP
   double Strength = 1.0;
   double Tint[3] = { 1.0, 1.0, 1.0 };
   bool SanitizeNonFinite = true;
@@ -94,7 +94,7 @@ struct vtkBloomFastChainParameters
   bool SkipDisabled = true;
   /// Run the passes compiled for AVX2 when the CPU has it (same bits as the baseline build).
   bool UseAVX2 = true;
-  /// How the level blurs run: vtkImageBloom::CONVOLUTION_AUTOMATIC, _DIRECT or _FFT.
+  /// How the level blurs run: vtkBloomParameters::CONVOLUTION_AUTOMATIC, _DIRECT or _FFT.
   int ConvolutionMode = 0;
   /// When Chain was built: the FFT convolutions of its blurs are kept until it changes.
   vtkMTimeType ChainTime = 0;
@@ -115,14 +115,6 @@ struct vtkBloomFastChainReport
 class vtkBloomFastChain
 {
 public:
-  /// ConvolutionMode values, the same as vtkImageBloom's.
-  enum ConvolutionModes
-  {
-    CONVOLUTION_AUTOMATIC = 0,
-    CONVOLUTION_DIRECT = 1,
-    CONVOLUTION_FFT = 2
-  };
-
   /**
    * How many times less a tap of the fused direct blur costs than the unit of
    * vtkBloomFFTConvolution's cost model. Measured at 1080p (scripts/benchmark.sh,

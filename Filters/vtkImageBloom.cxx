@@ -36,46 +36,10 @@ vtkStandardNewMacro(vtkImageBloom);
 //------------------------------------------------------------------------------
 vtkImageBloom::vtkImageBloom()
 {
-  this->ThresholdMode = vtkImageBloomThreshold::SMOOTHSTEP_KNEE;
-  this->Threshold = 1.0;
-  this->Knee = 0.5;
-  this->ClampLuminance = VTK_FLOAT_MAX;
-  this->StartLevel = 1;
-  this->NumberOfLevels = 5;
-  this->LimitLevelsToImageSize = false;
-  this->DownsampleKernel = vtkImagePyramidDown::JIMENEZ13;
-  this->KarisAverage = false;
-  this->BlurKernel = BLUR_GAUSSIAN;
-  this->BlurStandardDeviation = 1.0;
-  this->BlurRadius = -1;
-  this->BlurGaussianKind = vtkBloomKernels::GAUSSIAN_SAMPLED;
-  this->BlurHalfKernel = { 1.0 };
-  this->BlurTapSpacing = 1.0;
-  this->BlurIterations = 1;
-  this->UpsampleKernel = vtkImagePyramidUp::TENT;
-  this->AccumulateMode = CASCADE;
-  this->CompositeMode = ADDITIVE;
-  this->Strength = 1.0;
-  this->Tint[0] = this->Tint[1] = this->Tint[2] = 1.0;
+  this->Parameters = vtkSmartPointer<vtkBloomParameters>::New();
   this->ComputeStatistics = true;
-  this->SanitizeNonFinite = true;
   this->ExecutionMode = FAST;
-  this->SkipEmptyBloom = true;
-  this->SkipDisabledEffects = true;
-  this->TrimPyramid = true;
-  this->RestrictToBrightRegion = true;
   this->UseAVX2 = true;
-  this->ConvolutionMode = CONVOLUTION_AUTOMATIC;
-  this->BloomMode = BLOOM_PYRAMID;
-  this->PSFType = PSF_AIRY;
-  this->AiryRadius = 3.0;
-  this->Wavelengths[0] = 610.0;
-  this->Wavelengths[1] = 550.0;
-  this->Wavelengths[2] = 465.0;
-  this->PSFGaussianSigmas = { 1.5, 6.0, 24.0 };
-  this->PSFGaussianWeights = { 0.6, 0.3, 0.1 };
-  this->PSFRadius = -1;
-  this->PSFBorderMode = 1;
   this->LastRunWasFast = false;
   this->LastBloomSkipped = false;
   this->LastPassedThrough = false;
@@ -114,162 +78,38 @@ void vtkImageBloom::ReleaseWorkspace()
 }
 
 //------------------------------------------------------------------------------
-bool vtkImageBloom::BloomIsDisabled(int colours, size_t levels) const
+void vtkImageBloom::SetParameters(vtkBloomParameters* parameters)
 {
-  double tint[3] = { this->Tint[0], this->Tint[1], this->Tint[2] };
-  if (colours == 1)
+  if (parameters && parameters != this->Parameters)
   {
-    tint[0] = vtkBloomKernels::LuminanceR * tint[0] + vtkBloomKernels::LuminanceG * tint[1] +
-      vtkBloomKernels::LuminanceB * tint[2];
-  }
-  bool zeroTerm = true;
-  for (int c = 0; c < colours; ++c)
-  {
-    zeroTerm &= this->Strength * tint[c] == 0.0;
-  }
-  bool zeroWeights = true;
-  for (size_t i = 0; i < levels; ++i)
-  {
-    zeroWeights &= this->GetLevelWeight(static_cast<int>(i)) == 0.0;
-  }
-  return zeroTerm || (levels > 0 && zeroWeights);
-}
-
-//------------------------------------------------------------------------------
-void vtkImageBloom::SetBlurHalfKernel(int n, const double* weights)
-{
-  this->SetBlurHalfKernel(std::vector<double>(weights, weights + std::max(n, 0)));
-}
-
-//------------------------------------------------------------------------------
-void vtkImageBloom::SetBlurHalfKernel(const std::vector<double>& weights)
-{
-  if (weights != this->BlurHalfKernel)
-  {
-    this->BlurHalfKernel = weights;
+    this->Parameters = parameters;
     this->Modified();
   }
 }
 
 //------------------------------------------------------------------------------
-std::vector<double> vtkImageBloom::GetEffectiveBlurHalfKernel() const
+bool vtkImageBloom::SetPreset(const char* name)
 {
-  if (this->BlurKernel == BLUR_CUSTOM)
+  const std::string error = vtkBloomParameters::CheckPresetName(name);
+  if (!error.empty())
   {
-    return this->BlurHalfKernel.empty() ? std::vector<double>{ 1.0 } : this->BlurHalfKernel;
+    vtkErrorMacro(<< error);
+    return false;
   }
-  const int radius = this->BlurRadius >= 0
-    ? this->BlurRadius
-    : vtkBloomKernels::RadiusForSigma(this->BlurStandardDeviation, 3.0);
-  return vtkBloomKernels::GaussianHalfKernel(
-    this->BlurStandardDeviation, radius, this->BlurGaussianKind);
+  return this->Parameters->SetPreset(name);
 }
 
 //------------------------------------------------------------------------------
-void vtkImageBloom::SetLevelWeight(int level, double weight)
+void vtkImageBloom::CopyParameters(vtkImageBloom* source)
 {
-  if (level < 0 || level >= 1024)
+  if (!source || source == this)
   {
-    vtkErrorMacro(<< "Level index " << level << " out of range [0, 1024).");
     return;
   }
-  if (static_cast<int>(this->LevelWeights.size()) <= level)
-  {
-    this->LevelWeights.resize(level + 1, 1.0);
-  }
-  if (this->LevelWeights[level] != weight)
-  {
-    this->LevelWeights[level] = weight;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-double vtkImageBloom::GetLevelWeight(int level) const
-{
-  return level >= 0 && level < static_cast<int>(this->LevelWeights.size())
-    ? this->LevelWeights[level]
-    : 1.0;
-}
-
-//------------------------------------------------------------------------------
-void vtkImageBloom::SetLevelWeights(int n, const double* weights)
-{
-  this->SetLevelWeights(std::vector<double>(weights, weights + std::max(n, 0)));
-}
-
-//------------------------------------------------------------------------------
-void vtkImageBloom::SetLevelWeights(const std::vector<double>& weights)
-{
-  if (weights != this->LevelWeights)
-  {
-    this->LevelWeights = weights;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-std::vector<std::pair<int, int>> vtkImageBloom::ComputeLevelSizes(int width, int height) const
-{
-  std::vector<std::pair<int, int>> sizes;
-  if (width <= 0 || height <= 0)
-  {
-    return sizes;
-  }
-  int deepest = this->StartLevel + this->NumberOfLevels - 1;
-  if (this->LimitLevelsToImageSize)
-  {
-    // A full mip chain has floor(log2(max(W, H))) + 1 levels, counting level 0.
-    int maxLevel = 0;
-    for (int n = std::max(width, height); n > 1; n /= 2)
-    {
-      ++maxLevel;
-    }
-    deepest = std::min(deepest, maxLevel);
-  }
-  int w = width, h = height;
-  for (int k = 0; k <= deepest; ++k)
-  {
-    if (k >= this->StartLevel)
-    {
-      sizes.emplace_back(w, h);
-    }
-    w = vtkImagePyramidDown::HalvedSize(w);
-    h = vtkImagePyramidDown::HalvedSize(h);
-  }
-  return sizes;
-}
-
-//------------------------------------------------------------------------------
-bool vtkImageBloom::CheckParameters()
-{
-  const double values[4] = { this->Threshold, this->Strength, this->Tint[0] + this->Tint[1],
-    this->Tint[2] };
-  for (double v : values)
-  {
-    if (!std::isfinite(v))
-    {
-      vtkErrorMacro(<< "Threshold, Strength and Tint must be finite.");
-      return false;
-    }
-  }
-  for (double w : this->GetEffectiveBlurHalfKernel())
-  {
-    if (!std::isfinite(w))
-    {
-      vtkErrorMacro(<< "The blur kernel has a non-finite weight.");
-      return false;
-    }
-  }
-  for (double w : this->LevelWeights)
-  {
-    if (!std::isfinite(w))
-    {
-      vtkErrorMacro(<< "Level weights must be finite.");
-      return false;
-    }
-  }
-  return true;
+  this->Parameters->DeepCopy(source->Parameters);
+  this->SetExecutionMode(source->ExecutionMode);
+  this->SetUseAVX2(source->UseAVX2);
+  this->SetComputeStatistics(source->ComputeStatistics);
 }
 
 //------------------------------------------------------------------------------
@@ -308,7 +148,7 @@ int vtkImageBloom::RequestData(
     return 0;
   }
   vtkBloomMatchOutputScalars(outInfo, input);
-  if (this->BloomMode == BLOOM_PSF)
+  if (this->Parameters->GetBloomMode() == BLOOM_PSF)
   {
     return this->ExecutePSF(input, outInfo, output);
   }
@@ -364,8 +204,10 @@ bool vtkImageBloom::CheckInput(vtkImageData* input)
                   << input->GetScalarTypeAsString() << " with " << nc << " components.");
     return false;
   }
-  if (!this->CheckParameters())
+  const std::string invalid = this->Parameters->Validate();
+  if (!invalid.empty())
   {
+    vtkErrorMacro(<< invalid);
     return false;
   }
   int inExt[6];
@@ -382,11 +224,11 @@ bool vtkImageBloom::CheckInput(vtkImageData* input)
 void vtkImageBloom::UpdateChain(int width, int height)
 {
   // The operators of every step, shared by both paths here and by vtkBloomPass; built again
-  // only when a parameter (this filter's MTime) or the size changed.
+  // only when a parameter (this filter's MTime includes its parameters') or the size changed.
   if (this->GetMTime() > this->ChainTime || width != this->ChainSize[0] ||
     height != this->ChainSize[1])
   {
-    this->Chain->Build(this, width, height);
+    this->Chain->Build(this->Parameters, width, height);
     this->ChainTime.Modified();
     this->ChainSize[0] = width;
     this->ChainSize[1] = height;
@@ -402,30 +244,30 @@ bool vtkImageBloom::ExecuteFast(
   const int width = inExt[1] - inExt[0] + 1;
   const int height = inExt[3] - inExt[2] + 1;
   vtkBloomFastChainParameters p;
-  p.ThresholdMode = this->ThresholdMode;
-  p.Threshold = this->Threshold;
-  p.Knee = this->Knee;
-  p.ClampLuminance = this->ClampLuminance;
+  p.ThresholdMode = this->Parameters->GetThresholdMode();
+  p.Threshold = this->Parameters->GetThreshold();
+  p.Knee = this->Parameters->GetKnee();
+  p.ClampLuminance = this->Parameters->GetClampLuminance();
   p.Chain = this->Chain;
   p.LevelSizes = this->ComputeLevelSizes(width, height);
   for (size_t i = 0; i < p.LevelSizes.size(); ++i)
   {
     p.LevelWeights.push_back(this->GetLevelWeight(static_cast<int>(i)));
   }
-  p.DownsampleKernel = this->DownsampleKernel;
-  p.KarisAverage = this->KarisAverage;
-  p.BlurIterations = this->BlurIterations;
-  p.AccumulateMode = this->AccumulateMode;
-  p.CompositeMode = this->CompositeMode;
-  p.Strength = this->Strength;
-  std::copy(this->Tint, this->Tint + 3, p.Tint);
-  p.SanitizeNonFinite = this->SanitizeNonFinite;
-  p.SkipEmpty = this->SkipEmptyBloom;
-  p.TrimPyramid = this->TrimPyramid;
-  p.RestrictToBrightRegion = this->RestrictToBrightRegion;
-  p.SkipDisabled = this->SkipDisabledEffects;
+  p.DownsampleKernel = this->Parameters->GetDownsampleKernel();
+  p.KarisAverage = this->Parameters->GetKarisAverage();
+  p.BlurIterations = this->Parameters->GetBlurIterations();
+  p.AccumulateMode = this->Parameters->GetAccumulateMode();
+  p.CompositeMode = this->Parameters->GetCompositeMode();
+  p.Strength = this->Parameters->GetStrength();
+  std::copy(this->Parameters->GetTint(), this->Parameters->GetTint() + 3, p.Tint);
+  p.SanitizeNonFinite = this->Parameters->GetSanitizeNonFinite();
+  p.SkipEmpty = this->Parameters->GetSkipEmptyBloom();
+  p.TrimPyramid = this->Parameters->GetTrimPyramid();
+  p.RestrictToBrightRegion = this->Parameters->GetRestrictToBrightRegion();
+  p.SkipDisabled = this->Parameters->GetSkipDisabledEffects();
   p.UseAVX2 = this->UseAVX2;
-  p.ConvolutionMode = this->ConvolutionMode;
+  p.ConvolutionMode = this->Parameters->GetConvolutionMode();
   p.ChainTime = this->ChainTime.GetMTime();
   if (!vtkBloomFastChain::Supports(p, input))
   {
@@ -480,8 +322,9 @@ void vtkImageBloom::ComputeOutputStatistics(
   this->EnergyOut = out.Energy;
   this->PeakLuminanceIn = in.Peak;
   this->PeakLuminanceOut = out.Peak;
-  this->NumberOfBrightPixels = vtkBloomCountBrightPixels(
-    input, ext, this->ThresholdMode, this->Threshold, this->Knee, this->ClampLuminance);
+  this->NumberOfBrightPixels = vtkBloomCountBrightPixels(input, ext,
+    this->Parameters->GetThresholdMode(), this->Parameters->GetThreshold(),
+    this->Parameters->GetKnee(), this->Parameters->GetClampLuminance());
   this->NumberOfLevelsUsed = levelsUsed;
 
   vtkFieldData* fd = output->GetFieldData();
@@ -505,78 +348,11 @@ void vtkImageBloom::ComputeOutputStatistics(
 void vtkImageBloom::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
-  auto list = [&os](const std::vector<double>& values)
-  {
-    os << "(";
-    for (size_t i = 0; i < values.size(); ++i)
-    {
-      os << (i ? ", " : "") << values[i];
-    }
-    os << ")\n";
-  };
-  // An enum's name, or its number where it has none.
-  auto named = [](int value, std::initializer_list<const char*> names) -> std::string
-  {
-    return value >= 0 && value < static_cast<int>(names.size()) ? *(names.begin() + value)
-                                                                : std::to_string(value);
-  };
-  os << indent << "ThresholdMode: " << vtkImageBloomThreshold::GetModeName(this->ThresholdMode)
-     << "\n";
-  os << indent << "Threshold: " << this->Threshold << "\n";
-  os << indent << "Knee: " << this->Knee << "\n";
-  os << indent << "ClampLuminance: " << this->ClampLuminance << "\n";
-  os << indent << "StartLevel: " << this->StartLevel << "\n";
-  os << indent << "NumberOfLevels: " << this->NumberOfLevels << "\n";
-  os << indent << "LimitLevelsToImageSize: " << (this->LimitLevelsToImageSize ? "On" : "Off")
-     << "\n";
-  os << indent
-     << "DownsampleKernel: " << named(this->DownsampleKernel, { "Jimenez13", "Box", "Binomial" })
-     << "\n";
-  os << indent << "KarisAverage: " << (this->KarisAverage ? "On" : "Off") << "\n";
-  os << indent << "BlurKernel: " << (this->BlurKernel == BLUR_CUSTOM ? "Custom" : "Gaussian")
-     << "\n";
-  os << indent << "BlurStandardDeviation: " << this->BlurStandardDeviation << "\n";
-  os << indent << "BlurRadius: " << this->BlurRadius << "\n";
-  os << indent << "BlurGaussianKind: "
-     << named(this->BlurGaussianKind, { "Sampled", "Integrated", "Discrete" }) << "\n";
-  os << indent << "BlurHalfKernel: ";
-  list(this->BlurHalfKernel);
-  os << indent << "BlurTapSpacing: " << this->BlurTapSpacing << "\n";
-  os << indent << "BlurIterations: " << this->BlurIterations << "\n";
-  os << indent << "UpsampleKernel: " << (this->UpsampleKernel ? "Bilinear" : "Tent") << "\n";
-  os << indent << "AccumulateMode: " << (this->AccumulateMode == DIRECT ? "Direct" : "Cascade")
-     << "\n";
-  os << indent << "LevelWeights: ";
-  list(this->LevelWeights);
-  os << indent << "CompositeMode: " << (this->CompositeMode == LERP ? "Lerp" : "Additive") << "\n";
-  os << indent << "Strength: " << this->Strength << "\n";
-  os << indent << "Tint: (" << this->Tint[0] << ", " << this->Tint[1] << ", " << this->Tint[2]
-     << ")\n";
+  os << indent << "Parameters:\n";
+  this->Parameters->PrintSelf(os, indent.GetNextIndent());
   os << indent << "ComputeStatistics: " << (this->ComputeStatistics ? "On" : "Off") << "\n";
-  os << indent << "SanitizeNonFinite: " << (this->SanitizeNonFinite ? "On" : "Off") << "\n";
   os << indent << "ExecutionMode: " << (this->ExecutionMode == FAST ? "Fast" : "Reference") << "\n";
-  os << indent << "SkipEmptyBloom: " << (this->SkipEmptyBloom ? "On" : "Off") << "\n";
-  os << indent << "SkipDisabledEffects: " << (this->SkipDisabledEffects ? "On" : "Off") << "\n";
-  os << indent << "TrimPyramid: " << (this->TrimPyramid ? "On" : "Off") << "\n";
-  os << indent << "RestrictToBrightRegion: " << (this->RestrictToBrightRegion ? "On" : "Off")
-     << "\n";
   os << indent << "UseAVX2: " << (this->UseAVX2 ? "On" : "Off") << "\n";
-  os << indent
-     << "ConvolutionMode: " << named(this->ConvolutionMode, { "Automatic", "Direct", "FFT" })
-     << "\n";
-  os << indent << "BloomMode: " << (this->BloomMode == BLOOM_PSF ? "PSF" : "Pyramid") << "\n";
-  os << indent << "PSFType: " << named(this->PSFType, { "Airy", "Gaussians", "Image" }) << "\n";
-  os << indent << "AiryRadius: " << this->AiryRadius << "\n";
-  os << indent << "Wavelengths: (" << this->Wavelengths[0] << ", " << this->Wavelengths[1] << ", "
-     << this->Wavelengths[2] << ")\n";
-  os << indent << "PSFGaussianSigmas: ";
-  list(this->PSFGaussianSigmas);
-  os << indent << "PSFGaussianWeights: ";
-  list(this->PSFGaussianWeights);
-  os << indent << "PSFImage: " << this->PSFImage.Get() << "\n";
-  os << indent << "PSFRadius: " << this->PSFRadius << "\n";
-  os << indent << "PSFBorderMode: " << named(this->PSFBorderMode, { "Clamp", "Reflect", "Zero" })
-     << "\n";
   os << indent << "EnergyIn: " << this->EnergyIn << "\n";
   os << indent << "EnergyOut: " << this->EnergyOut << "\n";
   os << indent << "NumberOfBrightPixels: " << this->NumberOfBrightPixels << "\n";
@@ -588,6 +364,7 @@ void vtkImageBloom::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastPassedThrough: " << (this->LastPassedThrough ? "On" : "Off") << "\n";
   os << indent << "LastLevelsBuilt: " << this->LastLevelsBuilt << "\n";
   os << indent << "LastWorkspaceBytes: " << this->LastWorkspaceBytes << "\n";
+  os << indent << "LastRunUsedAVX2: " << (this->LastRunUsedAVX2 ? "On" : "Off") << "\n";
   os << indent << "LastFFTBlurs: " << this->LastFFTBlurs << "\n";
   os << indent << "ChainSize: (" << this->ChainSize[0] << ", " << this->ChainSize[1] << ")\n";
 }

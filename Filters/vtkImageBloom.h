@@ -2,68 +2,15 @@
  * @class   vtkImageBloom
  * @brief   HDR bloom in one filter: bright pass, pyramid, per-level blur, accumulate, composite.
  *
- * With I the input colour (RGB, or the single value of 1-2 component images):
- *
- * 1. Bright pass. B_s = threshold(bilinear(I) at level s), where s = StartLevel and level k has
- *    size max(1, floor(n / 2)) applied k times per axis (level 0 is the input itself). The
- *    fetch comes first and the threshold second, as a fragment shader does it. The threshold
- *    is vtkImageBloomThreshold::BrightPass with ThresholdMode, Threshold, Knee and
- *    ClampLuminance.
- * 2. Pyramid. B_{k+1} = down(B_k) with DownsampleKernel (see vtkImagePyramidDown), taken
- *    before any blur, for NumberOfLevels levels. KarisAverage applies to the first downsample
- *    only. With LimitLevelsToImageSize on, levels deeper than floor(log2(max(W, H))) are
- *    dropped, as a hardware mip chain ends there (when none is left the bloom is black);
- *    otherwise 1x1 levels repeat.
- * 3. Blur. Each level is blurred BlurIterations times, horizontally then vertically, by a
- *    symmetric kernel whose taps are BlurTapSpacing level pixels apart (fractional spacing means
- *    bilinear fetches), clamped at the edges. The kernel is a Gaussian (BLUR_GAUSSIAN:
- *    BlurStandardDeviation in level pixels, BlurRadius taps, BlurGaussianKind) or a given half
- *    kernel (BLUR_CUSTOM: SetBlurHalfKernel). Levels whose weight is 0 are not blurred.
- * 4. Accumulate, with w_i = GetLevelWeight(i) (i counts from the first level):
- *    - CASCADE: A_last = w_last Bb_last, A_i = up(A_{i+1}) + w_i Bb_i, with UpsampleKernel
- *      TENT or BILINEAR (see vtkImagePyramidUp); the bloom is bilinear(A_first) at full size.
- *    - DIRECT: the bloom is sum_i w_i bilinear(Bb_i) at full size.
- * 5. Composite, with S = Strength and t = Tint:
- *    - ADDITIVE: out = I + S t bloom.
- *    - LERP: out = (1 - S) I + S t bloom (energy-conserving when the weights sum to 1).
- *    Alpha is copied from the input unchanged.
- *
- * PSF mode (BloomMode PSF) replaces steps 2 to 4 by one convolution with a point-spread
- * function, as Unreal's convolution bloom and Blender's glare do: bloom = PSF * B_0, where B_0 is
- * the bright pass at full resolution (StartLevel, the pyramid, blur and accumulation parameters
- * are not used). The PSF (PSFType) is an Airy diffraction pattern (AiryRadius: the first dark
- * ring's radius in pixels at the green wavelength; each colour channel's pattern is scaled by
- * its wavelength over the green one, Wavelengths in nm), a sum of Gaussians
- * (SetPSFGaussians) or a measured PSF image (SetPSFImage: odd square size, centred; one
- * component for all channels, or one per channel). Each channel's PSF is truncated at
- * PSFRadius (automatic by default: 12 first-ring radii of the reddest channel for Airy, 4 of the
- * widest sigma for Gaussians) and normalized to sum 1. The convolution scatters each bright
- * sample through the PSF and folds what leaves the image back in by half-sample reflection
- * (PSFBorderMode REFLECT, the default) or drops it (ZERO). With REFLECT the bloom's energy in
- * each channel equals the bright pass's (tested to 1e-6 relative), so the composite adds exactly
- * Strength times the bright pass's energy. It runs through a two-dimensional FFT in single
- * precision (vtkBloomPSF), in both execution modes, on 2-D images. The PSFs, FFTW's plans and
- * the PSFs' spectra are kept until a parameter, the PSF image or the image size changes.
- *
- * Presets (SetPreset) reproduce the seed systems exactly as ../shared/seeds/PRESETS.md reads
- * them, with the seeds' known defects fixed:
- * - "webgpu-market" (seed 000): SMOOTHSTEP_KNEE, T 0.8, knee 0.5, start level 1, 5 levels,
- *   JIMENEZ13, 9-tap blur with spacing 0.5, TENT cascade, ADDITIVE, strength 1. Deviations: the
- *   13-tap weights sum to 1 (the seed's sum to 1.375); every level is accumulated (the seed
- *   throws away levels 2 and deeper); knee 0 is the step lum >= T (the seed's smoothstep(t, t,
- *   x) is undefined).
- * - "mip-atlas" (seed 001): no threshold, start level 0, LODs 2..8 (weights 0, 0, then 0.14 x
- *   1, 1, 1, .8, .8, .6, .4), exact area-weighted BOX mip chain limited to the image size, 7x7
- *   binomial blur, DIRECT accumulation, LERP with strength 0.52. Deviations: odd sizes keep
- *   their last row and column (the seed's 2 x dst source size drops them); no RGBA8
- *   pow(x/128, 0.25) atlas encoding, so nothing above 128 is clipped; no darkness boost and no
- *   tone mapping. By design this darkens flat regions: a constant c becomes 0.88768 c.
- * - "ping-pong" (seed 002): HARD_LUMINANCE at T 1 (strict), full resolution, the 13-tap blur
- *   repeated 32 times, ADDITIVE strength 1. Deviation: the 7 weights are divided by their
- *   symmetric sum 1.0179994; the seed's gain compounds to about 3x over 64 passes.
- * - "crt-halfres" (seed 003): PER_CHANNEL at T 0.8, start level 1, one level, 9-tap sampled
- *   Gaussian with sigma 1.8, ADDITIVE strength 1.5. The emission multiplier and the boolean
- *   gate of the seed belong to the scene, not to the filter.
+ * What the bloom computes (the bright pass, pyramid, blur, accumulation and composite, PSF
+ * mode, the presets) is defined by its parameters, a vtkBloomParameters (GetParameters(); see
+ * that class for each step and preset). The filter's own setters for them (SetThreshold,
+ * SetPreset, ...) are shortcuts for GetParameters()->Set...; a vtkBloomPass given the same
+ * parameters (vtkBloomPass::SetParameters) renders the same bloom on the GPU. PSF mode runs
+ * through a two-dimensional FFT in single precision (vtkBloomPSF), in both execution modes, on
+ * 2-D images; with REFLECT borders the bloom's energy in each channel equals the bright pass's
+ * (tested to 1e-6 relative). The PSFs, FFTW's plans and the PSFs' spectra are kept until a
+ * parameter, the PSF image or the image size changes.
  *
  * The bloom reads the whole input (its support is the whole image), so RequestUpdateExtent asks
  * for the whole extent and any requested output piece equals the whole result bit for bit.
@@ -79,7 +26,7 @@
  * double-precision implementation of the steps above, to float32 rounding (tested: relative
  * L2 <= 1e-5 for every preset). Double input (which asks for double precision), KarisAverage
  * and inputs of more than one slice always run REFERENCE.
- * In both modes the bloom term is S t bloom + 0, so a zero term is always +0.
+ * In both modes the bloom term is Strength Tint bloom + 0, so a zero term is always +0.
  *
  * Content-aware work (each part on by default, each exact: the output is bit-identical with
  * it on or off):
@@ -152,13 +99,15 @@
 #ifndef vtkImageBloom_h
 #define vtkImageBloom_h
 
+#include "vtkBloomParameters.h"    // For the parameters and their shortcuts
 #include "vtkFiltersBloomModule.h" // For export macro
 #include "vtkImageAlgorithm.h"
-#include "vtkSmartPointer.h" // For the PSF image
+#include "vtkSmartPointer.h" // For the parameters
 #include "vtkTimeStamp.h"    // For ChainTime
 
-#include <string> // For preset names
-#include <vector> // For level weights
+#include <string>  // For preset names
+#include <utility> // For level sizes
+#include <vector>  // For level weights
 
 struct vtkBloomBuffer;
 struct vtkBloomPSFKernels;
@@ -172,74 +121,207 @@ public:
   vtkTypeMacro(vtkImageBloom, vtkImageAlgorithm);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  enum BlurKernels
-  {
-    BLUR_GAUSSIAN = 0,
-    BLUR_CUSTOM = 1
-  };
-
-  enum AccumulateModes
-  {
-    CASCADE = 0,
-    DIRECT = 1
-  };
-
-  enum CompositeModes
-  {
-    ADDITIVE = 0,
-    LERP = 1
-  };
-
   enum ExecutionModes
   {
     FAST = 0,
     REFERENCE = 1
   };
 
-  enum BloomModes
-  {
-    BLOOM_PYRAMID = 0,
-    BLOOM_PSF = 1
-  };
+  ///@{
+  /**
+   * The bloom's parameters. A filter makes its own; setting another shares it (with a
+   * vtkBloomPass, say) and a null pointer is ignored. Modifying them modifies the filter.
+   */
+  void SetParameters(vtkBloomParameters* parameters);
+  vtkBloomParameters* GetParameters() { return this->Parameters; }
+  ///@}
 
-  enum PSFTypes
-  {
-    PSF_AIRY = 0,
-    PSF_GAUSSIANS = 1,
-    PSF_IMAGE = 2
-  };
+  /**
+   * Copy `source`'s parameters (vtkBloomParameters::DeepCopy) and its execution options
+   * (ExecutionMode, UseAVX2, ComputeStatistics). Modified() is called only
+   * when a value changes, so copying equal parameters does not re-execute.
+   */
+  void CopyParameters(vtkImageBloom* source);
 
   ///@{
-  /// BLOOM_PYRAMID (default: steps 1-5) or BLOOM_PSF (see "PSF mode" in the class description).
-  vtkSetClampMacro(BloomMode, int, BLOOM_PYRAMID, BLOOM_PSF);
-  vtkGetMacro(BloomMode, int);
-  void SetBloomModeToPyramid() { this->SetBloomMode(BLOOM_PYRAMID); }
-  void SetBloomModeToPSF() { this->SetBloomMode(BLOOM_PSF); }
+  /**
+   * The parameters' enums by the names this class gave them before vtkBloomParameters held
+   * them; new code names vtkBloomParameters'.
+   */
+  enum BlurKernels
+  {
+    BLUR_GAUSSIAN = vtkBloomParameters::BLUR_GAUSSIAN,
+    BLUR_CUSTOM = vtkBloomParameters::BLUR_CUSTOM
+  };
+  enum AccumulateModes
+  {
+    CASCADE = vtkBloomParameters::CASCADE,
+    DIRECT = vtkBloomParameters::DIRECT
+  };
+  enum CompositeModes
+  {
+    ADDITIVE = vtkBloomParameters::ADDITIVE,
+    LERP = vtkBloomParameters::LERP
+  };
+  enum BloomModes
+  {
+    BLOOM_PYRAMID = vtkBloomParameters::BLOOM_PYRAMID,
+    BLOOM_PSF = vtkBloomParameters::BLOOM_PSF
+  };
+  enum PSFTypes
+  {
+    PSF_AIRY = vtkBloomParameters::PSF_AIRY,
+    PSF_GAUSSIANS = vtkBloomParameters::PSF_GAUSSIANS,
+    PSF_IMAGE = vtkBloomParameters::PSF_IMAGE
+  };
+  enum ConvolutionModes
+  {
+    CONVOLUTION_AUTOMATIC = vtkBloomParameters::CONVOLUTION_AUTOMATIC,
+    CONVOLUTION_DIRECT = vtkBloomParameters::CONVOLUTION_DIRECT,
+    CONVOLUTION_FFT = vtkBloomParameters::CONVOLUTION_FFT
+  };
   ///@}
 
   ///@{
-  /// PSF mode: the PSF's kind, PSF_AIRY (default), PSF_GAUSSIANS or PSF_IMAGE.
-  vtkSetClampMacro(PSFType, int, PSF_AIRY, PSF_IMAGE);
-  vtkGetMacro(PSFType, int);
-  /// Airy: radius of the first dark ring at the green wavelength, in pixels. Default 3.
-  vtkSetClampMacro(AiryRadius, double, 0.1, 1.0e3);
-  vtkGetMacro(AiryRadius, double);
-  /// Airy: the wavelengths of the red, green and blue channels in nm. Default (610, 550, 465).
-  vtkSetVector3Macro(Wavelengths, double);
-  vtkGetVector3Macro(Wavelengths, double);
-  /// Gaussians: standard deviations (pixels) and weights. Default (1.5, 6, 24) x (0.6, 0.3, 0.1).
-  void SetPSFGaussians(const std::vector<double>& sigmas, const std::vector<double>& weights);
-  const std::vector<double>& GetPSFGaussianSigmas() const { return this->PSFGaussianSigmas; }
-  const std::vector<double>& GetPSFGaussianWeights() const { return this->PSFGaussianWeights; }
-  /// Image: a measured PSF (float or double, odd square size, centred, non-negative).
-  void SetPSFImage(vtkImageData* image);
-  vtkImageData* GetPSFImage();
-  /// Truncation radius in pixels; -1 (default) chooses it (see the class description).
-  vtkSetClampMacro(PSFRadius, int, -1, 2048);
-  vtkGetMacro(PSFRadius, int);
-  /// REFLECT (1, default: energy-conserving) or ZERO (2), as vtkImageSeparableGaussian's modes.
-  vtkSetClampMacro(PSFBorderMode, int, 1, 2);
-  vtkGetMacro(PSFBorderMode, int);
+  /**
+   * Shortcuts for the parameters' accessors (GetParameters()->...), documented in
+   * vtkBloomParameters.
+   */
+  void SetBloomMode(int v) { this->Parameters->SetBloomMode(v); }
+  int GetBloomMode() { return this->Parameters->GetBloomMode(); }
+  void SetPSFType(int v) { this->Parameters->SetPSFType(v); }
+  int GetPSFType() { return this->Parameters->GetPSFType(); }
+  void SetAiryRadius(double v) { this->Parameters->SetAiryRadius(v); }
+  double GetAiryRadius() { return this->Parameters->GetAiryRadius(); }
+  void SetWavelengths(double a, double b, double c) { this->Parameters->SetWavelengths(a, b, c); }
+  void SetWavelengths(const double v[3]) { this->Parameters->SetWavelengths(v[0], v[1], v[2]); }
+  double* GetWavelengths() VTK_SIZEHINT(3) { return this->Parameters->GetWavelengths(); }
+  void GetWavelengths(double v[3]) { this->Parameters->GetWavelengths(v); }
+  void SetPSFRadius(int v) { this->Parameters->SetPSFRadius(v); }
+  int GetPSFRadius() { return this->Parameters->GetPSFRadius(); }
+  void SetPSFBorderMode(int v) { this->Parameters->SetPSFBorderMode(v); }
+  int GetPSFBorderMode() { return this->Parameters->GetPSFBorderMode(); }
+  void SetThresholdMode(int v) { this->Parameters->SetThresholdMode(v); }
+  int GetThresholdMode() { return this->Parameters->GetThresholdMode(); }
+  void SetThreshold(double v) { this->Parameters->SetThreshold(v); }
+  double GetThreshold() { return this->Parameters->GetThreshold(); }
+  void SetKnee(double v) { this->Parameters->SetKnee(v); }
+  double GetKnee() { return this->Parameters->GetKnee(); }
+  void SetClampLuminance(double v) { this->Parameters->SetClampLuminance(v); }
+  double GetClampLuminance() { return this->Parameters->GetClampLuminance(); }
+  void SetStartLevel(int v) { this->Parameters->SetStartLevel(v); }
+  int GetStartLevel() { return this->Parameters->GetStartLevel(); }
+  void SetNumberOfLevels(int v) { this->Parameters->SetNumberOfLevels(v); }
+  int GetNumberOfLevels() { return this->Parameters->GetNumberOfLevels(); }
+  void SetLimitLevelsToImageSize(bool v) { this->Parameters->SetLimitLevelsToImageSize(v); }
+  bool GetLimitLevelsToImageSize() { return this->Parameters->GetLimitLevelsToImageSize(); }
+  void LimitLevelsToImageSizeOn() { this->Parameters->LimitLevelsToImageSizeOn(); }
+  void LimitLevelsToImageSizeOff() { this->Parameters->LimitLevelsToImageSizeOff(); }
+  void SetDownsampleKernel(int v) { this->Parameters->SetDownsampleKernel(v); }
+  int GetDownsampleKernel() { return this->Parameters->GetDownsampleKernel(); }
+  void SetKarisAverage(bool v) { this->Parameters->SetKarisAverage(v); }
+  bool GetKarisAverage() { return this->Parameters->GetKarisAverage(); }
+  void KarisAverageOn() { this->Parameters->KarisAverageOn(); }
+  void KarisAverageOff() { this->Parameters->KarisAverageOff(); }
+  void SetBlurKernel(int v) { this->Parameters->SetBlurKernel(v); }
+  int GetBlurKernel() { return this->Parameters->GetBlurKernel(); }
+  void SetBlurStandardDeviation(double v) { this->Parameters->SetBlurStandardDeviation(v); }
+  double GetBlurStandardDeviation() { return this->Parameters->GetBlurStandardDeviation(); }
+  void SetBlurRadius(int v) { this->Parameters->SetBlurRadius(v); }
+  int GetBlurRadius() { return this->Parameters->GetBlurRadius(); }
+  void SetBlurGaussianKind(int v) { this->Parameters->SetBlurGaussianKind(v); }
+  int GetBlurGaussianKind() { return this->Parameters->GetBlurGaussianKind(); }
+  void SetBlurTapSpacing(double v) { this->Parameters->SetBlurTapSpacing(v); }
+  double GetBlurTapSpacing() { return this->Parameters->GetBlurTapSpacing(); }
+  void SetBlurIterations(int v) { this->Parameters->SetBlurIterations(v); }
+  int GetBlurIterations() { return this->Parameters->GetBlurIterations(); }
+  void SetUpsampleKernel(int v) { this->Parameters->SetUpsampleKernel(v); }
+  int GetUpsampleKernel() { return this->Parameters->GetUpsampleKernel(); }
+  void SetAccumulateMode(int v) { this->Parameters->SetAccumulateMode(v); }
+  int GetAccumulateMode() { return this->Parameters->GetAccumulateMode(); }
+  void SetCompositeMode(int v) { this->Parameters->SetCompositeMode(v); }
+  int GetCompositeMode() { return this->Parameters->GetCompositeMode(); }
+  void SetStrength(double v) { this->Parameters->SetStrength(v); }
+  double GetStrength() { return this->Parameters->GetStrength(); }
+  void SetTint(double a, double b, double c) { this->Parameters->SetTint(a, b, c); }
+  void SetTint(const double v[3]) { this->Parameters->SetTint(v[0], v[1], v[2]); }
+  double* GetTint() VTK_SIZEHINT(3) { return this->Parameters->GetTint(); }
+  void GetTint(double v[3]) { this->Parameters->GetTint(v); }
+  void SetConvolutionMode(int v) { this->Parameters->SetConvolutionMode(v); }
+  int GetConvolutionMode() { return this->Parameters->GetConvolutionMode(); }
+  void SetSkipEmptyBloom(bool v) { this->Parameters->SetSkipEmptyBloom(v); }
+  bool GetSkipEmptyBloom() { return this->Parameters->GetSkipEmptyBloom(); }
+  void SkipEmptyBloomOn() { this->Parameters->SkipEmptyBloomOn(); }
+  void SkipEmptyBloomOff() { this->Parameters->SkipEmptyBloomOff(); }
+  void SetSkipDisabledEffects(bool v) { this->Parameters->SetSkipDisabledEffects(v); }
+  bool GetSkipDisabledEffects() { return this->Parameters->GetSkipDisabledEffects(); }
+  void SkipDisabledEffectsOn() { this->Parameters->SkipDisabledEffectsOn(); }
+  void SkipDisabledEffectsOff() { this->Parameters->SkipDisabledEffectsOff(); }
+  void SetTrimPyramid(bool v) { this->Parameters->SetTrimPyramid(v); }
+  bool GetTrimPyramid() { return this->Parameters->GetTrimPyramid(); }
+  void TrimPyramidOn() { this->Parameters->TrimPyramidOn(); }
+  void TrimPyramidOff() { this->Parameters->TrimPyramidOff(); }
+  void SetRestrictToBrightRegion(bool v) { this->Parameters->SetRestrictToBrightRegion(v); }
+  bool GetRestrictToBrightRegion() { return this->Parameters->GetRestrictToBrightRegion(); }
+  void RestrictToBrightRegionOn() { this->Parameters->RestrictToBrightRegionOn(); }
+  void RestrictToBrightRegionOff() { this->Parameters->RestrictToBrightRegionOff(); }
+  void SetSanitizeNonFinite(bool v) { this->Parameters->SetSanitizeNonFinite(v); }
+  bool GetSanitizeNonFinite() { return this->Parameters->GetSanitizeNonFinite(); }
+  void SanitizeNonFiniteOn() { this->Parameters->SanitizeNonFiniteOn(); }
+  void SanitizeNonFiniteOff() { this->Parameters->SanitizeNonFiniteOff(); }
+  void SetBloomModeToPyramid() { this->Parameters->SetBloomModeToPyramid(); }
+  void SetBloomModeToPSF() { this->Parameters->SetBloomModeToPSF(); }
+  void SetPSFGaussians(const std::vector<double>& sigmas, const std::vector<double>& weights)
+  {
+    this->Parameters->SetPSFGaussians(sigmas, weights);
+  }
+  const std::vector<double>& GetPSFGaussianSigmas() const
+  {
+    return this->Parameters->GetPSFGaussianSigmas();
+  }
+  const std::vector<double>& GetPSFGaussianWeights() const
+  {
+    return this->Parameters->GetPSFGaussianWeights();
+  }
+  void SetPSFImage(vtkImageData* image) { this->Parameters->SetPSFImage(image); }
+  vtkImageData* GetPSFImage() { return this->Parameters->GetPSFImage(); }
+  void SetBlurHalfKernel(int n, const double* weights)
+  {
+    this->Parameters->SetBlurHalfKernel(n, weights);
+  }
+  void SetBlurHalfKernel(const std::vector<double>& weights)
+  {
+    this->Parameters->SetBlurHalfKernel(weights);
+  }
+  const std::vector<double>& GetBlurHalfKernel() const
+  {
+    return this->Parameters->GetBlurHalfKernel();
+  }
+  std::vector<double> GetEffectiveBlurHalfKernel() const
+  {
+    return this->Parameters->GetEffectiveBlurHalfKernel();
+  }
+  void SetLevelWeight(int level, double weight) { this->Parameters->SetLevelWeight(level, weight); }
+  double GetLevelWeight(int level) const { return this->Parameters->GetLevelWeight(level); }
+  void SetLevelWeights(int n, const double* weights)
+  {
+    this->Parameters->SetLevelWeights(n, weights);
+  }
+  void SetLevelWeights(const std::vector<double>& weights)
+  {
+    this->Parameters->SetLevelWeights(weights);
+  }
+  const std::vector<double>& GetLevelWeights() const { return this->Parameters->GetLevelWeights(); }
+  void SetConvolutionModeToAutomatic() { this->Parameters->SetConvolutionModeToAutomatic(); }
+  void SetConvolutionModeToDirect() { this->Parameters->SetConvolutionModeToDirect(); }
+  void SetConvolutionModeToFFT() { this->Parameters->SetConvolutionModeToFFT(); }
+  /// As GetParameters()->SetPreset(name), with an unknown name reported by this filter.
+  bool SetPreset(const char* name);
+  static std::vector<std::string> GetPresetNames() { return vtkBloomParameters::GetPresetNames(); }
+  std::vector<std::pair<int, int>> ComputeLevelSizes(int width, int height) const
+  {
+    return this->Parameters->ComputeLevelSizes(width, height);
+  }
   ///@}
 
   /**
@@ -249,121 +331,8 @@ public:
    */
   std::vector<double> ComputePSF(int channel, int& radius);
 
-  /// Include the PSF image's modification time.
+  /// Include the parameters' modification time.
   vtkMTimeType GetMTime() override;
-
-  /**
-   * Configure every parameter to reproduce a seed system: "webgpu-market", "mip-atlas",
-   * "ping-pong" or "crt-halfres" (see the class description). Returns false, with an error,
-   * for an unknown name and leaves the parameters unchanged.
-   */
-  bool SetPreset(const char* name);
-
-  /// The names SetPreset accepts.
-  static std::vector<std::string> GetPresetNames();
-
-  /**
-   * Copy every parameter of `source` into this filter: the bright pass, pyramid, blur,
-   * composite, PSF (the PSF image is shared, not copied) and execution options, everything a
-   * preset or a setter can change, but not the input, the outputs or the statistics. Modified()
-   * is called only when a value changes, so copying equal parameters does not re-execute.
-   */
-  void CopyParameters(vtkImageBloom* source);
-
-  ///@{
-  /// Bright pass (see vtkImageBloomThreshold). Defaults: SMOOTHSTEP_KNEE, 1, 0.5, off.
-  vtkSetClampMacro(ThresholdMode, int, 0, 4);
-  vtkGetMacro(ThresholdMode, int);
-  vtkSetMacro(Threshold, double);
-  vtkGetMacro(Threshold, double);
-  vtkSetClampMacro(Knee, double, 0.0, 1.0);
-  vtkGetMacro(Knee, double);
-  vtkSetClampMacro(ClampLuminance, double, 0.0, VTK_DOUBLE_MAX);
-  vtkGetMacro(ClampLuminance, double);
-  ///@}
-
-  ///@{
-  /// Pyramid level of the bright pass (0 = full resolution). Default 1 (half resolution).
-  vtkSetClampMacro(StartLevel, int, 0, 16);
-  vtkGetMacro(StartLevel, int);
-  ///@}
-
-  ///@{
-  /// Number of pyramid levels from the start level. Default 5.
-  vtkSetClampMacro(NumberOfLevels, int, 1, 32);
-  vtkGetMacro(NumberOfLevels, int);
-  ///@}
-
-  ///@{
-  /// Drop levels deeper than floor(log2(max(W, H))), like a hardware mip chain. Default off.
-  vtkSetMacro(LimitLevelsToImageSize, bool);
-  vtkGetMacro(LimitLevelsToImageSize, bool);
-  vtkBooleanMacro(LimitLevelsToImageSize, bool);
-  ///@}
-
-  ///@{
-  /// Downsampling kernel: vtkImagePyramidDown::JIMENEZ13 (default), BOX or BINOMIAL.
-  vtkSetClampMacro(DownsampleKernel, int, 0, 2);
-  vtkGetMacro(DownsampleKernel, int);
-  /// Karis average on the first downsample (JIMENEZ13 only). Default off.
-  vtkSetMacro(KarisAverage, bool);
-  vtkGetMacro(KarisAverage, bool);
-  vtkBooleanMacro(KarisAverage, bool);
-  ///@}
-
-  ///@{
-  /// Per-level blur kernel: BLUR_GAUSSIAN (default) or BLUR_CUSTOM.
-  vtkSetClampMacro(BlurKernel, int, BLUR_GAUSSIAN, BLUR_CUSTOM);
-  vtkGetMacro(BlurKernel, int);
-  /// Gaussian sigma in level pixels (default 1), its radius in taps (-1, the default, means
-  /// ceil(3 sigma)) and kind (vtkBloomKernels::GaussianKind, default sampled).
-  vtkSetClampMacro(BlurStandardDeviation, double, 0.0, 1.0e4);
-  vtkGetMacro(BlurStandardDeviation, double);
-  vtkSetClampMacro(BlurRadius, int, -1, 4096);
-  vtkGetMacro(BlurRadius, int);
-  vtkSetClampMacro(BlurGaussianKind, int, 0, 2);
-  vtkGetMacro(BlurGaussianKind, int);
-  /// The custom half kernel (centre first); used as given, not renormalized.
-  void SetBlurHalfKernel(int n, const double* weights);
-  void SetBlurHalfKernel(const std::vector<double>& weights);
-  const std::vector<double>& GetBlurHalfKernel() const { return this->BlurHalfKernel; }
-  /// Distance between blur taps in level pixels. Default 1.
-  vtkSetClampMacro(BlurTapSpacing, double, 0.0, 1.0e4);
-  vtkGetMacro(BlurTapSpacing, double);
-  /// Times the blur is repeated. Default 1.
-  vtkSetClampMacro(BlurIterations, int, 0, 1024);
-  vtkGetMacro(BlurIterations, int);
-  /// The half kernel the blur uses with the current parameters.
-  std::vector<double> GetEffectiveBlurHalfKernel() const;
-  ///@}
-
-  ///@{
-  /// Upsampling kernel for CASCADE: vtkImagePyramidUp::TENT (default) or BILINEAR.
-  vtkSetClampMacro(UpsampleKernel, int, 0, 1);
-  vtkGetMacro(UpsampleKernel, int);
-  /// CASCADE (default) or DIRECT accumulation.
-  vtkSetClampMacro(AccumulateMode, int, CASCADE, DIRECT);
-  vtkGetMacro(AccumulateMode, int);
-  ///@}
-
-  ///@{
-  /// Per-level weights, indexed from the first level. Levels without one weigh 1.
-  void SetLevelWeight(int level, double weight);
-  double GetLevelWeight(int level) const;
-  void SetLevelWeights(int n, const double* weights);
-  void SetLevelWeights(const std::vector<double>& weights);
-  const std::vector<double>& GetLevelWeights() const { return this->LevelWeights; }
-  ///@}
-
-  ///@{
-  /// ADDITIVE (default) or LERP, with Strength (default 1) and an RGB Tint (default white).
-  vtkSetClampMacro(CompositeMode, int, ADDITIVE, LERP);
-  vtkGetMacro(CompositeMode, int);
-  vtkSetMacro(Strength, double);
-  vtkGetMacro(Strength, double);
-  vtkSetVector3Macro(Tint, double);
-  vtkGetVector3Macro(Tint, double);
-  ///@}
 
   ///@{
   /**
@@ -374,51 +343,6 @@ public:
   vtkGetMacro(ExecutionMode, int);
   void SetExecutionModeToFast() { this->SetExecutionMode(FAST); }
   void SetExecutionModeToReference() { this->SetExecutionMode(REFERENCE); }
-  ///@}
-
-  enum ConvolutionModes
-  {
-    CONVOLUTION_AUTOMATIC = 0,
-    CONVOLUTION_DIRECT = 1,
-    CONVOLUTION_FFT = 2
-  };
-
-  ///@{
-  /**
-   * How FAST applies the level blurs (see "Wide blurs" in the class description): AUTOMATIC
-   * (default: per level and axis, the FFT where its modeled cost is lower), DIRECT or FFT
-   * (wherever the blur has a convolution interior). REFERENCE always sums the taps.
-   */
-  vtkSetClampMacro(ConvolutionMode, int, CONVOLUTION_AUTOMATIC, CONVOLUTION_FFT);
-  vtkGetMacro(ConvolutionMode, int);
-  void SetConvolutionModeToAutomatic() { this->SetConvolutionMode(CONVOLUTION_AUTOMATIC); }
-  void SetConvolutionModeToDirect() { this->SetConvolutionMode(CONVOLUTION_DIRECT); }
-  void SetConvolutionModeToFFT() { this->SetConvolutionMode(CONVOLUTION_FFT); }
-  ///@}
-
-  ///@{
-  /**
-   * Content-aware work, each on by default and each exact: the output is bit-identical with
-   * it on or off (see "Content-aware work" in the class description).
-   * - SkipEmptyBloom: no bloom work when the bright pass leaves nothing (both modes).
-   * - SkipDisabledEffects: no bloom work when Strength, the tint or every level weight makes
-   *   the bloom term zero (both modes).
-   * - TrimPyramid: trailing levels of weight 0 are not built (FAST).
-   * - RestrictToBrightRegion: only the region the bright samples can reach is processed
-   *   (FAST).
-   */
-  vtkSetMacro(SkipEmptyBloom, bool);
-  vtkGetMacro(SkipEmptyBloom, bool);
-  vtkBooleanMacro(SkipEmptyBloom, bool);
-  vtkSetMacro(SkipDisabledEffects, bool);
-  vtkGetMacro(SkipDisabledEffects, bool);
-  vtkBooleanMacro(SkipDisabledEffects, bool);
-  vtkSetMacro(TrimPyramid, bool);
-  vtkGetMacro(TrimPyramid, bool);
-  vtkBooleanMacro(TrimPyramid, bool);
-  vtkSetMacro(RestrictToBrightRegion, bool);
-  vtkGetMacro(RestrictToBrightRegion, bool);
-  vtkBooleanMacro(RestrictToBrightRegion, bool);
   ///@}
 
   ///@{
@@ -459,16 +383,6 @@ public:
 
   ///@{
   /**
-   * Replace non-finite input samples and clamp the output to the finite range of its scalar
-   * type (see the class description). Default on.
-   */
-  vtkSetMacro(SanitizeNonFinite, bool);
-  vtkGetMacro(SanitizeNonFinite, bool);
-  vtkBooleanMacro(SanitizeNonFinite, bool);
-  ///@}
-
-  ///@{
-  /**
    * Measure the bloom statistics (see the class description) on every update and attach them
    * to the output's field data. Default on; the cost is one read of the input and the output.
    */
@@ -500,21 +414,12 @@ public:
   static const char* GetNumberOfLevelsUsedArrayName() { return "BloomNumberOfLevelsUsed"; }
   ///@}
 
-  /**
-   * Sizes of the levels the chain would use for an input of `width` x `height`, first level
-   * first, as (width, height) pairs. Exposed for testing and for the render pass.
-   */
-  std::vector<std::pair<int, int>> ComputeLevelSizes(int width, int height) const;
-
 protected:
   vtkImageBloom();
   ~vtkImageBloom() override;
 
   int RequestUpdateExtent(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
-
-  /// vtkErrorMacro and false when a parameter is out of its domain.
-  bool CheckParameters();
 
   ///@{
   /**
@@ -555,41 +460,12 @@ protected:
   /// Zero every statistic.
   void ResetStatistics();
 
-  /// True when Strength, Tint or the weights of `levels` levels make the bloom term zero.
-  bool BloomIsDisabled(int colours, size_t levels) const;
-
   /// Measure the statistics over the output's extent and attach them to its field data.
   void ComputeOutputStatistics(vtkImageData* input, vtkImageData* output, int levelsUsed);
 
-  int ThresholdMode;
-  double Threshold;
-  double Knee;
-  double ClampLuminance;
-  int StartLevel;
-  int NumberOfLevels;
-  bool LimitLevelsToImageSize;
-  int DownsampleKernel;
-  bool KarisAverage;
-  int BlurKernel;
-  double BlurStandardDeviation;
-  int BlurRadius;
-  int BlurGaussianKind;
-  std::vector<double> BlurHalfKernel;
-  double BlurTapSpacing;
-  int BlurIterations;
-  int UpsampleKernel;
-  int AccumulateMode;
-  std::vector<double> LevelWeights;
-  int CompositeMode;
-  double Strength;
-  double Tint[3];
+  vtkSmartPointer<vtkBloomParameters> Parameters;
   bool ComputeStatistics;
-  bool SanitizeNonFinite;
   int ExecutionMode;
-  bool SkipEmptyBloom;
-  bool SkipDisabledEffects;
-  bool TrimPyramid;
-  bool RestrictToBrightRegion;
   bool UseAVX2;
   bool LastRunWasFast;
   bool LastBloomSkipped;
@@ -598,16 +474,6 @@ protected:
   vtkIdType LastWorkspaceBytes;
   bool LastRunUsedAVX2;
   int LastFFTBlurs;
-  int ConvolutionMode;
-  int BloomMode;
-  int PSFType;
-  double AiryRadius;
-  double Wavelengths[3];
-  std::vector<double> PSFGaussianSigmas;
-  std::vector<double> PSFGaussianWeights;
-  vtkSmartPointer<vtkImageData> PSFImage;
-  int PSFRadius;
-  int PSFBorderMode;
   vtkBloomPSFKernels* PSFKernels; ///< the PSF of each channel, rebuilt when a parameter changes
   vtkBloomFastChain* FastChain;
   // The chain's operators, rebuilt only when a parameter or the input size changed.

@@ -18,42 +18,9 @@ constexpr int MaximumPSFRadius = 2048;
 }
 
 //------------------------------------------------------------------------------
-void vtkImageBloom::SetPSFGaussians(
-  const std::vector<double>& sigmas, const std::vector<double>& weights)
-{
-  if (sigmas != this->PSFGaussianSigmas || weights != this->PSFGaussianWeights)
-  {
-    this->PSFGaussianSigmas = sigmas;
-    this->PSFGaussianWeights = weights;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkImageBloom::SetPSFImage(vtkImageData* image)
-{
-  if (this->PSFImage != image)
-  {
-    this->PSFImage = image;
-    this->Modified();
-  }
-}
-
-//------------------------------------------------------------------------------
-vtkImageData* vtkImageBloom::GetPSFImage()
-{
-  return this->PSFImage;
-}
-
-//------------------------------------------------------------------------------
 vtkMTimeType vtkImageBloom::GetMTime()
 {
-  vtkMTimeType time = this->Superclass::GetMTime();
-  if (this->PSFImage)
-  {
-    time = std::max(time, this->PSFImage->GetMTime());
-  }
-  return time;
+  return std::max(this->Superclass::GetMTime(), this->Parameters->GetMTime());
 }
 
 //------------------------------------------------------------------------------
@@ -62,12 +29,12 @@ std::vector<double> vtkImageBloom::ComputePSF(int channel, int& radius)
   radius = 0;
   const int c = std::min(std::max(channel, 0), 2);
   vtkBloomPSFKernel kernel;
-  switch (this->PSFType)
+  switch (this->Parameters->GetPSFType())
   {
     case PSF_GAUSSIANS:
     {
-      const auto& s = this->PSFGaussianSigmas;
-      const auto& w = this->PSFGaussianWeights;
+      const auto& s = this->Parameters->GetPSFGaussianSigmas();
+      const auto& w = this->Parameters->GetPSFGaussianWeights();
       double widest = 0.0, total = 0.0;
       bool valid = !s.empty() && s.size() == w.size();
       for (size_t g = 0; valid && g < s.size(); ++g)
@@ -82,8 +49,8 @@ std::vector<double> vtkImageBloom::ComputePSF(int channel, int& radius)
                          "weights >= 0 and finite with a positive sum.");
         return {};
       }
-      const int r = this->PSFRadius >= 0
-        ? this->PSFRadius
+      const int r = this->Parameters->GetPSFRadius() >= 0
+        ? this->Parameters->GetPSFRadius()
         : static_cast<int>(std::min<double>(MaximumPSFRadius, std::ceil(4.0 * widest)));
       kernel = vtkBloomPSF::Gaussians(s, w, r);
       break;
@@ -91,13 +58,14 @@ std::vector<double> vtkImageBloom::ComputePSF(int channel, int& radius)
     case PSF_IMAGE:
     {
       std::string error;
-      const int limit = this->PSFRadius >= 0 ? this->PSFRadius : MaximumPSFRadius;
-      if (!this->PSFImage)
+      const int limit =
+        this->Parameters->GetPSFRadius() >= 0 ? this->Parameters->GetPSFRadius() : MaximumPSFRadius;
+      if (!this->Parameters->GetPSFImage())
       {
         vtkErrorMacro(<< "PSF mode with PSF_IMAGE needs SetPSFImage.");
         return {};
       }
-      if (!vtkBloomPSF::FromImage(this->PSFImage, c, limit, kernel, error))
+      if (!vtkBloomPSF::FromImage(this->Parameters->GetPSFImage(), c, limit, kernel, error))
       {
         vtkErrorMacro(<< "Invalid PSF image: " << error << ".");
         return {};
@@ -107,7 +75,7 @@ std::vector<double> vtkImageBloom::ComputePSF(int channel, int& radius)
     case PSF_AIRY:
     default:
     {
-      const double* l = this->Wavelengths;
+      const double* l = this->Parameters->GetWavelengths();
       if (!(l[0] > 0.0 && l[1] > 0.0 && l[2] > 0.0) ||
         !(std::isfinite(l[0]) && std::isfinite(l[1]) && std::isfinite(l[2])))
       {
@@ -116,10 +84,11 @@ std::vector<double> vtkImageBloom::ComputePSF(int channel, int& radius)
         return {};
       }
       const double longest = std::max(std::max(l[0], l[1]), l[2]);
-      const int r = this->PSFRadius >= 0 ? this->PSFRadius
-                                         : static_cast<int>(std::min<double>(MaximumPSFRadius,
-                                             std::ceil(12.0 * this->AiryRadius * longest / l[1])));
-      kernel = vtkBloomPSF::Airy(this->AiryRadius * l[c] / l[1], r);
+      const int r = this->Parameters->GetPSFRadius() >= 0
+        ? this->Parameters->GetPSFRadius()
+        : static_cast<int>(std::min<double>(MaximumPSFRadius,
+            std::ceil(12.0 * this->Parameters->GetAiryRadius() * longest / l[1])));
+      kernel = vtkBloomPSF::Airy(this->Parameters->GetAiryRadius() * l[c] / l[1], r);
       break;
     }
   }
@@ -172,11 +141,12 @@ int vtkImageBloom::ExecutePSF(vtkImageData* input, vtkInformation* outInfo, vtkI
   vtkBloomBuffer bright;
   this->ImportColours(input, bright);
   // Strength and tint only: PSF mode has no level weights.
-  bool skip = this->SkipDisabledEffects && this->BloomIsDisabled(colours, 0);
+  bool skip =
+    this->Parameters->GetSkipDisabledEffects() && this->Parameters->IsBloomDisabled(colours, 0);
   if (!skip)
   {
     this->BrightPassInPlace(bright);
-    skip = this->SkipEmptyBloom &&
+    skip = this->Parameters->GetSkipEmptyBloom() &&
       std::all_of(bright.Data.begin(), bright.Data.end(), [](double v) { return v == 0.0; });
   }
   this->LastBloomSkipped = skip;
@@ -184,7 +154,7 @@ int vtkImageBloom::ExecutePSF(vtkImageData* input, vtkInformation* outInfo, vtkI
   vtkBloomBuffer bloom;
   if (!skip)
   {
-    cache.Convolution.Convolve(bright, this->PSFBorderMode == 1, bloom);
+    cache.Convolution.Convolve(bright, this->Parameters->GetPSFBorderMode() == 1, bloom);
   }
   this->UpdateProgress(0.8);
   this->Composite(input, skip ? nullptr : &bloom, output);

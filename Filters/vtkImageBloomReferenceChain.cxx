@@ -85,7 +85,7 @@ void vtkImageBloom::ImportColours(vtkImageData* input, vtkBloomBuffer& colours)
   const int wholeLo[3] = { inExt[0], inExt[2], inExt[4] };
   vtkBloomImport(
     input, inExt, wholeLo, 0, input->GetNumberOfScalarComponents() >= 3 ? 3 : 1, colours);
-  if (this->SanitizeNonFinite)
+  if (this->Parameters->GetSanitizeNonFinite())
   {
     ReplaceNonFinite(colours.Data, FiniteMaximum(input->GetScalarType()));
   }
@@ -95,8 +95,9 @@ void vtkImageBloom::ImportColours(vtkImageData* input, vtkBloomBuffer& colours)
 void vtkImageBloom::BrightPassInPlace(vtkBloomBuffer& bright)
 {
   const int colours = bright.NumberOfComponents;
-  const int mode = this->ThresholdMode;
-  const double t = this->Threshold, knee = this->Knee, clampLum = this->ClampLuminance;
+  const int mode = this->Parameters->GetThresholdMode();
+  const double t = this->Parameters->GetThreshold(), knee = this->Parameters->GetKnee(),
+               clampLum = this->Parameters->GetClampLuminance();
   // The chain maps non-finite colours in every mode, NONE included, so that nothing
   // non-finite ever enters the pyramid (a no-op on finite samples).
   const double ceiling = std::min(clampLum, static_cast<double>(VTK_FLOAT_MAX));
@@ -135,7 +136,9 @@ bool vtkImageBloom::ThresholdStep(
   this->ImportColours(input, source);
   this->UpdateProgress(0.05);
   const auto sizes = this->ComputeLevelSizes(width, height);
-  if (sizes.empty() || (this->SkipDisabledEffects && this->BloomIsDisabled(colours, sizes.size())))
+  if (sizes.empty() ||
+    (this->Parameters->GetSkipDisabledEffects() &&
+      this->Parameters->IsBloomDisabled(colours, sizes.size())))
   {
     // No level fits (LimitLevelsToImageSize with a start level beyond the mip chain), or the
     // bloom term is zero: there is nothing to bloom, and the composite sees a black bloom.
@@ -155,7 +158,7 @@ bool vtkImageBloom::ThresholdStep(
   }
   vtkBloomBuffer& bright = levels[0];
   this->BrightPassInPlace(bright);
-  if (this->SkipEmptyBloom &&
+  if (this->Parameters->GetSkipEmptyBloom() &&
     std::all_of(bright.Data.begin(), bright.Data.end(), [](double v) { return v == 0.0; }))
   {
     // Nothing is bright: every level, and so the bloom, is zero.
@@ -267,9 +270,10 @@ void vtkImageBloom::Composite(
   output->GetExtent(outExt);
   const int nc = input->GetNumberOfScalarComponents();
   const int colours = nc >= 3 ? 3 : 1;
-  const double s = this->Strength;
-  const double keep = this->CompositeMode == LERP ? 1.0 - s : 1.0;
-  double tint[3] = { this->Tint[0], this->Tint[1], this->Tint[2] };
+  const double s = this->Parameters->GetStrength();
+  const double keep = this->Parameters->GetCompositeMode() == LERP ? 1.0 - s : 1.0;
+  double tint[3] = { this->Parameters->GetTint()[0], this->Parameters->GetTint()[1],
+    this->Parameters->GetTint()[2] };
   if (colours == 1)
   {
     tint[0] = vtkBloomKernels::LuminanceR * tint[0] + vtkBloomKernels::LuminanceG * tint[1] +
@@ -279,7 +283,7 @@ void vtkImageBloom::Composite(
   vtkBloomBuffer piece;
   vtkBloomImport(input, outExt, wholeLo, 0, nc, piece);
   const double maximum = FiniteMaximum(output->GetScalarType());
-  if (this->SanitizeNonFinite)
+  if (this->Parameters->GetSanitizeNonFinite())
   {
     ReplaceNonFinite(piece.Data, FiniteMaximum(input->GetScalarType()));
   }
@@ -298,7 +302,7 @@ void vtkImageBloom::Composite(
       // "+ 0.0" makes a zero bloom term +0 whatever the sign of the zero, so skipping a zero
       // bloom gives the same bits as computing it.
       v[c] = keep * v[c] + (s * tint[c] * (b ? b[c] : 0.0) + 0.0);
-      if (this->SanitizeNonFinite)
+      if (this->Parameters->GetSanitizeNonFinite())
       {
         // Clamp to the output type's finite range; NaN (only an overflow makes one) becomes 0.
         v[c] = std::isnan(v[c]) ? 0.0 : std::min(std::max(v[c], -maximum), maximum);

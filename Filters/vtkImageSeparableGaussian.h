@@ -79,6 +79,7 @@
 #ifndef vtkImageSeparableGaussian_h
 #define vtkImageSeparableGaussian_h
 
+#include "vtkBloomParameters.h"    // For the convolution modes
 #include "vtkFiltersBloomModule.h" // For export macro
 #include "vtkImageSeparableAlgorithm.h"
 
@@ -125,11 +126,12 @@ public:
   static const char* GetMethodName(int method);
   ///@}
 
+  /// The convolution modes, valued as vtkBloomParameters defines them (one set for the library).
   enum ConvolutionModes
   {
-    CONVOLUTION_AUTOMATIC = 0,
-    CONVOLUTION_DIRECT = 1,
-    CONVOLUTION_FFT = 2
+    CONVOLUTION_AUTOMATIC = vtkBloomParameters::CONVOLUTION_AUTOMATIC,
+    CONVOLUTION_DIRECT = vtkBloomParameters::CONVOLUTION_DIRECT,
+    CONVOLUTION_FFT = vtkBloomParameters::CONVOLUTION_FFT
   };
 
   ///@{

@@ -82,6 +82,7 @@ bool vtkBloomPass::vtkInternals::Prepare(
   this->Runner.Fast = self->Quality == QUALITY_FAST;
   this->Runner.UseCompute = self->UseComputeShaders;
   this->Runner.ComputePasses = 0;
+  this->Runner.Parameters = self->Parameters;
   this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
   this->Runner.Profiling = self->ProfilePasses;
   this->Runner.Profile.clear();
@@ -150,7 +151,7 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
 
 //------------------------------------------------------------------------------
 vtkBloomPass::vtkBloomPass()
-  : Parameters(vtkSmartPointer<vtkImageBloom>::New())
+  : Parameters(vtkSmartPointer<vtkBloomParameters>::New())
   , Emitters(vtkPropCollection::New())
   , FloatPrecision(FLOAT16)
   , EmissionSource(EMISSION_SCENE)
@@ -174,7 +175,13 @@ vtkBloomPass::~vtkBloomPass()
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPass::SetParameters(vtkImageBloom* parameters)
+void vtkBloomPass::SetParameters(vtkImageBloom* filter)
+{
+  this->SetParameters(filter ? filter->GetParameters() : nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::SetParameters(vtkBloomParameters* parameters)
 {
   if (!parameters)
   {
@@ -191,6 +198,12 @@ void vtkBloomPass::SetParameters(vtkImageBloom* parameters)
 //------------------------------------------------------------------------------
 bool vtkBloomPass::SetPreset(const char* name)
 {
+  const std::string error = vtkBloomParameters::CheckPresetName(name);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
+    return false;
+  }
   return this->Parameters->SetPreset(name);
 }
 
@@ -367,8 +380,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // 2. The chain, then 3. the composite into the framebuffer the pass was called with.
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  const bool bloom =
-    in.Runner.Run(this->Parameters, selective ? res.Emitter.Color : res.Scene.Color, selective);
+  const bool bloom = in.Runner.Run(selective ? res.Emitter.Color : res.Scene.Color, selective);
   this->LastBloomSkipped = !bloom;
   const int zero[2] = { 0, 0 };
   const int origin[2] = { x, y };
@@ -461,7 +473,7 @@ bool vtkBloomPass::ApplyToImage(
   state->PushFramebufferBindings();
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  const bool bloom = in.Runner.Run(this->Parameters, res.Scene.Color, false);
+  const bool bloom = in.Runner.Run(res.Scene.Color, false);
   this->LastBloomSkipped = !bloom;
   const int zero[2] = { 0, 0 };
   in.Runner.Composite(&res.Result, zero, bloom);

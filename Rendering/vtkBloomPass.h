@@ -1,14 +1,16 @@
 /**
  * @class   vtkBloomPass
- * @brief   HDR bloom as a render pass: the vtkImageBloom chain as GLSL passes on float targets.
+ * @brief   HDR bloom as a render pass: the vtkBloomParameters chain as GLSL passes on float
+ *          targets.
  *
  * The delegate pass renders the scene into a floating-point framebuffer (RGBA16F by default,
  * RGBA32F with SetFloatPrecisionTo32Bit()), so nothing above 1 is clipped before the bloom:
  * VTK's vtkImageProcessingPass::RenderDelegate renders into 8-bit targets, which is why
- * vtkGaussianBlurPass cannot bloom HDR content. The pass then evaluates the chain described by
- * a vtkImageBloom's parameters (GetParameters(); every parameter and preset of the filter
- * applies) as full-screen GLSL passes, and composites the result into the framebuffer that was
- * bound when the pass started, at the renderer's viewport:
+ * vtkGaussianBlurPass cannot bloom HDR content. The pass then evaluates the chain its
+ * vtkBloomParameters describe (GetParameters(); the same parameters and presets as
+ * vtkImageBloom's, and a pass and a filter can share one) as full-screen GLSL passes, and
+ * composites the result into the framebuffer that was bound when the pass started, at the
+ * renderer's viewport:
  *
  *   threshold -> pyramid down -> per-level separable blur -> upsample-accumulate -> composite.
  *
@@ -70,7 +72,7 @@
 #ifndef vtkBloomPass_h
 #define vtkBloomPass_h
 
-#include "vtkImageBloom.h" // For GetParameters
+#include "vtkBloomParameters.h" // For GetParameters
 #include "vtkImageProcessingPass.h"
 #include "vtkRenderingBloomModule.h" // For export macro
 #include "vtkSmartPointer.h"         // For the parameters
@@ -80,6 +82,7 @@
 
 class vtkActor;
 class vtkImageData;
+class vtkImageBloom;
 class vtkOpenGLRenderWindow;
 class vtkProp;
 class vtkPropCollection;
@@ -101,14 +104,22 @@ public:
 
   ///@{
   /**
-   * The bloom parameters: a vtkImageBloom whose parameters (and SetPreset) define the chain.
-   * Never null; a new pass holds a filter with its defaults. Its input is never used.
+   * The bloom's parameters (and SetPreset) define the chain. Never null: a new pass holds its
+   * own with their defaults, and a null pointer is refused with an error. Setting a filter's
+   * parameters shares them: `pass->SetParameters(filter->GetParameters())`.
    */
-  void SetParameters(vtkImageBloom* parameters);
-  vtkImageBloom* GetParameters() { return this->Parameters; }
+  void SetParameters(vtkBloomParameters* parameters);
+  vtkBloomParameters* GetParameters() { return this->Parameters; }
   ///@}
 
-  /// Shortcut for GetParameters()->SetPreset(name).
+  /**
+   * Share `filter`'s parameters, as SetParameters(filter->GetParameters()). Kept for code
+   * written when the pass held a vtkImageBloom; the filter's input and execution options are
+   * not used.
+   */
+  void SetParameters(vtkImageBloom* filter);
+
+  /// As GetParameters()->SetPreset(name), with an unknown name reported by this pass.
   bool SetPreset(const char* name);
 
   ///@{
@@ -303,7 +314,7 @@ protected:
    */
   virtual void SceneRendered(const vtkRenderState* s, vtkTextureObject* sceneColor);
 
-  vtkSmartPointer<vtkImageBloom> Parameters;
+  vtkSmartPointer<vtkBloomParameters> Parameters;
   vtkPropCollection* Emitters;
   int FloatPrecision;
   int EmissionSource;

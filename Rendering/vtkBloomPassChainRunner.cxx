@@ -4,11 +4,11 @@
 
 #include "vtkBloomChain.h"
 #include "vtkBloomKernels.h"
+#include "vtkBloomParameters.h"
 #include "vtkBloomPassFS.h"
 #include "vtkBloomPassReduceFS.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomVTKCompat.h"
-#include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkNew.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -151,7 +151,7 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
     os << this->InteriorOf(*spec.Y).Defines("Y", this->Linear(spec, spec.Y));
   }
   os << "#define STEP " << spec.Step << "\n#define THRESHOLD_MODE "
-     << this->Resources.Chain.ThresholdMode << "\n#define MASK_BY_DEPTH "
+     << this->Parameters->GetThresholdMode() << "\n#define MASK_BY_DEPTH "
      << (spec.ReadsSource && this->MaskSource ? 1 : 0) << "\n#define SANITIZE_SOURCE "
      << (spec.ReadsSource && this->SanitizeSource ? 1 : 0) << "\n#define SANITIZE_OUTPUT "
      << (this->SanitizeOutput ? 1 : 0) << "\n#define COMPOSITE_BLOOM "
@@ -362,7 +362,7 @@ void vtkBloomPassChainRunner::Pass(
 //------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::SetStepUniforms(Uniforms& u, int step)
 {
-  const vtkBloomChain& c = this->Resources.Chain;
+  vtkBloomParameters* p = this->Parameters;
   auto setf = [&u](const char* name, double value) { u.Float(name, value); };
   auto set3f = [&u](const char* name, const double values[3]) { u.Float3(name, values); };
   if (step == STEP_THRESHOLD || step == STEP_KARIS_TERM)
@@ -373,17 +373,18 @@ void vtkBloomPassChainRunner::SetStepUniforms(Uniforms& u, int step)
   }
   if (step == STEP_THRESHOLD)
   {
-    const double clampLum = std::min(c.ClampLuminance, static_cast<double>(VTK_FLOAT_MAX));
-    setf("threshold", c.Threshold);
-    setf("knee", c.Knee);
+    const double clampLum = std::min(p->GetClampLuminance(), static_cast<double>(VTK_FLOAT_MAX));
+    setf("threshold", p->GetThreshold());
+    setf("knee", p->GetKnee());
     setf("clampLuminance", clampLum);
     setf("ceiling", clampLum);
   }
   if (step == STEP_COMPOSITE)
   {
-    setf("keep", c.Keep);
-    const double strengthTint[3] = { c.Strength * c.Tint[0], c.Strength * c.Tint[1],
-      c.Strength * c.Tint[2] };
+    const double strength = p->GetStrength();
+    const double* tint = p->GetTint();
+    setf("keep", p->GetCompositeMode() == vtkBloomParameters::LERP ? 1.0 - strength : 1.0);
+    const double strengthTint[3] = { strength * tint[0], strength * tint[1], strength * tint[2] };
     set3f("strengthTint", strengthTint);
     setf("largest",
       this->Resources.Format == GL_RGBA32F ? std::numeric_limits<float>::max() : 65504.0);
@@ -403,8 +404,9 @@ void vtkBloomPassChainRunner::Clear(vtkBloomPassTarget& target)
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* emission, bool mask)
+bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
 {
+  vtkBloomParameters* parameters = this->Parameters;
   vtkBloomPassResources& res = this->Resources;
   const vtkBloomChain& c = res.Chain;
   this->MaskSource = mask;
@@ -417,11 +419,12 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
   }
   if (parameters->GetSkipDisabledEffects())
   {
-    // As vtkImageBloom::BloomIsDisabled: Strength 0, a black tint or every level weight 0.
+    // As vtkBloomParameters::IsBloomDisabled: Strength 0, a black tint or every level weight
+    // 0.
     bool zeroTerm = true, zeroWeights = true;
     for (int i = 0; i < 3; ++i)
     {
-      zeroTerm &= c.Strength * c.Tint[i] == 0.0;
+      zeroTerm &= parameters->GetStrength() * parameters->GetTint()[i] == 0.0;
     }
     for (const auto& level : c.Levels)
     {
@@ -586,7 +589,7 @@ bool vtkBloomPassChainRunner::Run(vtkImageBloom* parameters, vtkTextureObject* e
   // 3. Blur the levels that contribute: x into Temp, y into Work (CASCADE: the last level
   // goes straight into its accumulation, scaled by its weight).
   const size_t last = n - 1;
-  const bool cascade = c.AccumulateMode != vtkImageBloom::DIRECT;
+  const bool cascade = c.AccumulateMode != vtkBloomParameters::DIRECT;
   std::vector<vtkBloomPassTarget*> blurred(n);
   bool lastAccumulated = false;
   for (size_t i = 0; i < n; ++i)
@@ -746,7 +749,7 @@ void vtkBloomPassChainRunner::Composite(vtkBloomPassTarget* target, const int or
   composite.CompositeBloom = bloom;
   composite.Name = "composite";
   composite.Region = bloom && this->CompositeRestricted ? &this->CompositeRegion : nullptr;
-  if (bloom && c.AccumulateMode == vtkImageBloom::DIRECT)
+  if (bloom && c.AccumulateMode == vtkBloomParameters::DIRECT)
   {
     composite.Source = res.Full.Color;
   }

@@ -28,7 +28,7 @@
 class vtkBloomLinearOperator;
 class vtkBloomPassResources;
 struct vtkBloomPassTarget;
-class vtkImageBloom;
+class vtkBloomParameters;
 class vtkObject;
 class vtkOpenGLQuadHelper;
 class vtkShaderProgram;
@@ -50,14 +50,17 @@ public:
    * is skipped (no level, a disabled effect or nothing bright): the composite then keeps the
    * scene only.
    */
-  bool Run(vtkImageBloom* parameters, vtkTextureObject* emission, bool mask);
+  bool Run(vtkTextureObject* emission, bool mask);
 
   /**
-   * Settings of the next Run(): Fast runs the fast mode (vtkBloomPass::QUALITY_FAST: bilinear
-   * pairs of taps in the operators' interiors, on the half-float targets BuildChain made for
-   * it); Restrict makes every pass after the bright pass cover only the box its output can be
-   * non-zero in (vtkImageBloom::RestrictToBrightRegion, vtkBloomPassRegion.cxx).
+   * Settings of the next Run() and Composite(): Parameters (not owned) define the chain and
+   * the point-wise values (threshold, composite); Fast runs the fast mode
+   * (vtkBloomPass::QUALITY_FAST: bilinear pairs of taps in the operators' interiors, on the
+   * half-float targets BuildChain made for it); Restrict makes every pass after the bright pass
+   * cover only the box its output can be non-zero in (vtkBloomParameters::RestrictToBrightRegion,
+   * vtkBloomPassRegion.cxx).
    */
+  vtkBloomParameters* Parameters = nullptr;
   bool Fast = false;
   bool Restrict = false;
 

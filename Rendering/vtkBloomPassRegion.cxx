@@ -1,4 +1,4 @@
-// Content-aware evaluation of vtkBloomPass's chain (vtkImageBloom::RestrictToBrightRegion):
+// Content-aware evaluation of vtkBloomPass's chain (vtkBloomParameters::RestrictToBrightRegion):
 // the bright pass is reduced to the bounding box of its non-zero samples, and every later pass
 // computes only the box of output samples that read any sample of its input's box. Outside
 // those boxes the full chain computes zeros (sums of zero samples), and the targets are kept

@@ -2,9 +2,9 @@
 // chain's targets (see vtkBloomPassResources.h).
 #include "vtkBloomPassResources.h"
 
+#include "vtkBloomParameters.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkDataArray.h"
-#include "vtkImageBloom.h"
 #include "vtkImageData.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -138,21 +138,24 @@ void vtkBloomPassResources::AllocateScene(int width, int height, bool emitters)
 
 //------------------------------------------------------------------------------
 bool vtkBloomPassResources::ChainIsStale(
-  vtkImageBloom* parameters, int width, int height, bool fast) const
+  vtkBloomParameters* parameters, int width, int height, bool fast) const
 {
   // The chain depends on the size, the parameters and the quality only.
-  return this->ChainTime == 0 || this->ChainTime < parameters->GetMTime() ||
-    this->Chain.Width != width || this->Chain.Height != height || this->ChainIsFast != fast;
+  return this->ChainTime == 0 || this->ChainParameters != parameters ||
+    this->ChainTime < parameters->GetMTime() || this->Chain.Width != width ||
+    this->Chain.Height != height || this->ChainIsFast != fast;
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassResources::BuildChain(vtkImageBloom* parameters, int width, int height, bool fast)
+void vtkBloomPassResources::BuildChain(
+  vtkBloomParameters* parameters, int width, int height, bool fast)
 {
   vtkOpenGLRenderWindow* window = this->Context;
   const vtkMTimeType parametersTime = parameters->GetMTime();
   this->ReleaseChain(window);
   this->Chain.Build(parameters, width, height);
   this->ChainTime = parametersTime;
+  this->ChainParameters = parameters;
   this->ChainIsFast = fast;
   const size_t n = this->Chain.Levels.size();
   // The scene is stored at the requested precision; the exact chain always runs on 32-bit
@@ -161,7 +164,7 @@ void vtkBloomPassResources::BuildChain(vtkImageBloom* parameters, int width, int
   const unsigned int chainFormat = fast ? GL_RGBA16F : GL_RGBA32F;
   this->Levels.resize(n);
   this->Work.resize(n);
-  this->Accum.resize(this->Chain.AccumulateMode == vtkImageBloom::CASCADE ? n : 0);
+  this->Accum.resize(this->Chain.AccumulateMode == vtkBloomParameters::CASCADE ? n : 0);
   for (size_t i = 0; i < n; ++i)
   {
     const int* size = this->Chain.Levels[i].Size;
@@ -178,7 +181,7 @@ void vtkBloomPassResources::BuildChain(vtkImageBloom* parameters, int width, int
     // two-dimensional passes), so level 0 is the largest intermediate.
     this->Temp.Allocate(
       window, this->Chain.Levels[0].Size[0], this->Chain.Levels[0].Size[1], chainFormat, fast);
-    if (this->Chain.AccumulateMode == vtkImageBloom::DIRECT)
+    if (this->Chain.AccumulateMode == vtkBloomParameters::DIRECT)
     {
       this->Full.Allocate(window, width, height, chainFormat, fast);
     }

@@ -20,7 +20,7 @@
 
 #include <vector>
 
-class vtkImageBloom;
+class vtkBloomParameters;
 class vtkImageData;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
@@ -94,9 +94,10 @@ public:
   // The chain and its resources, rebuilt when the size or the parameters change.
   vtkBloomChain Chain;
   vtkMTimeType ChainTime = 0;
-  std::vector<vtkBloomPassTarget> Levels; // L_i
-  std::vector<vtkBloomPassTarget> Work;   // blurred levels and Karis sums
-  std::vector<vtkBloomPassTarget> Accum;  // CASCADE accumulation A_i
+  const vtkBloomParameters* ChainParameters = nullptr; // compared only, never dereferenced
+  std::vector<vtkBloomPassTarget> Levels;              // L_i
+  std::vector<vtkBloomPassTarget> Work;                // blurred levels and Karis sums
+  std::vector<vtkBloomPassTarget> Accum;               // CASCADE accumulation A_i
   vtkBloomPassTarget Temp;                // the output of every x pass, at most the size of level 0
   vtkBloomPassTarget Full;                // DIRECT: the full-size bloom
   std::vector<vtkBloomPassTarget> Reduce; // the bright region's reduction (RGBA32F boxes)
@@ -107,14 +108,14 @@ public:
    */
   void AllocateScene(int width, int height, bool emitters);
 
-  /// Whether the chain was built for older parameters or for another size.
-  bool ChainIsStale(vtkImageBloom* parameters, int width, int height, bool fast) const;
+  /// Whether the chain was built for other or older parameters or for another size.
+  bool ChainIsStale(vtkBloomParameters* parameters, int width, int height, bool fast) const;
 
   /**
    * Build the chain for `parameters` at width x height and make its targets: RGBA32F, or
    * with `fast` RGBA16F with bilinear filtering (vtkBloomPass::QUALITY_FAST).
    */
-  void BuildChain(vtkImageBloom* parameters, int width, int height, bool fast);
+  void BuildChain(vtkBloomParameters* parameters, int width, int height, bool fast);
   bool ChainIsFast = false;
 
   void ReleaseChain(vtkWindow* w);

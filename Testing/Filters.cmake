@@ -27,6 +27,7 @@ set(vtkbloom_filters_tests
   TestBloomReference
   TestBloomCalibration
   TestImageBloomPresets
+  TestBloomParameters
   TestImageSeparableGaussian
   TestImagePyramidDown
   TestImagePyramidUp

@@ -148,7 +148,7 @@ Exit status: 0 success, 1 failure, 2 usage error. An input file is never overwri
 )";
 
 // The options each command knows (CLI11 refuses any other); their values are parsed by the
-// command (ApplyImageOptions, TakeCommon, TakeRenderOptions).
+// command (BloomOptions, TakeCommon, TakeRenderOptions).
 const std::vector<std::string> CommonOptionNames = { "--exposure", "--max-pixels", "-o", "--format",
   "--stats" };
 const std::vector<std::string> BlurOptionNames = { "--radius", "--sigma", "--border", "--kernel",
@@ -376,7 +376,7 @@ int RunImage(int argc, char* argv[])
   // Statistics cost about twice the chain; measure them only when they are reported.
   bloom->SetComputeStatistics(!common.StatisticsFile.empty());
   bloom->SetPreset("webgpu-market");
-  ApplyImageOptions(args, bloom);
+  BloomOptions(args).Apply(bloom->GetParameters());
   return RunFiles(args, common, bloom, bloom, "image", false);
 }
 
@@ -520,18 +520,12 @@ RenderOptions TakeRenderOptions(Arguments& args, const CommonOptions& common)
   }
   // The bloom options are parsed now (usage errors before any rendering) and applied to the
   // pass after the scene has set its own parameters.
-  vtkNew<vtkImageBloom> parsed;
-  const std::map<std::string, std::string> bloomOptions = args.Options;
-  ApplyImageOptions(args, parsed);
-  if (parsed->GetBloomMode() == vtkImageBloom::BLOOM_PSF)
+  const BloomOptions bloom(args);
+  if (bloom.GetPSF())
   {
     throw UsageError{ "--psf applies to image: the render pass has no PSF mode" };
   }
-  options.ConfigureBloom = [bloomOptions](vtkBloomPass* pass)
-  {
-    Arguments again(bloomOptions);
-    ApplyImageOptions(again, pass->GetParameters());
-  };
+  options.ConfigureBloom = [bloom](vtkBloomPass* pass) { bloom.Apply(pass->GetParameters()); };
   return options;
 }
 #endif

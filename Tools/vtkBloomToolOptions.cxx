@@ -1,6 +1,6 @@
 #include "vtkBloomToolOptions.h"
 
-#include "vtkImageBloom.h"
+#include "vtkBloomParameters.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImagePyramidDown.h"
 #include "vtkImagePyramidUp.h"
@@ -23,59 +23,94 @@ const std::vector<std::string> BloomOptionNames = { "--preset", "--threshold", "
 
 namespace
 {
-// The largest PSF file accepted: a radius of 2048 pixels (vtkImageBloom's limit).
+// The largest PSF file accepted: a radius of 2048 pixels (vtkBloomParameters' limit).
 constexpr vtkTypeUInt64 MaximumPSFPixels = vtkTypeUInt64(4097) * 4097;
 
-// --psf airy|gaussians|FILE.exr and its parameters: PSF mode (vtkImageBloom::BLOOM_PSF).
-void ApplyPSFOptions(Arguments& args, vtkImageBloom* bloom)
+// The PSF read from a --psf FILE.exr.
+vtkSmartPointer<vtkImageData> ReadPSF(const std::string& fileName)
+{
+  vtkNew<vtkOpenEXRReader> reader;
+  reader->SetFileName(fileName.c_str());
+  reader->SetMaximumImagePixels(MaximumPSFPixels);
+  ErrorCollector errors;
+  errors.Watch(reader);
+  reader->Update();
+  errors.ThrowIfAny("cannot read the PSF '" + fileName + "'");
+  if (reader->GetOutput()->GetNumberOfPoints() == 0)
+  {
+    throw RunError{ "cannot read the PSF '" + fileName + "'" };
+  }
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(reader->GetOutput());
+  return image;
+}
+
+// --psf-gaussians SIGMA:WEIGHT,SIGMA:WEIGHT,...
+void ParsePSFGaussians(
+  const std::string& v, std::vector<double>& sigmas, std::vector<double>& weights)
+{
+  size_t start = 0;
+  while (start <= v.size())
+  {
+    const size_t comma = std::min(v.find(',', start), v.size());
+    const std::string item = v.substr(start, comma - start);
+    const size_t colon = item.find(':');
+    if (colon == std::string::npos)
+    {
+      throw UsageError{ "--psf-gaussians expects SIGMA:WEIGHT,..., got '" + v + "'" };
+    }
+    const double s = ParseDouble("--psf-gaussians", item.substr(0, colon));
+    const double w = ParseDouble("--psf-gaussians", item.substr(colon + 1));
+    if (!(s > 0.0) || !(w >= 0.0) || !std::isfinite(s) || !std::isfinite(w))
+    {
+      throw UsageError{ "--psf-gaussians needs sigmas > 0 and weights >= 0" };
+    }
+    sigmas.push_back(s);
+    weights.push_back(w);
+    start = comma + 1;
+  }
+}
+}
+
+//------------------------------------------------------------------------------
+// --psf airy|gaussians|FILE.exr and its parameters: PSF mode (vtkBloomParameters::BLOOM_PSF).
+void BloomOptions::ParsePSF(Arguments& args)
 {
   std::string v;
   if (args.Take("--psf", v))
   {
-    bloom->SetBloomModeToPSF();
+    this->PSF = true;
+    this->Set(&vtkBloomParameters::SetBloomMode, int(vtkBloomParameters::BLOOM_PSF));
     if (v == "airy")
     {
-      bloom->SetPSFType(vtkImageBloom::PSF_AIRY);
+      this->Set(&vtkBloomParameters::SetPSFType, int(vtkBloomParameters::PSF_AIRY));
     }
     else if (v == "gaussians")
     {
-      bloom->SetPSFType(vtkImageBloom::PSF_GAUSSIANS);
+      this->Set(&vtkBloomParameters::SetPSFType, int(vtkBloomParameters::PSF_GAUSSIANS));
     }
     else if (Extension(v) == ".exr")
     {
-      vtkNew<vtkOpenEXRReader> reader;
-      reader->SetFileName(v.c_str());
-      reader->SetMaximumImagePixels(MaximumPSFPixels);
-      ErrorCollector errors;
-      errors.Watch(reader);
-      reader->Update();
-      errors.ThrowIfAny("cannot read the PSF '" + v + "'");
-      if (reader->GetOutput()->GetNumberOfPoints() == 0)
-      {
-        throw RunError{ "cannot read the PSF '" + v + "'" };
-      }
-      auto image = vtkSmartPointer<vtkImageData>::New();
-      image->DeepCopy(reader->GetOutput());
-      bloom->SetPSFType(vtkImageBloom::PSF_IMAGE);
-      bloom->SetPSFImage(image);
+      vtkSmartPointer<vtkImageData> image = ReadPSF(v);
+      this->Set(&vtkBloomParameters::SetPSFType, int(vtkBloomParameters::PSF_IMAGE));
+      this->Edits.emplace_back([image](vtkBloomParameters* p) { p->SetPSFImage(image); });
     }
     else
     {
       throw UsageError{ "--psf expects airy, gaussians or a FILE.exr, got '" + v + "'" };
     }
   }
-  const bool psf = bloom->GetBloomMode() == vtkImageBloom::BLOOM_PSF;
   for (const char* option :
     { "--psf-radius", "--airy-radius", "--wavelengths", "--psf-gaussians", "--psf-border" })
   {
-    if (!psf && args.Options.count(option))
+    if (!this->PSF && args.Options.count(option))
     {
       throw UsageError{ std::string(option) + " applies with --psf only" };
     }
   }
   if (args.Take("--psf-radius", v))
   {
-    bloom->SetPSFRadius(ParseInt("--psf-radius", v, 0, 2048));
+    this->Set(&vtkBloomParameters::SetPSFRadius, ParseInt("--psf-radius", v, 0, 2048));
   }
   if (args.Take("--airy-radius", v))
   {
@@ -84,7 +119,7 @@ void ApplyPSFOptions(Arguments& args, vtkImageBloom* bloom)
     {
       throw UsageError{ "--airy-radius must be in [0.1, 1000] pixels" };
     }
-    bloom->SetAiryRadius(radius);
+    this->Set(&vtkBloomParameters::SetAiryRadius, radius);
   }
   if (args.Take("--wavelengths", v))
   {
@@ -93,65 +128,42 @@ void ApplyPSFOptions(Arguments& args, vtkImageBloom* bloom)
     {
       throw UsageError{ "--wavelengths expects three positive values R,G,B in nm" };
     }
-    bloom->SetWavelengths(l[0], l[1], l[2]);
+    this->Edits.emplace_back([l](vtkBloomParameters* p) { p->SetWavelengths(l[0], l[1], l[2]); });
   }
   if (args.Take("--psf-gaussians", v))
   {
-    // SIGMA:WEIGHT,SIGMA:WEIGHT,...
     std::vector<double> sigmas, weights;
-    size_t start = 0;
-    while (start <= v.size())
-    {
-      const size_t comma = std::min(v.find(',', start), v.size());
-      const std::string item = v.substr(start, comma - start);
-      const size_t colon = item.find(':');
-      if (colon == std::string::npos)
-      {
-        throw UsageError{ "--psf-gaussians expects SIGMA:WEIGHT,..., got '" + v + "'" };
-      }
-      const double s = ParseDouble("--psf-gaussians", item.substr(0, colon));
-      const double w = ParseDouble("--psf-gaussians", item.substr(colon + 1));
-      if (!(s > 0.0) || !(w >= 0.0) || !std::isfinite(s) || !std::isfinite(w))
-      {
-        throw UsageError{ "--psf-gaussians needs sigmas > 0 and weights >= 0" };
-      }
-      sigmas.push_back(s);
-      weights.push_back(w);
-      start = comma + 1;
-    }
-    bloom->SetPSFType(vtkImageBloom::PSF_GAUSSIANS);
-    bloom->SetPSFGaussians(sigmas, weights);
+    ParsePSFGaussians(v, sigmas, weights);
+    this->Set(&vtkBloomParameters::SetPSFType, int(vtkBloomParameters::PSF_GAUSSIANS));
+    this->Edits.emplace_back(
+      [sigmas, weights](vtkBloomParameters* p) { p->SetPSFGaussians(sigmas, weights); });
   }
   if (args.Take("--psf-border", v))
   {
-    bloom->SetPSFBorderMode(ParseChoice("--psf-border", v, { { "reflect", 1 }, { "zero", 2 } }));
+    this->Set(&vtkBloomParameters::SetPSFBorderMode,
+      ParseChoice("--psf-border", v, { { "reflect", 1 }, { "zero", 2 } }));
   }
-}
 }
 
 //------------------------------------------------------------------------------
-void ApplyImageOptions(Arguments& args, vtkImageBloom* bloom)
+BloomOptions::BloomOptions(Arguments& args)
 {
   std::string v;
   if (args.Take("--preset", v))
   {
     // Checked here, so that the usage error is the only line (SetPreset would log its own).
-    const std::vector<std::string> presets = vtkImageBloom::GetPresetNames();
+    const std::vector<std::string> presets = vtkBloomParameters::GetPresetNames();
     if (std::find(presets.begin(), presets.end(), v) == presets.end())
     {
-      std::string names;
-      for (const std::string& name : presets)
-      {
-        names += (names.empty() ? "" : ", ") + name;
-      }
-      throw UsageError{ "--preset: unknown preset '" + v + "', expected one of " + names };
+      throw UsageError{ "--preset: unknown preset '" + v + "', expected one of " +
+        vtkBloomParameters::GetPresetNamesList() };
     }
-    bloom->SetPreset(v.c_str());
+    this->Edits.emplace_back([v](vtkBloomParameters* p) { p->SetPreset(v.c_str()); });
   }
   if (args.Take("--threshold", v))
   {
     // Above FLT_MAX no float pixel can pass; below 0 every pixel would, black ones included.
-    bloom->SetThreshold(ParseDoubleIn("--threshold", v, 0.0, FLT_MAX));
+    this->Set(&vtkBloomParameters::SetThreshold, ParseDoubleIn("--threshold", v, 0.0, FLT_MAX));
   }
   if (args.Take("--knee", v))
   {
@@ -160,16 +172,17 @@ void ApplyImageOptions(Arguments& args, vtkImageBloom* bloom)
     {
       throw UsageError{ "--knee must be in [0, 1]" };
     }
-    bloom->SetKnee(knee);
+    this->Set(&vtkBloomParameters::SetKnee, knee);
   }
   if (args.Take("--mode", v))
   {
-    bloom->SetThresholdMode(ParseChoice("--mode", v,
-      { { "smoothstep", vtkImageBloomThreshold::SMOOTHSTEP_KNEE },
-        { "quadratic", vtkImageBloomThreshold::QUADRATIC_KNEE },
-        { "hard", vtkImageBloomThreshold::HARD_LUMINANCE },
-        { "per-channel", vtkImageBloomThreshold::PER_CHANNEL },
-        { "none", vtkImageBloomThreshold::NONE } }));
+    this->Set(&vtkBloomParameters::SetThresholdMode,
+      ParseChoice("--mode", v,
+        { { "smoothstep", vtkImageBloomThreshold::SMOOTHSTEP_KNEE },
+          { "quadratic", vtkImageBloomThreshold::QUADRATIC_KNEE },
+          { "hard", vtkImageBloomThreshold::HARD_LUMINANCE },
+          { "per-channel", vtkImageBloomThreshold::PER_CHANNEL },
+          { "none", vtkImageBloomThreshold::NONE } }));
   }
   if (args.Take("--clamp-luminance", v))
   {
@@ -178,17 +191,18 @@ void ApplyImageOptions(Arguments& args, vtkImageBloom* bloom)
     {
       throw UsageError{ "--clamp-luminance must be >= 0" };
     }
-    bloom->SetClampLuminance(clamp);
+    this->Set(&vtkBloomParameters::SetClampLuminance, clamp);
   }
   if (args.Take("--strength", v))
   {
     // A negative strength subtracts light; far above 1000 the sum overflows float.
-    bloom->SetStrength(ParseDoubleIn("--strength", v, 0.0, 1000.0));
+    this->Set(&vtkBloomParameters::SetStrength, ParseDoubleIn("--strength", v, 0.0, 1000.0));
   }
   if (args.Take("--composite", v))
   {
-    bloom->SetCompositeMode(ParseChoice("--composite", v,
-      { { "additive", vtkImageBloom::ADDITIVE }, { "lerp", vtkImageBloom::LERP } }));
+    this->Set(&vtkBloomParameters::SetCompositeMode,
+      ParseChoice("--composite", v,
+        { { "additive", vtkBloomParameters::ADDITIVE }, { "lerp", vtkBloomParameters::LERP } }));
   }
   if (args.Take("--tint", v))
   {
@@ -197,35 +211,39 @@ void ApplyImageOptions(Arguments& args, vtkImageBloom* bloom)
     {
       throw UsageError{ "--tint expects R,G,B" };
     }
-    bloom->SetTint(tint[0], tint[1], tint[2]);
+    this->Edits.emplace_back(
+      [tint](vtkBloomParameters* p) { p->SetTint(tint[0], tint[1], tint[2]); });
   }
   if (args.Take("--levels", v))
   {
-    bloom->SetNumberOfLevels(ParseInt("--levels", v, 1, 32));
+    this->Set(&vtkBloomParameters::SetNumberOfLevels, ParseInt("--levels", v, 1, 32));
   }
   if (args.Take("--start-level", v))
   {
-    bloom->SetStartLevel(ParseInt("--start-level", v, 0, 16));
+    this->Set(&vtkBloomParameters::SetStartLevel, ParseInt("--start-level", v, 0, 16));
   }
   if (args.Take("--down", v))
   {
-    bloom->SetDownsampleKernel(ParseChoice("--down", v,
-      { { "jimenez13", vtkImagePyramidDown::JIMENEZ13 }, { "box", vtkImagePyramidDown::BOX },
-        { "binomial", vtkImagePyramidDown::BINOMIAL } }));
+    this->Set(&vtkBloomParameters::SetDownsampleKernel,
+      ParseChoice("--down", v,
+        { { "jimenez13", vtkImagePyramidDown::JIMENEZ13 }, { "box", vtkImagePyramidDown::BOX },
+          { "binomial", vtkImagePyramidDown::BINOMIAL } }));
   }
   if (args.Take("--karis", v))
   {
-    bloom->KarisAverageOn();
+    this->Set(&vtkBloomParameters::SetKarisAverage, true);
   }
   if (args.Take("--up", v))
   {
-    bloom->SetUpsampleKernel(ParseChoice("--up", v,
-      { { "tent", vtkImagePyramidUp::TENT }, { "bilinear", vtkImagePyramidUp::BILINEAR } }));
+    this->Set(&vtkBloomParameters::SetUpsampleKernel,
+      ParseChoice("--up", v,
+        { { "tent", vtkImagePyramidUp::TENT }, { "bilinear", vtkImagePyramidUp::BILINEAR } }));
   }
   if (args.Take("--accumulate", v))
   {
-    bloom->SetAccumulateMode(ParseChoice("--accumulate", v,
-      { { "cascade", vtkImageBloom::CASCADE }, { "direct", vtkImageBloom::DIRECT } }));
+    this->Set(&vtkBloomParameters::SetAccumulateMode,
+      ParseChoice("--accumulate", v,
+        { { "cascade", vtkBloomParameters::CASCADE }, { "direct", vtkBloomParameters::DIRECT } }));
   }
   if (args.Take("--blur-sigma", v))
   {
@@ -234,14 +252,14 @@ void ApplyImageOptions(Arguments& args, vtkImageBloom* bloom)
     {
       throw UsageError{ "--blur-sigma must be >= 0" };
     }
-    bloom->SetBlurKernel(vtkImageBloom::BLUR_GAUSSIAN);
-    bloom->SetBlurStandardDeviation(sigma);
-    bloom->SetBlurRadius(-1);
+    this->Set(&vtkBloomParameters::SetBlurKernel, vtkBloomParameters::BLUR_GAUSSIAN);
+    this->Set(&vtkBloomParameters::SetBlurStandardDeviation, sigma);
+    this->Set(&vtkBloomParameters::SetBlurRadius, -1);
   }
   if (args.Take("--blur-radius", v))
   {
-    bloom->SetBlurKernel(vtkImageBloom::BLUR_GAUSSIAN);
-    bloom->SetBlurRadius(ParseInt("--blur-radius", v, 0, 4096));
+    this->Set(&vtkBloomParameters::SetBlurKernel, vtkBloomParameters::BLUR_GAUSSIAN);
+    this->Set(&vtkBloomParameters::SetBlurRadius, ParseInt("--blur-radius", v, 0, 4096));
   }
   if (args.Take("--blur-spacing", v))
   {
@@ -250,24 +268,35 @@ void ApplyImageOptions(Arguments& args, vtkImageBloom* bloom)
     {
       throw UsageError{ "--blur-spacing must be >= 0" };
     }
-    bloom->SetBlurTapSpacing(spacing);
+    this->Set(&vtkBloomParameters::SetBlurTapSpacing, spacing);
   }
   if (args.Take("--blur-iterations", v))
   {
-    bloom->SetBlurIterations(ParseInt("--blur-iterations", v, 0, 1024));
+    this->Set(&vtkBloomParameters::SetBlurIterations, ParseInt("--blur-iterations", v, 0, 1024));
   }
   if (args.Take("--level-weights", v))
   {
-    bloom->SetLevelWeights(ParseList("--level-weights", v));
+    const std::vector<double> weights = ParseList("--level-weights", v);
+    this->Edits.emplace_back([weights](vtkBloomParameters* p) { p->SetLevelWeights(weights); });
   }
   if (args.Take("--convolution", v))
   {
-    bloom->SetConvolutionMode(ParseChoice("--convolution", v,
-      { { "auto", vtkImageBloom::CONVOLUTION_AUTOMATIC },
-        { "direct", vtkImageBloom::CONVOLUTION_DIRECT },
-        { "fft", vtkImageBloom::CONVOLUTION_FFT } }));
+    this->Set(&vtkBloomParameters::SetConvolutionMode,
+      ParseChoice("--convolution", v,
+        { { "auto", vtkBloomParameters::CONVOLUTION_AUTOMATIC },
+          { "direct", vtkBloomParameters::CONVOLUTION_DIRECT },
+          { "fft", vtkBloomParameters::CONVOLUTION_FFT } }));
   }
-  ApplyPSFOptions(args, bloom);
+  this->ParsePSF(args);
+}
+
+//------------------------------------------------------------------------------
+void BloomOptions::Apply(vtkBloomParameters* parameters) const
+{
+  for (const auto& edit : this->Edits)
+  {
+    edit(parameters);
+  }
 }
 
 }

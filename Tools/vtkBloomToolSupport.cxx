@@ -192,12 +192,6 @@ Arguments::Arguments(int argc, char* argv[], int first, const std::vector<std::s
 }
 
 //------------------------------------------------------------------------------
-Arguments::Arguments(std::map<std::string, std::string> options)
-  : Options(std::move(options))
-{
-}
-
-//------------------------------------------------------------------------------
 bool Arguments::Take(const std::string& name, std::string& value)
 {
   const auto it = this->Options.find(name);

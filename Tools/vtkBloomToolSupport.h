@@ -53,9 +53,6 @@ public:
   Arguments(int argc, char* argv[], int first, const std::vector<std::string>& flags,
     const std::vector<std::string>& options);
 
-  /// Options given directly (ConfigureBloom re-applies the bloom options).
-  explicit Arguments(std::map<std::string, std::string> options);
-
   /// Visit a known option; everything not visited is reported as unknown.
   bool Take(const std::string& name, std::string& value);
 

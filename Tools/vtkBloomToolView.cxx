@@ -1,11 +1,11 @@
 // vtk-bloom view: a dataset or example scene in an interactive X window, with the bloom's
 // parameters on sliders and keys. Built only where VTK has widgets and text (the X build).
 #include "vtkBloomExampleScenes.h"
+#include "vtkBloomParameters.h"
 #include "vtkBloomPass.h"
 #include "vtkBloomToolImageIO.h"
 #include "vtkBloomToolRender.h"
 #include "vtkBloomVTKCompat.h"
-#include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
 
 #include <vtkCallbackCommand.h>
@@ -155,7 +155,7 @@ struct Viewer
 
   void SyncSliders()
   {
-    vtkImageBloom* p = this->Pass->GetParameters();
+    vtkBloomParameters* p = this->Pass->GetParameters();
     const double values[3] = { p->GetThreshold(), p->GetStrength(),
       static_cast<double>(p->GetNumberOfLevels()) };
     for (int i = 0; i < 3; ++i)
@@ -167,7 +167,7 @@ struct Viewer
 
   void SlidersChanged()
   {
-    vtkImageBloom* p = this->Pass->GetParameters();
+    vtkBloomParameters* p = this->Pass->GetParameters();
     p->SetThreshold(this->SliderValue(0));
     p->SetStrength(this->SliderValue(1));
     p->SetNumberOfLevels(static_cast<int>(std::lround(this->SliderValue(2))));
@@ -370,7 +370,7 @@ int View(const std::string& input, const RenderOptions& options, const std::stri
   viewer.Renderer->AddViewProp(viewer.Help);
 
   viewer.Interactor->Initialize();
-  vtkImageBloom* p = viewer.Pass->GetParameters();
+  vtkBloomParameters* p = viewer.Pass->GetParameters();
   // vtkSliderRepresentation2D puts the value above the tube and the title below it, each
   // about 0.05 of the height away with text 0.025 high: 0.16 between tubes keeps a value clear
   // of the title above it, and 0.10 under the lowest keeps its title inside the window.

@@ -214,7 +214,7 @@ void Configure(vtkImageBloom* bloom, const std::string& config)
     bloom->SetStartLevel(1);
     bloom->SetNumberOfLevels(6);
     bloom->SetDownsampleKernel(2);
-    bloom->SetBlurKernel(vtkImageBloom::BLUR_GAUSSIAN);
+    bloom->SetBlurKernel(vtkBloomParameters::BLUR_GAUSSIAN);
     bloom->SetBlurStandardDeviation(2.0);
     bloom->SetBlurRadius(6);
     bloom->SetBlurTapSpacing(1.0);
@@ -239,7 +239,7 @@ void Configure(vtkImageBloom* bloom, const std::string& config)
     bloom->SetPreset("webgpu-market");
     bloom->SetBloomModeToPSF();
     bloom->SetPSFType(
-      config == "psf.airy" ? vtkImageBloom::PSF_AIRY : vtkImageBloom::PSF_GAUSSIANS);
+      config == "psf.airy" ? vtkBloomParameters::PSF_AIRY : vtkBloomParameters::PSF_GAUSSIANS);
   }
   else
   {

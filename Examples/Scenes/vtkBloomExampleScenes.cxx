@@ -82,7 +82,7 @@ void ScalarField(vtkRenderer* renderer, vtkBloomPass* pass)
   pass->AddEmitter(emitter);
   pass->SetEmissionSourceToEmitters();
   pass->SetPreset("webgpu-market");
-  vtkImageBloom* p = pass->GetParameters();
+  vtkBloomParameters* p = pass->GetParameters();
   p->SetThresholdMode(vtkImageBloomThreshold::NONE);
   p->SetNumberOfLevels(6);
   p->SetStrength(1.5);
@@ -208,7 +208,7 @@ void FieldLines(vtkRenderer* renderer, vtkBloomPass* pass)
   }
 
   pass->SetPreset("webgpu-market");
-  vtkImageBloom* p = pass->GetParameters();
+  vtkBloomParameters* p = pass->GetParameters();
   p->SetThreshold(1.0);
   p->SetNumberOfLevels(6);
   p->SetStrength(0.8);
@@ -289,7 +289,7 @@ void LitScene(vtkRenderer* renderer, vtkBloomPass* pass)
   renderer->AddLight(fill);
 
   pass->SetPreset("webgpu-market");
-  vtkImageBloom* p = pass->GetParameters();
+  vtkBloomParameters* p = pass->GetParameters();
   p->SetThreshold(1.2);
   p->SetNumberOfLevels(6);
   p->SetStrength(0.6);

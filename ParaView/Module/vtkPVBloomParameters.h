@@ -2,22 +2,21 @@
  * @class   vtkPVBloomParameters
  * @brief   The hand-set parameters of the plugin's Bloom filter and bloom view.
  *
- * A vtkImageBloom that is only ever used as a parameter set (vtkPVImageBloom's
- * CustomParameters). It adds what ParaView's vector properties need to set the two weight lists
+ * The vtkBloomParameters of vtkPVImageBloom's CustomParameters. It adds what ParaView's vector properties need to set the two weight lists
  * element by element: a count, then one call per element with its index.
  */
 
 #ifndef vtkPVBloomParameters_h
 #define vtkPVBloomParameters_h
 
-#include "vtkImageBloom.h"
+#include "vtkBloomParameters.h"
 #include "vtkParaViewBloomModule.h" // For export macro
 
-class VTKPARAVIEWBLOOM_EXPORT vtkPVBloomParameters : public vtkImageBloom
+class VTKPARAVIEWBLOOM_EXPORT vtkPVBloomParameters : public vtkBloomParameters
 {
 public:
   static vtkPVBloomParameters* New();
-  vtkTypeMacro(vtkPVBloomParameters, vtkImageBloom);
+  vtkTypeMacro(vtkPVBloomParameters, vtkBloomParameters);
 
   /// Resize the per-level weights; new levels weigh 1. Zero clears them (every level weighs 1).
   void SetNumberOfLevelWeights(int n);

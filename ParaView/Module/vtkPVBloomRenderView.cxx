@@ -15,7 +15,8 @@ vtkStandardNewMacro(vtkPVBloomRenderView);
 //------------------------------------------------------------------------------
 vtkPVBloomRenderView::vtkPVBloomRenderView()
 {
-  this->BloomPass->SetParameters(this->BloomParameters);
+  // The pass renders the parameters the preset resolves to.
+  this->BloomPass->SetParameters(this->BloomPresetResolver->GetParameters());
 }
 
 //------------------------------------------------------------------------------
@@ -41,19 +42,19 @@ void vtkPVBloomRenderView::SetUseBloom(bool use)
 //------------------------------------------------------------------------------
 void vtkPVBloomRenderView::SetBloomPreset(const char* name)
 {
-  this->BloomParameters->SetPreset(name);
+  this->BloomPresetResolver->SetPreset(name);
 }
 
 //------------------------------------------------------------------------------
 const char* vtkPVBloomRenderView::GetBloomPreset()
 {
-  return this->BloomParameters->GetPreset();
+  return this->BloomPresetResolver->GetPreset();
 }
 
 //------------------------------------------------------------------------------
-void vtkPVBloomRenderView::SetBloomCustomParameters(vtkImageBloom* parameters)
+void vtkPVBloomRenderView::SetBloomCustomParameters(vtkBloomParameters* parameters)
 {
-  this->BloomParameters->SetCustomParameters(parameters);
+  this->BloomPresetResolver->SetCustomParameters(parameters);
 }
 
 //------------------------------------------------------------------------------

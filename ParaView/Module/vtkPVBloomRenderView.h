@@ -27,8 +27,9 @@
  * bloom becomes its delegate: bloom in linear HDR, then tone mapping. During a selection
  * render the view leaves the slot empty, as ParaView does.
  *
- * The bloom's parameters are a vtkPVImageBloom: SetBloomPreset ("custom" or a preset name)
- * over the hand-set parameters of SetBloomCustomParameters.
+ * The pass's vtkBloomParameters are SetBloomPreset ("custom" or a preset name) over the
+ * hand-set parameters of SetBloomCustomParameters, resolved as the Bloom filter resolves them
+ * (a vtkPVImageBloom used for that only; it never executes).
  */
 
 #ifndef vtkPVBloomRenderView_h
@@ -40,7 +41,7 @@
 #include "vtkPVRenderView.h"
 #include "vtkParaViewBloomModule.h" // For export macro
 
-class vtkImageBloom;
+class vtkBloomParameters;
 class vtkPVImageBloom;
 
 class VTKPARAVIEWBLOOM_EXPORT vtkPVBloomRenderView : public vtkPVRenderView
@@ -57,13 +58,13 @@ public:
   ///@}
 
   ///@{
-  /// "custom" (default) or a name of vtkImageBloom::GetPresetNames().
+  /// "custom" (default) or a name of vtkBloomParameters::GetPresetNames().
   void SetBloomPreset(const char* name);
   const char* GetBloomPreset();
   ///@}
 
   /// The hand-set parameters (the plugin's BloomParameters sub-proxy).
-  void SetBloomCustomParameters(vtkImageBloom* parameters);
+  void SetBloomCustomParameters(vtkBloomParameters* parameters);
 
   ///@{
   /// Precision of the pass's targets: 16 (half floats, default) or 32 (floats).
@@ -101,7 +102,7 @@ protected:
   bool CompositeFloatColor = true;
   vtkNew<vtkPVBloomPass> BloomPass;
   vtkNew<vtkPVBloomCompositeScenePass> CompositeScenePass;
-  vtkNew<vtkPVImageBloom> BloomParameters;
+  vtkNew<vtkPVImageBloom> BloomPresetResolver;
 
 private:
   vtkPVBloomRenderView(const vtkPVBloomRenderView&) = delete;

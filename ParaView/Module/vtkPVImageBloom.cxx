@@ -37,15 +37,11 @@ void vtkPVImageBloom::SetPreset(const char* name)
   {
     return;
   }
-  const auto names = vtkImageBloom::GetPresetNames();
+  const auto names = vtkBloomParameters::GetPresetNames();
   if (preset != "custom" && std::find(names.begin(), names.end(), preset) == names.end())
   {
-    std::string expected = "custom";
-    for (const std::string& known : names)
-    {
-      expected += ", " + known;
-    }
-    vtkErrorMacro(<< "Unknown bloom preset '" << preset << "'; expected " << expected << ".");
+    vtkErrorMacro(<< "Unknown bloom preset '" << preset << "'; expected custom, "
+                  << vtkBloomParameters::GetPresetNamesList() << ".");
     return;
   }
   this->Preset = preset;
@@ -54,7 +50,7 @@ void vtkPVImageBloom::SetPreset(const char* name)
 }
 
 //------------------------------------------------------------------------------
-void vtkPVImageBloom::SetCustomParameters(vtkImageBloom* parameters)
+void vtkPVImageBloom::SetCustomParameters(vtkBloomParameters* parameters)
 {
   if (parameters && parameters == this->CustomParameters)
   {
@@ -64,7 +60,7 @@ void vtkPVImageBloom::SetCustomParameters(vtkImageBloom* parameters)
   {
     this->CustomParameters->RemoveObserver(this->CustomObserver);
   }
-  this->CustomParameters = parameters ? parameters : vtkSmartPointer<vtkImageBloom>::New().Get();
+  this->CustomParameters = parameters ? parameters : vtkSmartPointer<vtkBloomParameters>::New().Get();
   this->CustomObserver = this->CustomParameters->AddObserver(
     vtkCommand::ModifiedEvent, this, &vtkPVImageBloom::UpdateParameters);
   this->UpdateParameters();
@@ -73,14 +69,14 @@ void vtkPVImageBloom::SetCustomParameters(vtkImageBloom* parameters)
 //------------------------------------------------------------------------------
 void vtkPVImageBloom::UpdateParameters()
 {
-  vtkNew<vtkImageBloom> effective;
-  effective->CopyParameters(this->CustomParameters);
+  vtkNew<vtkBloomParameters> effective;
+  effective->DeepCopy(this->CustomParameters);
   if (this->Preset != "custom")
   {
-    effective->vtkImageBloom::SetPreset(this->Preset.c_str());
+    effective->SetPreset(this->Preset.c_str());
   }
   // Calls Modified() only when a parameter changed.
-  this->CopyParameters(effective);
+  this->GetParameters()->DeepCopy(effective);
 }
 
 //------------------------------------------------------------------------------

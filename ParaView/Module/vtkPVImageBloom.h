@@ -7,16 +7,19 @@
  * vtkImageBloom::SetPreset would be undone by whichever parameter properties sort after it.
  * This filter keeps the two apart:
  *
- * - the hand-set parameters live in a separate vtkImageBloom, CustomParameters (in the
+ * - the hand-set parameters live in a separate vtkBloomParameters, CustomParameters (in the
  *   plugin, a sub-proxy whose properties the Bloom proxy exposes);
- * - Preset is "custom" (the parameters as set) or a name of vtkImageBloom::GetPresetNames().
+ * - Preset is "custom" (the parameters as set) or a name of
+ *   vtkBloomParameters::GetPresetNames().
  *
- * Whenever either changes, the parameters this filter runs with are rebuilt: a copy of the
- * custom parameters, then SetPreset(Preset) unless the preset is "custom". A preset defines
- * the bloom's shape (bright pass, pyramid, blur, composite), exactly as `vtk-bloom image
- * --preset NAME` does; what no preset sets (the execution mode, convolution mode, skipping
- * and sanitizing options, the PSF parameters) stays as set. Parameters are copied with
- * vtkImageBloom::CopyParameters, so an unchanged configuration does not re-execute.
+ * Whenever either changes, the parameters this filter runs with (GetParameters()) are
+ * rebuilt: a copy of the custom parameters, then SetPreset(Preset) unless the preset is
+ * "custom". A preset defines the bloom's shape (bright pass, pyramid, blur, composite), exactly
+ * as `vtk-bloom image --preset NAME` does; what no preset sets (convolution mode, skipping and
+ * sanitizing options, the PSF parameters) stays as set. Parameters are copied with
+ * vtkBloomParameters::DeepCopy, so an unchanged configuration does not re-execute. The bloom
+ * render view (vtkPVBloomRenderView) resolves its preset with one of these too, and gives its
+ * pass the resolved parameters.
  *
  * The filter blooms the point array chosen with SetInputArrayToProcess(0, ...) (ParaView's
  * "Scalars" property), or the active scalars when none is chosen.
@@ -49,11 +52,11 @@ public:
 
   ///@{
   /**
-   * The hand-set parameters; a new filter holds one with vtkImageBloom's defaults. Setting
-   * null restores such a default set. Its input and output are never used.
+   * The hand-set parameters; a new filter holds a default set. Setting null restores such a
+   * default set.
    */
-  void SetCustomParameters(vtkImageBloom* parameters);
-  vtkImageBloom* GetCustomParameters() { return this->CustomParameters; }
+  void SetCustomParameters(vtkBloomParameters* parameters);
+  vtkBloomParameters* GetCustomParameters() { return this->CustomParameters; }
   ///@}
 
 protected:
@@ -67,7 +70,7 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
 
   std::string Preset;
-  vtkSmartPointer<vtkImageBloom> CustomParameters;
+  vtkSmartPointer<vtkBloomParameters> CustomParameters;
   unsigned long CustomObserver = 0;
 
 private:

@@ -225,8 +225,10 @@ TEST(FiltersErrors, PrintSelfNamesParameters)
         "BlurTapSpacing", "BlurIterations", "UpsampleKernel", "AccumulateMode", "LevelWeights",
         "CompositeMode", "Strength", "Tint", "ConvolutionMode", "BloomMode", "PSFType",
         "AiryRadius", "Wavelengths", "PSFGaussianSigmas", "PSFGaussianWeights", "PSFRadius",
-        "PSFBorderMode", "LastRunWasFast", "LastBloomSkipped", "LastLevelsBuilt",
-        "LastWorkspaceBytes", "LastFFTBlurs" } },
+        "PSFBorderMode", "SkipEmptyBloom", "SkipDisabledEffects", "TrimPyramid",
+        "RestrictToBrightRegion", "SanitizeNonFinite", "ExecutionMode", "UseAVX2",
+        "ComputeStatistics", "LastRunWasFast", "LastBloomSkipped", "LastLevelsBuilt",
+        "LastWorkspaceBytes", "LastRunUsedAVX2", "LastFFTBlurs" } },
   };
   for (const auto& e : expected)
   {
@@ -244,8 +246,8 @@ TEST(FiltersErrors, PrintSelfNamesParameters)
   EXPECT_NE(Print(bloom).find("0.52"), std::string::npos);
   // Enums by name, not number.
   bloom->SetDownsampleKernel(vtkImagePyramidDown::BINOMIAL);
-  bloom->SetConvolutionMode(vtkImageBloom::CONVOLUTION_FFT);
-  bloom->SetPSFType(vtkImageBloom::PSF_GAUSSIANS);
+  bloom->SetConvolutionMode(vtkBloomParameters::CONVOLUTION_FFT);
+  bloom->SetPSFType(vtkBloomParameters::PSF_GAUSSIANS);
   const std::string text = Print(bloom);
   for (const char* named : { "DownsampleKernel: Binomial", "ConvolutionMode: FFT",
          "PSFType: Gaussians", "PSFBorderMode: Reflect", "BlurGaussianKind: " })

@@ -147,7 +147,7 @@ std::vector<Case> Cases()
       f->SetBlurStandardDeviation(1.5);
       f->SetBlurGaussianKind(2);
       f->SetNumberOfLevels(4);
-      f->SetCompositeMode(vtkImageBloom::LERP);
+      f->SetCompositeMode(vtkBloomParameters::LERP);
       return As(f);
     } });
   cases.push_back({ "bloom-karis-direct",
@@ -155,7 +155,7 @@ std::vector<Case> Cases()
     {
       auto f = vtkSmartPointer<vtkImageBloom>::New();
       f->SetKarisAverage(true);
-      f->SetAccumulateMode(vtkImageBloom::DIRECT);
+      f->SetAccumulateMode(vtkBloomParameters::DIRECT);
       f->SetStartLevel(0);
       f->SetThreshold(0.5);
       return As(f);

@@ -116,7 +116,7 @@ vtkSmartPointer<vtkImageData> BrightPass(vtkImageData* input)
 
 TEST(FiltersPSF, EveryPSFIsNormalizedAndSymmetric)
 {
-  for (int type : { vtkImageBloom::PSF_AIRY, vtkImageBloom::PSF_GAUSSIANS })
+  for (int type : { vtkBloomParameters::PSF_AIRY, vtkBloomParameters::PSF_GAUSSIANS })
   {
     auto bloom = PSFBloom(type);
     double peak[3];
@@ -137,7 +137,7 @@ TEST(FiltersPSF, EveryPSFIsNormalizedAndSymmetric)
       peak[c] = psf[static_cast<size_t>(r) * n + r];
       EXPECT_EQ(*std::max_element(psf.begin(), psf.end()), peak[c]);
     }
-    if (type == vtkImageBloom::PSF_AIRY)
+    if (type == vtkBloomParameters::PSF_AIRY)
     {
       // Diffraction spreads longer wavelengths wider: red's peak is lowest, blue's highest.
       EXPECT_LT(peak[0], peak[1]);
@@ -148,7 +148,7 @@ TEST(FiltersPSF, EveryPSFIsNormalizedAndSymmetric)
 
 TEST(FiltersPSF, ReflectBordersConserveTheBrightPassEnergy)
 {
-  for (int type : { vtkImageBloom::PSF_AIRY, vtkImageBloom::PSF_GAUSSIANS })
+  for (int type : { vtkBloomParameters::PSF_AIRY, vtkBloomParameters::PSF_GAUSSIANS })
   {
     auto bloom = PSFBloom(type); // one filter for every size: its prepared plans follow
     for (int nc : { 1, 3, 4 })
@@ -178,7 +178,7 @@ TEST(FiltersPSF, AgreesWithADirectReflectConvolution)
 {
   const int w = 41, h = 29;
   auto input = Scene(w, h, 3, VTK_DOUBLE);
-  auto bloom = PSFBloom(vtkImageBloom::PSF_AIRY);
+  auto bloom = PSFBloom(vtkBloomParameters::PSF_AIRY);
   bloom->SetPSFRadius(9);
   bloom->SetInputData(input);
   bloom->Update();
@@ -228,7 +228,7 @@ TEST(FiltersPSF, AMeasuredPSFSpreadsAPixelIntoItself)
   const double total = Sum(psf, 0);
   auto input =
     Image(21, 17, 1, VTK_DOUBLE, [](int i, int j, int) { return i == 8 && j == 9 ? 10.0 : 0.0; });
-  auto bloom = PSFBloom(vtkImageBloom::PSF_IMAGE);
+  auto bloom = PSFBloom(vtkBloomParameters::PSF_IMAGE);
   bloom->SetThresholdMode(vtkImageBloomThreshold::NONE);
   bloom->SetStrength(1.0);
   bloom->SetPSFImage(psf);
@@ -269,26 +269,26 @@ TEST(FiltersPSF, BadParametersGiveErrorsAndEmptyOutputs)
     EXPECT_EQ(bloom->GetOutput()->GetNumberOfPoints(), 0) << what;
   };
   {
-    auto bloom = PSFBloom(vtkImageBloom::PSF_IMAGE); // no image
+    auto bloom = PSFBloom(vtkBloomParameters::PSF_IMAGE); // no image
     check(bloom, input, "no PSF image");
   }
   {
-    auto bloom = PSFBloom(vtkImageBloom::PSF_IMAGE);
+    auto bloom = PSFBloom(vtkBloomParameters::PSF_IMAGE);
     bloom->SetPSFImage(Image(4, 4, 1, VTK_FLOAT, [](int, int, int) { return 1.0; }));
     check(bloom, input, "even size");
   }
   {
-    auto bloom = PSFBloom(vtkImageBloom::PSF_IMAGE);
+    auto bloom = PSFBloom(vtkBloomParameters::PSF_IMAGE);
     bloom->SetPSFImage(Image(3, 3, 1, VTK_FLOAT, [](int i, int, int) { return i - 1.0; }));
     check(bloom, input, "negative values");
   }
   {
-    auto bloom = PSFBloom(vtkImageBloom::PSF_GAUSSIANS);
+    auto bloom = PSFBloom(vtkBloomParameters::PSF_GAUSSIANS);
     bloom->SetPSFGaussians({ 1.0, 2.0 }, { 1.0 });
     check(bloom, input, "mismatched Gaussians");
   }
   {
-    auto bloom = PSFBloom(vtkImageBloom::PSF_AIRY);
+    auto bloom = PSFBloom(vtkBloomParameters::PSF_AIRY);
     check(bloom,
       Image(
         8, 8, 3, VTK_FLOAT, [](int, int, int) { return 2.0; }, 3),

@@ -208,7 +208,7 @@ TEST(FiltersPresetsClosedForm, CopyParameters)
       b->SetLevelWeights({ 0.5, 1.0, 2.0 });
       b->SetTint(1.0, 0.5, 0.25);
       b->SetStrength(0.7);
-      b->SetCompositeMode(vtkImageBloom::LERP);
+      b->SetCompositeMode(vtkBloomParameters::LERP);
     });
   configurations.emplace_back(
     [](vtkImageBloom* b)
@@ -309,7 +309,7 @@ std::vector<GenericCase> GenericCases()
       b->SetBlurIterations(2);
       b->SetUpsampleKernel(vtkImagePyramidUp::BILINEAR);
       b->SetLevelWeights({ 0.5, 1.0, 2.0 });
-      b->SetCompositeMode(vtkImageBloom::LERP);
+      b->SetCompositeMode(vtkBloomParameters::LERP);
       b->SetStrength(0.3);
       b->SetTint(1.0, 0.5, 0.25);
     };
@@ -337,10 +337,10 @@ std::vector<GenericCase> GenericCases()
       b->SetNumberOfLevels(7);
       b->LimitLevelsToImageSizeOn();
       b->SetDownsampleKernel(vtkImagePyramidDown::BOX);
-      b->SetBlurKernel(vtkImageBloom::BLUR_CUSTOM);
+      b->SetBlurKernel(vtkBloomParameters::BLUR_CUSTOM);
       b->SetBlurHalfKernel({ 0.5, 0.3 });
       b->SetBlurIterations(3);
-      b->SetAccumulateMode(vtkImageBloom::DIRECT);
+      b->SetAccumulateMode(vtkBloomParameters::DIRECT);
       b->SetLevelWeights({ 1.0, 0.0, 0.5 });
       b->SetStrength(2.0);
     };
@@ -367,7 +367,7 @@ std::vector<GenericCase> GenericCases()
       b->SetBlurStandardDeviation(0.8);
       b->SetBlurGaussianKind(vtkImageSeparableGaussian::INTEGRATED);
       b->SetBlurTapSpacing(0.5);
-      b->SetAccumulateMode(vtkImageBloom::DIRECT);
+      b->SetAccumulateMode(vtkBloomParameters::DIRECT);
     };
     cases.push_back(c);
   }
@@ -386,7 +386,7 @@ std::vector<GenericCase> GenericCases()
       b->SetStartLevel(2);
       b->SetNumberOfLevels(9);
       b->SetBlurIterations(0);
-      b->SetCompositeMode(vtkImageBloom::LERP);
+      b->SetCompositeMode(vtkBloomParameters::LERP);
       b->SetStrength(1.0);
     };
     cases.push_back(c);

@@ -344,7 +344,7 @@ TEST(NumericsHardCases, EverySizeEveryDepthKeepsConstants)
       bloom->SetStartLevel(0);
       bloom->SetNumberOfLevels(levels);
       bloom->SetLevelWeights(weights);
-      bloom->SetCompositeMode(vtkImageBloom::LERP);
+      bloom->SetCompositeMode(vtkBloomParameters::LERP);
       bloom->SetStrength(1.0);
       bloom->SetDownsampleKernel(configuration % 3);
       bloom->SetUpsampleKernel((configuration / 3) % 2);

@@ -61,8 +61,8 @@ TEST(PerformanceFFTBlur, AgreesWithTheDirectBlurForEveryPreset)
         auto input = MakeScene(scene, 640, 480, nc);
         int fftBlurs = 0;
         auto fft =
-          RunWithConvolution(input, preset, vtkImageBloom::CONVOLUTION_FFT, true, &fftBlurs);
-        auto direct = RunWithConvolution(input, preset, vtkImageBloom::CONVOLUTION_DIRECT);
+          RunWithConvolution(input, preset, vtkBloomParameters::CONVOLUTION_FFT, true, &fftBlurs);
+        auto direct = RunWithConvolution(input, preset, vtkBloomParameters::CONVOLUTION_DIRECT);
         const std::string what = preset + " " + SceneName(scene) + " nc " + std::to_string(nc);
         EXPECT_GT(fftBlurs, 0) << what;
         EXPECT_LE(ColourRelativeL2(fft, direct), 1e-6) << what;
@@ -79,7 +79,7 @@ TEST(PerformanceFFTBlur, PingPongMatchesItsFloat64Reference)
     vtkBloomRef::Preset("ping-pong", vtkBloomRef::FromImage(input));
   int fftBlurs = 0;
   auto fft =
-    RunWithConvolution(input, "ping-pong", vtkImageBloom::CONVOLUTION_FFT, true, &fftBlurs);
+    RunWithConvolution(input, "ping-pong", vtkBloomParameters::CONVOLUTION_FFT, true, &fftBlurs);
   EXPECT_EQ(fftBlurs, 2);
   EXPECT_LE(vtkBloomRef::RelativeL2(vtkBloomRef::FromImage(fft), reference, 3), 1e-6);
   // The bloom term alone: the reference minus its input.
@@ -105,8 +105,8 @@ TEST(PerformanceFFTBlur, ContentAwareWorkStaysExactThroughTheFFT)
       for (int nc : { 1, 4 })
       {
         auto input = MakeScene(scene, 430, 401, nc);
-        auto on = RunWithConvolution(input, preset, vtkImageBloom::CONVOLUTION_FFT, true);
-        auto off = RunWithConvolution(input, preset, vtkImageBloom::CONVOLUTION_FFT, false);
+        auto on = RunWithConvolution(input, preset, vtkBloomParameters::CONVOLUTION_FFT, true);
+        auto off = RunWithConvolution(input, preset, vtkBloomParameters::CONVOLUTION_FFT, false);
         vtkDataArray* a = on->GetPointData()->GetScalars();
         vtkDataArray* b = off->GetPointData()->GetScalars();
         ASSERT_EQ(a->GetNumberOfValues(), b->GetNumberOfValues());
@@ -123,10 +123,12 @@ TEST(PerformanceFFTBlur, AutomaticChoosesByCost)
 {
   auto input = MakeScene(SINGLE, 1920, 1080, 3);
   int fftBlurs = -1;
-  RunWithConvolution(input, "ping-pong", vtkImageBloom::CONVOLUTION_AUTOMATIC, true, &fftBlurs);
+  RunWithConvolution(
+    input, "ping-pong", vtkBloomParameters::CONVOLUTION_AUTOMATIC, true, &fftBlurs);
   EXPECT_EQ(fftBlurs, 2); // both axes of the one 385-tap level blur
-  RunWithConvolution(input, "webgpu-market", vtkImageBloom::CONVOLUTION_AUTOMATIC, true, &fftBlurs);
+  RunWithConvolution(
+    input, "webgpu-market", vtkBloomParameters::CONVOLUTION_AUTOMATIC, true, &fftBlurs);
   EXPECT_EQ(fftBlurs, 0); // 9 taps: direct is cheaper
-  RunWithConvolution(input, "ping-pong", vtkImageBloom::CONVOLUTION_DIRECT, true, &fftBlurs);
+  RunWithConvolution(input, "ping-pong", vtkBloomParameters::CONVOLUTION_DIRECT, true, &fftBlurs);
   EXPECT_EQ(fftBlurs, 0);
 }

@@ -79,10 +79,10 @@ TEST(PerformanceFastPath, AgreesWithReferenceForAGaussianChain)
     bloom->SetStartLevel(1);
     bloom->SetNumberOfLevels(6);
     bloom->SetDownsampleKernel(1);
-    bloom->SetBlurKernel(vtkImageBloom::BLUR_GAUSSIAN);
+    bloom->SetBlurKernel(vtkBloomParameters::BLUR_GAUSSIAN);
     bloom->SetBlurStandardDeviation(2.0);
     bloom->SetUpsampleKernel(1);
-    bloom->SetCompositeMode(vtkImageBloom::LERP);
+    bloom->SetCompositeMode(vtkBloomParameters::LERP);
     bloom->SetStrength(0.3);
     bloom->SetTint(1.0, 0.8, 0.6);
     bloom->SetLevelWeights({ 1.0, 0.8, 0.6, 0.5, 0.4, 0.3 });
@@ -268,9 +268,9 @@ TEST(PerformanceFastPath, AVX2GivesTheBaselineBits)
       b->SetThresholdMode(1);
       b->SetStartLevel(1);
       b->SetNumberOfLevels(6);
-      b->SetBlurKernel(vtkImageBloom::BLUR_GAUSSIAN);
+      b->SetBlurKernel(vtkBloomParameters::BLUR_GAUSSIAN);
       b->SetBlurStandardDeviation(2.0);
-      b->SetCompositeMode(vtkImageBloom::LERP);
+      b->SetCompositeMode(vtkBloomParameters::LERP);
       b->SetStrength(0.3);
       b->SetTint(1.0, 0.8, 0.6);
     });
@@ -317,7 +317,7 @@ TEST(PerformanceFastPath, ReusedWorkspaceHoldsNoStaleSamples)
 {
   for (const char* preset : Presets)
   {
-    for (int mode : { vtkImageBloom::CASCADE, vtkImageBloom::DIRECT })
+    for (int mode : { vtkBloomParameters::CASCADE, vtkBloomParameters::DIRECT })
     {
       for (int nc : { 1, 4 })
       {

@@ -123,13 +123,14 @@ double PresetAgreement(const std::string& preset, int precision, const std::stri
   // The scene must actually be HDR, or the test would not exercise the float path.
   EXPECT_GT(MaxChannel(sceneImage, 0), 1.5) << "the scene has nothing above 1";
 
-  vtkImageBloom* cpu = w.Bloom->GetParameters();
+  // The filter evaluates the pass's own parameters: one set, shared.
+  vtkNew<vtkImageBloom> cpu;
+  cpu->SetParameters(w.Bloom->GetParameters());
   cpu->SetInputData(sceneImage);
   cpu->Update();
   const double error = ColourRelativeL2(gpu, cpu->GetOutput());
   // The bloom must change the image, or agreement would be trivial.
   EXPECT_GT(ColourRelativeL2(sceneImage, cpu->GetOutput()), 1e-3);
-  cpu->SetInputData(nullptr);
   return error;
 }
 }
@@ -183,7 +184,7 @@ TEST(RenderingBloomPass, SkipsAnEmptyBloomExactly)
     w.Bloom->SetEmissionSourceToScene();
     w.Bloom->SetFloatPrecisionTo32Bit();
     w.Bloom->CaptureResultOn();
-    vtkImageBloom* p = w.Bloom->GetParameters();
+    vtkBloomParameters* p = w.Bloom->GetParameters();
     p->SetThreshold(1e30);
     p->SetSkipEmptyBloom(skip);
     // The occlusion query's path; the bright region's reduction (RestrictToBrightRegion) has
@@ -198,11 +199,12 @@ TEST(RenderingBloomPass, SkipsAnEmptyBloomExactly)
       EXPECT_EQ(w.Bloom->GetNumberOfPasses(), 3);
       ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
       ASSERT_TRUE(w.Bloom->ReadResultImage(skipped));
-      p->SetInputData(scene);
-      p->Update();
-      EXPECT_TRUE(p->GetLastBloomSkipped());
-      EXPECT_EQ(ColourRelativeL2(skipped, p->GetOutput()), 0.0);
-      p->SetInputData(nullptr);
+      vtkNew<vtkImageBloom> cpu;
+      cpu->SetParameters(p);
+      cpu->SetInputData(scene);
+      cpu->Update();
+      EXPECT_TRUE(cpu->GetLastBloomSkipped());
+      EXPECT_EQ(ColourRelativeL2(skipped, cpu->GetOutput()), 0.0);
     }
     else
     {
@@ -241,6 +243,36 @@ TEST(RenderingBloomPass, ApplyToImageMatchesThePresetExamples)
     const double error = ColourRelativeL2(gpu, expectedReader->GetOutput());
     EXPECT_LE(error, 1e-5) << preset;
     std::cout << "[ presets ] " << preset << " relative L2 vs float64 " << error << "\n";
+  }
+}
+
+//------------------------------------------------------------------------------
+// One parameter set: a pass given parameters made before its chain was built (an older
+// modification time) still rebuilds its chain for them, and a filter sharing them computes the
+// same bloom; an edit through the filter reaches the pass.
+TEST(RenderingBloomPass, SharedParametersDriveThePassAndTheFilter)
+{
+  VTKBLOOM_REQUIRE_DATA(input, "presets/example_161x91.exr");
+  vtkNew<vtkOpenEXRReader> reader;
+  reader->SetFileName(input.c_str());
+  reader->Update();
+  vtkNew<vtkImageBloom> cpu;
+  cpu->SetPreset("crt-halfres"); // older than the chain the pass is about to build
+  cpu->SetExecutionModeToReference();
+  cpu->SetInputData(reader->GetOutput());
+  BloomWindow w(16, 16);
+  w.Bloom->SetFloatPrecisionTo32Bit();
+  vtkNew<vtkImageData> defaults, shared;
+  ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), reader->GetOutput(), defaults));
+  w.Bloom->SetParameters(cpu->GetParameters());
+  EXPECT_EQ(w.Bloom->GetParameters(), cpu->GetParameters());
+  for (const double strength : { 1.5 /* the preset's own: no edit */, 0.25 })
+  {
+    cpu->GetParameters()->SetStrength(strength);
+    ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), reader->GetOutput(), shared));
+    cpu->Update();
+    EXPECT_LE(ColourRelativeL2(shared, cpu->GetOutput()), 1e-5) << strength;
+    EXPECT_GT(ColourRelativeL2(shared, defaults), 1e-3) << strength;
   }
 }
 
@@ -500,7 +532,8 @@ TEST(RenderingBloomPass, NonFiniteInputFollowsTheCPUPolicy)
   BloomWindow w(16, 16);
   w.Bloom->SetFloatPrecisionTo32Bit();
   w.Bloom->SetPreset("webgpu-market");
-  vtkImageBloom* cpu = w.Bloom->GetParameters();
+  vtkNew<vtkImageBloom> cpu;
+  cpu->SetParameters(w.Bloom->GetParameters());
   cpu->SetExecutionModeToReference();
   cpu->SetInputData(reader->GetOutput());
   for (const bool sanitize : { true, false })

@@ -3,7 +3,7 @@
 // and negative input. Inputs come from vtkBloomHardCases, as for the CPU suite
 // (Testing/Numerics/TestNumericsHardCases.cxx). Each case asserts a stated property; where the
 // CPU vtkImageBloom is the reference it runs with the same parameters (the pass's own
-// vtkImageBloom) in REFERENCE mode, the double-precision chain.
+// vtkBloomParameters, shared) in REFERENCE mode, the double-precision chain.
 // One file for all of them (about 800 lines), so that the GPU cases sit beside each other as
 // the CPU suite's do and share one fixture (GpuBloom); each TEST is independent and short.
 #include "vtkBloomChain.h"
@@ -58,7 +58,7 @@ struct GpuBloom
   }
   ~GpuBloom() { this->Pass->ReleaseGraphicsResources(this->Window); }
 
-  vtkImageBloom* Parameters() { return this->Pass->GetParameters(); }
+  vtkBloomParameters* Parameters() { return this->Pass->GetParameters(); }
 
   /// The GPU result (float RGBA), or null after an error.
   vtkSmartPointer<vtkImageData> Apply(vtkImageData* input)
@@ -74,14 +74,11 @@ struct GpuBloom
   /// The CPU filter with the pass's parameters, in its REFERENCE (double) mode.
   vtkSmartPointer<vtkImageData> Cpu(vtkImageData* input)
   {
-    vtkImageBloom* cpu = this->Parameters();
+    vtkNew<vtkImageBloom> cpu;
+    cpu->SetParameters(this->Parameters());
     cpu->SetExecutionModeToReference();
     cpu->SetInputData(input);
-    cpu->Update();
-    auto output = vtkSmartPointer<vtkImageData>::New();
-    output->DeepCopy(cpu->GetOutput());
-    cpu->SetInputData(nullptr);
-    return output;
+    return vtkBloomTest::UpdateAndCopy(cpu);
   }
 };
 
@@ -138,7 +135,7 @@ std::vector<bool> Union(std::vector<bool> a, const std::vector<bool>& b)
  * final fetch) along each axis. Every step is a sum of separable terms, so the exact footprint
  * is a union of boxes inside this one. Outside it the bloom term is exactly 0.
  */
-Box Support(vtkImageBloom* parameters, int w, int h, int cx, int cy)
+Box Support(vtkBloomParameters* parameters, int w, int h, int cx, int cy)
 {
   vtkBloomChain chain;
   chain.Build(parameters, w, h);
@@ -171,7 +168,7 @@ Box Support(vtkImageBloom* parameters, int w, int h, int cx, int cy)
       blurred[i] = l.Blur ? Reach(op(l.BlurPass), level) : level;
     }
     std::vector<bool> bloom(static_cast<size_t>(n), false);
-    if (chain.AccumulateMode == vtkImageBloom::CASCADE)
+    if (chain.AccumulateMode == vtkBloomParameters::CASCADE)
     {
       std::vector<bool> a(blurred[levels - 1].size(), false);
       for (size_t i = levels; i-- > 0;)
@@ -281,7 +278,7 @@ vtkSmartPointer<vtkImageData> AsRGB(vtkImageData* image, int type)
  * a few u of the pixel, which an ADDITIVE output (input + bloom) contains; the 8 point-wise
  * roundings cover it for knee 0.5.
  */
-double ChainRoundingBound(vtkImageBloom* parameters, int w, int h)
+double ChainRoundingBound(vtkBloomParameters* parameters, int w, int h)
 {
   vtkBloomChain chain;
   chain.Build(parameters, w, h);
@@ -568,7 +565,7 @@ TEST(RenderingBloomPassHardCases, WideDynamicRangeKeepsTheEnergy)
     auto asDouble = AsRGB(input, VTK_DOUBLE);
     for (int configuration = 0; configuration < 2; ++configuration)
     {
-      vtkImageBloom* p = gpu.Parameters();
+      vtkBloomParameters* p = gpu.Parameters();
       if (configuration == 0)
       {
         // The additive preset; its bloom of 1.7e38 would exceed the float range, so only the
@@ -587,7 +584,7 @@ TEST(RenderingBloomPassHardCases, WideDynamicRangeKeepsTheEnergy)
         p->SetLimitLevelsToImageSize(false);
         p->SetNumberOfLevels(5);
         p->SetLevelWeights(std::vector<double>(5, 0.2));
-        p->SetAccumulateMode(vtkImageBloom::CASCADE);
+        p->SetAccumulateMode(vtkBloomParameters::CASCADE);
         p->SetStrength(1.0);
       }
       // The input is finite; sanitizing would change nothing (FiniteValuesAboveVtkFloatMaxAreKept).
@@ -635,12 +632,12 @@ TEST(RenderingBloomPassHardCases, TinyAndOddSizesKeepConstants)
     sizes.push_back(size);
   }
   GpuBloom gpu;
-  vtkImageBloom* p = gpu.Parameters();
+  vtkBloomParameters* p = gpu.Parameters();
   p->SetThresholdMode(vtkImageBloomThreshold::NONE);
   p->SetStartLevel(0);
   p->SetNumberOfLevels(levels);
   p->SetLevelWeights(std::vector<double>(levels, 1.0 / levels));
-  p->SetCompositeMode(vtkImageBloom::LERP);
+  p->SetCompositeMode(vtkBloomParameters::LERP);
   p->SetStrength(1.0);
   double worst = 0.0;
   int configuration = 0;
@@ -675,7 +672,7 @@ TEST(RenderingBloomPassHardCases, TinyAndOddSizesKeepConstants)
 TEST(RenderingBloomPassHardCases, ThresholdEdgeKneeZeroAndNegativeInput)
 {
   GpuBloom gpu;
-  vtkImageBloom* p = gpu.Parameters();
+  vtkBloomParameters* p = gpu.Parameters();
   for (const double threshold :
     { 0.0, std::ldexp(1.0, -100), 0.75, 1.0, 4.0, std::ldexp(1.0, 100) })
   {

@@ -165,7 +165,7 @@ TEST(RenderingBloomPassRegion, RestrictedChainIsBitIdenticalToTheFullChain)
             gpu.Pass->SetUseComputeShaders(compute);
             gpu.Pass->SetFloatPrecision(precision);
             gpu.Pass->SetQuality(quality);
-            vtkImageBloom* p = gpu.Pass->GetParameters();
+            vtkBloomParameters* p = gpu.Pass->GetParameters();
             p->SetSkipEmptyBloom(false);
             p->SetRestrictToBrightRegion(false);
             vtkSmartPointer<vtkImageData> full = gpu.Apply(input);

@@ -1,8 +1,9 @@
-// vtkImageBloom's presets: the four seed bloom systems as ../shared/seeds/PRESETS.md pins them,
-// with their known defects fixed (docs/presets.md lists each deviation). A table of parameter
-// values, apart from the filter's pipeline code in vtkImageBloom.cxx.
-#include "vtkImageBloom.h"
+// vtkBloomParameters' presets and copy: the four seed bloom systems as
+// ../shared/seeds/PRESETS.md pins them, with their known defects fixed (docs/presets.md lists
+// each deviation). A table of parameter values, apart from the accessors in vtkBloomParameters.cxx.
+#include "vtkBloomParameters.h"
 
+#include "vtkBloomKernels.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"
 #include "vtkImagePyramidDown.h"
@@ -13,26 +14,45 @@
 #include <vector>
 
 //------------------------------------------------------------------------------
-std::vector<std::string> vtkImageBloom::GetPresetNames()
+std::vector<std::string> vtkBloomParameters::GetPresetNames()
 {
   return { "webgpu-market", "mip-atlas", "ping-pong", "crt-halfres" };
 }
 
 //------------------------------------------------------------------------------
-bool vtkImageBloom::SetPreset(const char* name)
+std::string vtkBloomParameters::GetPresetNamesList()
+{
+  std::string list;
+  for (const std::string& name : vtkBloomParameters::GetPresetNames())
+  {
+    list += (list.empty() ? "" : ", ") + name;
+  }
+  return list;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkBloomParameters::CheckPresetName(const char* name)
 {
   const std::string preset = name ? name : "";
-  const auto names = vtkImageBloom::GetPresetNames();
-  if (std::find(names.begin(), names.end(), preset) == names.end())
+  const auto names = vtkBloomParameters::GetPresetNames();
+  if (std::find(names.begin(), names.end(), preset) != names.end())
   {
-    std::string expected;
-    for (const std::string& known : names)
-    {
-      expected += (expected.empty() ? "" : ", ") + known;
-    }
-    vtkErrorMacro(<< "Unknown bloom preset '" << preset << "'; expected " << expected << ".");
+    return std::string();
+  }
+  return "Unknown bloom preset '" + preset + "'; expected " +
+    vtkBloomParameters::GetPresetNamesList() + ".";
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomParameters::SetPreset(const char* name)
+{
+  const std::string error = vtkBloomParameters::CheckPresetName(name);
+  if (!error.empty())
+  {
+    vtkErrorMacro(<< error);
     return false;
   }
+  const std::string preset = name;
   // Shared defaults; each preset then states what it changes.
   this->BloomMode = BLOOM_PYRAMID;
   this->ClampLuminance = VTK_FLOAT_MAX;
@@ -136,7 +156,8 @@ void CopyIfDifferent(double (&to)[3], const double (&from)[3], bool& changed)
 }
 }
 
-void vtkImageBloom::CopyParameters(vtkImageBloom* source)
+//------------------------------------------------------------------------------
+void vtkBloomParameters::DeepCopy(vtkBloomParameters* source)
 {
   if (!source || source == this)
   {
@@ -165,14 +186,11 @@ void vtkImageBloom::CopyParameters(vtkImageBloom* source)
   CopyIfDifferent(this->CompositeMode, source->CompositeMode, changed);
   CopyIfDifferent(this->Strength, source->Strength, changed);
   CopyIfDifferent(this->Tint, source->Tint, changed);
-  CopyIfDifferent(this->ComputeStatistics, source->ComputeStatistics, changed);
-  CopyIfDifferent(this->SanitizeNonFinite, source->SanitizeNonFinite, changed);
-  CopyIfDifferent(this->ExecutionMode, source->ExecutionMode, changed);
   CopyIfDifferent(this->SkipEmptyBloom, source->SkipEmptyBloom, changed);
   CopyIfDifferent(this->SkipDisabledEffects, source->SkipDisabledEffects, changed);
   CopyIfDifferent(this->TrimPyramid, source->TrimPyramid, changed);
   CopyIfDifferent(this->RestrictToBrightRegion, source->RestrictToBrightRegion, changed);
-  CopyIfDifferent(this->UseAVX2, source->UseAVX2, changed);
+  CopyIfDifferent(this->SanitizeNonFinite, source->SanitizeNonFinite, changed);
   CopyIfDifferent(this->ConvolutionMode, source->ConvolutionMode, changed);
   CopyIfDifferent(this->BloomMode, source->BloomMode, changed);
   CopyIfDifferent(this->PSFType, source->PSFType, changed);
