@@ -164,101 +164,23 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
 void vtkBloomPassChainRunner::Pass(
   vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec)
 {
-  vtkOpenGLState* state = this->Resources.Context->GetState();
   if (this->Profiling)
   {
     this->BeginProfiledSpan();
   }
   const int width = spec.X ? spec.X->OutputSize : spec.SourceSize[0];
   const int height = spec.Y ? spec.Y->OutputSize : spec.SourceSize[1];
-  if (target && !spec.Blend && spec.Step != STEP_COMPOSITE)
-  {
-    this->PrepareTarget(*target, spec.Region, width, height);
-  }
-  const ImageTarget image = this->ComputeTarget(target, origin, spec, width, height);
+  const ImageTarget image = this->BeginPass(target, origin, spec, width, height);
   const bool compute = image.Texture != 0;
-  if (target && !compute)
-  {
-    target->FBO->Bind();
-    target->FBO->ActivateDrawBuffer(0);
-  }
-  if (spec.Blend)
-  {
-    state->vtkglEnable(GL_BLEND);
-    state->vtkglBlendEquation(GL_FUNC_ADD);
-    state->vtkglBlendFunc(GL_ONE, GL_ONE);
-  }
-  else
-  {
-    state->vtkglDisable(GL_BLEND);
-  }
-  const Box whole = Box::Whole(width, height);
-  const Box region = spec.Region ? spec.Region->Intersection(whole) : whole;
-  // The composite outside a restricted region: the bloom there is zero (ZERO_BLOOM).
-  std::vector<Box> zeroRects;
-  if (spec.Step == STEP_COMPOSITE && spec.Region && !region.Empty())
-  {
-    const Box parts[] = { { 0, width, 0, region.Y0 }, { 0, width, region.Y1, height },
-      { 0, region.X0, region.Y0, region.Y1 }, { region.X1, width, region.Y0, region.Y1 } };
-    for (const Box& part : parts)
-    {
-      if (!part.Empty())
-      {
-        zeroRects.push_back(part);
-      }
-    }
-  }
-  else if (spec.Step == STEP_COMPOSITE && spec.Region)
-  {
-    zeroRects.push_back(whole);
-  }
-  if (spec.Step != STEP_COMPOSITE && !spec.ReadsSource)
-  {
-    this->FullSamples += static_cast<double>(width) * height;
-    this->ComputedSamples += static_cast<double>(region.Empty() ? 0 : region.X1 - region.X0) *
-      (region.Empty() ? 0 : region.Y1 - region.Y0);
-  }
-
-  vtkTextureObject* textures[] = { spec.Source, spec.X ? this->OperatorTexture(*spec.X) : nullptr,
-    spec.Y ? this->OperatorTexture(*spec.Y) : nullptr, spec.Addend,
-    spec.Step == STEP_COMPOSITE ? this->Resources.Scene.Color.Get() : nullptr,
-    spec.ReadsSource && this->MaskSource ? this->Resources.Emitter.Depth.Get() : nullptr,
-    spec.ReadsSource && this->MaskSource ? this->Resources.Scene.Depth.Get() : nullptr };
-  const char* samplers[] = { "source", "xRows", "yRows", "addend", "scene", "emitterDepth",
-    "sceneDepth" };
-  for (vtkTextureObject* texture : textures)
+  const PassTextures textures = this->PassTexturesOf(spec);
+  for (vtkTextureObject* texture : textures.Textures)
   {
     if (texture)
     {
       texture->Activate();
     }
   }
-  // One draw per combination of x and y segments (cut to the region), then the zero-bloom
-  // rectangles of a restricted composite.
-  struct Draw
-  {
-    Box Rect;
-    int XMode;
-    int YMode;
-    bool Zero;
-  };
-  std::vector<Draw> draws;
-  for (const Segment& sy : this->Segments(spec.Y, spec.SourceSize[1]))
-  {
-    for (const Segment& sx : this->Segments(spec.X, spec.SourceSize[0]))
-    {
-      const Box cut = Box{ sx.Begin, sx.End, sy.Begin, sy.End }.Intersection(region);
-      if (!cut.Empty())
-      {
-        draws.push_back({ cut, sx.Mode, sy.Mode, false });
-      }
-    }
-  }
-  for (const Box& rect : zeroRects)
-  {
-    draws.push_back({ rect, OP_IDENTITY, OP_IDENTITY, true });
-  }
-  for (const Draw& draw : draws)
+  for (const Draw& draw : this->Draws(spec, width, height))
   {
     PassSpec variant = spec;
     variant.ZeroBloom = draw.Zero;
@@ -285,49 +207,7 @@ void vtkBloomPassChainRunner::Pass(
       }
       u.Program = quad->Program;
     }
-    for (size_t t = 0; t < sizeof(textures) / sizeof(textures[0]); ++t)
-    {
-      if (textures[t])
-      {
-        u.Int(samplers[t], textures[t]->GetTextureUnit());
-      }
-    }
-    const int offset[2] = { draw.Rect.X0, draw.Rect.Y0 };
-    const float size[2] = { static_cast<float>(draw.Rect.X1 - draw.Rect.X0),
-      static_cast<float>(draw.Rect.Y1 - draw.Rect.Y0) };
-    u.Int2("regionOffset", offset);
-    u.Float2("regionSize", size);
-    u.Float("weight", spec.Weight);
-    u.Float("zeroBloom", 0.0);
-    u.Int("xWidth", spec.X ? spec.X->Width : 0);
-    u.Int("yWidth", spec.Y ? spec.Y->Width : 0);
-    const float texel[2] = { 1.0f / spec.Source->GetWidth(), 1.0f / spec.Source->GetHeight() };
-    u.Float2("sourceTexel", texel);
-    const vtkBloomLinearOperator* ops[2] = { spec.X, spec.Y };
-    const int modes[2] = { draw.XMode, draw.YMode };
-    const char* names[2][3] = { { "xInterior", "xWeights", "xOffsets" },
-      { "yInterior", "yWeights", "yOffsets" } };
-    for (int axis = 0; axis < 2; ++axis)
-    {
-      if (modes[axis] != OP_PERIODIC)
-      {
-        continue;
-      }
-      const Interior& in = this->InteriorOf(*ops[axis]);
-      const int values[3] = { in.Begin, in.First[0], in.First[1] };
-      u.Ints(names[axis][0], 3, values);
-      if (this->Linear(spec, ops[axis]))
-      {
-        const int n = static_cast<int>(in.PairWeights.size());
-        u.Floats(names[axis][1], n, in.PairWeights.data());
-        u.Floats(names[axis][2], n, in.PairOffsets.data());
-      }
-      else
-      {
-        u.Floats(names[axis][1], static_cast<int>(in.Weights.size()), in.Weights.data());
-      }
-    }
-    this->SetStepUniforms(u, spec.Step);
+    this->SetDrawUniforms(u, spec, draw, textures);
     if (compute)
     {
       u.Int2("targetOffset", image.Offset);
@@ -335,8 +215,8 @@ void vtkBloomPassChainRunner::Pass(
     }
     else
     {
-      state->vtkglViewport(origin[0] + draw.Rect.X0, origin[1] + draw.Rect.Y0,
-        draw.Rect.X1 - draw.Rect.X0, draw.Rect.Y1 - draw.Rect.Y0);
+      this->Resources.Context->GetState()->vtkglViewport(origin[0] + draw.Rect.X0,
+        origin[1] + draw.Rect.Y0, draw.Rect.X1 - draw.Rect.X0, draw.Rect.Y1 - draw.Rect.Y0);
       quad->Render();
     }
   }
@@ -345,7 +225,7 @@ void vtkBloomPassChainRunner::Pass(
     this->EndCompute();
     ++this->ComputePasses;
   }
-  for (vtkTextureObject* texture : textures)
+  for (vtkTextureObject* texture : textures.Textures)
   {
     if (texture)
     {
@@ -357,6 +237,144 @@ void vtkBloomPassChainRunner::Pass(
     this->EndProfiledPass(spec);
   }
   ++this->Passes;
+}
+
+//------------------------------------------------------------------------------
+vtkBloomPassChainRunner::ImageTarget vtkBloomPassChainRunner::BeginPass(
+  vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec, int width, int height)
+{
+  if (target && !spec.Blend && spec.Step != STEP_COMPOSITE)
+  {
+    this->PrepareTarget(*target, spec.Region, width, height);
+  }
+  const ImageTarget image = this->ComputeTarget(target, origin, spec, width, height);
+  if (target && image.Texture == 0)
+  {
+    target->FBO->Bind();
+    target->FBO->ActivateDrawBuffer(0);
+  }
+  vtkOpenGLState* state = this->Resources.Context->GetState();
+  if (spec.Blend)
+  {
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendEquation(GL_FUNC_ADD);
+    state->vtkglBlendFunc(GL_ONE, GL_ONE);
+  }
+  else
+  {
+    state->vtkglDisable(GL_BLEND);
+  }
+  return image;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
+  const PassSpec& spec, int width, int height)
+{
+  const Box whole = Box::Whole(width, height);
+  const Box region = spec.Region ? spec.Region->Intersection(whole) : whole;
+  if (spec.Step != STEP_COMPOSITE && !spec.ReadsSource)
+  {
+    this->FullSamples += static_cast<double>(width) * height;
+    this->ComputedSamples += static_cast<double>(region.Empty() ? 0 : region.X1 - region.X0) *
+      (region.Empty() ? 0 : region.Y1 - region.Y0);
+  }
+  // One draw per combination of x and y segments, cut to the region...
+  std::vector<Draw> draws;
+  for (const Segment& sy : this->Segments(spec.Y, spec.SourceSize[1]))
+  {
+    for (const Segment& sx : this->Segments(spec.X, spec.SourceSize[0]))
+    {
+      const Box cut = Box{ sx.Begin, sx.End, sy.Begin, sy.End }.Intersection(region);
+      if (!cut.Empty())
+      {
+        draws.push_back({ cut, sx.Mode, sy.Mode, false });
+      }
+    }
+  }
+  // ... then, for a restricted composite, the rectangles outside the region, where the bloom is
+  // zero (ZERO_BLOOM).
+  if (spec.Step == STEP_COMPOSITE && spec.Region)
+  {
+    if (region.Empty())
+    {
+      draws.push_back({ whole, OP_IDENTITY, OP_IDENTITY, true });
+      return draws;
+    }
+    const Box parts[] = { { 0, width, 0, region.Y0 }, { 0, width, region.Y1, height },
+      { 0, region.X0, region.Y0, region.Y1 }, { region.X1, width, region.Y0, region.Y1 } };
+    for (const Box& part : parts)
+    {
+      if (!part.Empty())
+      {
+        draws.push_back({ part, OP_IDENTITY, OP_IDENTITY, true });
+      }
+    }
+  }
+  return draws;
+}
+
+//------------------------------------------------------------------------------
+vtkBloomPassChainRunner::PassTextures vtkBloomPassChainRunner::PassTexturesOf(const PassSpec& spec)
+{
+  const bool mask = spec.ReadsSource && this->MaskSource;
+  PassTextures t;
+  t.Textures = { spec.Source, spec.X ? this->OperatorTexture(*spec.X) : nullptr,
+    spec.Y ? this->OperatorTexture(*spec.Y) : nullptr, spec.Addend,
+    spec.Step == STEP_COMPOSITE ? this->Resources.Scene.Color.Get() : nullptr,
+    mask ? this->Resources.Emitter.Depth.Get() : nullptr,
+    mask ? this->Resources.Scene.Depth.Get() : nullptr };
+  return t;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::SetDrawUniforms(
+  Uniforms& u, const PassSpec& spec, const Draw& draw, const PassTextures& textures)
+{
+  for (size_t t = 0; t < textures.Textures.size(); ++t)
+  {
+    if (textures.Textures[t])
+    {
+      u.Int(PassTextures::Samplers[t], textures.Textures[t]->GetTextureUnit());
+    }
+  }
+  const int offset[2] = { draw.Rect.X0, draw.Rect.Y0 };
+  const float size[2] = { static_cast<float>(draw.Rect.X1 - draw.Rect.X0),
+    static_cast<float>(draw.Rect.Y1 - draw.Rect.Y0) };
+  u.Int2("regionOffset", offset);
+  u.Float2("regionSize", size);
+  u.Float("weight", spec.Weight);
+  u.Float("zeroBloom", 0.0);
+  u.Int("xWidth", spec.X ? spec.X->Width : 0);
+  u.Int("yWidth", spec.Y ? spec.Y->Width : 0);
+  const float texel[2] = { 1.0f / spec.Source->GetWidth(), 1.0f / spec.Source->GetHeight() };
+  u.Float2("sourceTexel", texel);
+  // The interior's weights of each axis evaluated as a periodic convolution.
+  const vtkBloomLinearOperator* ops[2] = { spec.X, spec.Y };
+  const int modes[2] = { draw.XMode, draw.YMode };
+  const char* names[2][3] = { { "xInterior", "xWeights", "xOffsets" },
+    { "yInterior", "yWeights", "yOffsets" } };
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    if (modes[axis] != OP_PERIODIC)
+    {
+      continue;
+    }
+    const Interior& in = this->InteriorOf(*ops[axis]);
+    const int values[3] = { in.Begin, in.First[0], in.First[1] };
+    u.Ints(names[axis][0], 3, values);
+    if (this->Linear(spec, ops[axis]))
+    {
+      const int n = static_cast<int>(in.PairWeights.size());
+      u.Floats(names[axis][1], n, in.PairWeights.data());
+      u.Floats(names[axis][2], n, in.PairOffsets.data());
+    }
+    else
+    {
+      u.Floats(names[axis][1], static_cast<int>(in.Weights.size()), in.Weights.data());
+    }
+  }
+  this->SetStepUniforms(u, spec.Step);
 }
 
 //------------------------------------------------------------------------------
@@ -407,65 +425,92 @@ void vtkBloomPassChainRunner::Clear(vtkBloomPassTarget& target)
 bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
 {
   vtkBloomParameters* parameters = this->Parameters;
-  vtkBloomPassResources& res = this->Resources;
-  const vtkBloomChain& c = res.Chain;
+  const vtkBloomChain& c = this->Resources.Chain;
   this->MaskSource = mask;
   this->SanitizeSource = parameters->GetSanitizeNonFinite();
   this->SanitizeOutput = parameters->GetSanitizeNonFinite();
   const size_t n = c.Levels.size();
-  if (n == 0)
+  if (n == 0 ||
+    (parameters->GetSkipDisabledEffects() && parameters->IsBloomDisabled(3, c.Levels.size())))
   {
     return false;
   }
-  if (parameters->GetSkipDisabledEffects())
-  {
-    // As vtkBloomParameters::IsBloomDisabled: Strength 0, a black tint or every level weight
-    // 0.
-    bool zeroTerm = true, zeroWeights = true;
-    for (int i = 0; i < 3; ++i)
-    {
-      zeroTerm &= parameters->GetStrength() * parameters->GetTint()[i] == 0.0;
-    }
-    for (const auto& level : c.Levels)
-    {
-      zeroWeights &= level.Weight == 0.0;
-    }
-    if (zeroTerm || zeroWeights)
-    {
-      return false;
-    }
-  }
-  const int zero[2] = { 0, 0 };
-  // The region costs a wait for the GPU (its read-back), which a chain of compute passes does
-  // not hide. While the region keeps covering much of the chain, measure it only every
-  // ProbeInterval frames and run the full chain in between, with no read-back at all: the
-  // output is the same either way.
-  bool restrict = this->Restrict;
-  if (restrict && this->FramesUntilProbe > 0)
-  {
-    --this->FramesUntilProbe;
-    restrict = false;
-  }
-  else if (restrict && this->CostTimingSupported() && --this->FramesUntilExplore <= 0)
-  {
-    // Now and then the full chain while the region pays, so that its cost stays known.
-    this->FramesUntilExplore = ExploreInterval;
-    restrict = false;
-  }
+  ChainRegions regions;
+  regions.Restrict = this->ChooseRestrict();
   if (this->Restrict)
   {
-    this->BeginCostTiming(restrict);
+    this->BeginCostTiming(regions.Restrict);
   }
   this->CompositeRestricted = false;
   this->ComputedSamples = this->FullSamples = 0.0;
   this->Coverage = 1.0;
   std::fill(this->BrightRegion, this->BrightRegion + 4, 0);
+  regions.Level.resize(n);
+  regions.Blur.resize(n);
+  regions.Accum.resize(n);
+  regions.Blurred.resize(n);
 
-  // 1. Bright pass: the source fetch and the threshold in one pass. With SkipEmptyBloom the
-  // zero samples are not written (the level is cleared first) and an occlusion query counts
-  // the others: a reduction over the whole bright pass that costs no extra pass, and whose
-  // readback only waits for this pass.
-  const bool skipEmpty = parameters->GetSkipEmptyBloom();
+  if (!this->BrightPass(emission, regions)) // 1. the bright pass
+  {
+    return false;
+  }
+  this->DownsampleLevels(regions);                    // 2. the pyramid
+  this->BlurLevels(regions);                          // 3. the blur of each contributing level
+  if (c.AccumulateMode == vtkBloomParameters::DIRECT) // 4. accumulate
+  {
+    this->AccumulateDirect(regions);
+  }
+  else
+  {
+    this->AccumulateCascade(regions);
+  }
+  this->CompositeRestricted = regions.Restrict;
+  this->EndCoverage(regions.Restrict);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::ChooseRestrict()
+{
+  // The region costs a wait for the GPU (its read-back), which a chain of compute passes does
+  // not hide. While the region keeps covering much of the chain, measure it only every
+  // ProbeInterval frames and run the full chain in between, with no read-back at all: the
+  // output is the same either way.
+  if (!this->Restrict)
+  {
+    return false;
+  }
+  if (this->FramesUntilProbe > 0)
+  {
+    --this->FramesUntilProbe;
+    return false;
+  }
+  if (this->CostTimingSupported() && --this->FramesUntilExplore <= 0)
+  {
+    // Now and then the full chain while the region pays, so that its cost stays known.
+    this->FramesUntilExplore = ExploreInterval;
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+const vtkBloomPassChainRunner::Box* vtkBloomPassChainRunner::ChainRegions::Of(const Box& box) const
+{
+  return this->Restrict ? &box : nullptr;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::BrightPass(vtkTextureObject* emission, ChainRegions& regions)
+{
+  // The source fetch and the threshold in one pass. With SkipEmptyBloom the zero samples are
+  // not written (the level is cleared first) and an occlusion query counts the others: a
+  // reduction over the whole bright pass that costs no extra pass, and whose readback only
+  // waits for this pass.
+  vtkBloomPassResources& res = this->Resources;
+  const vtkBloomChain& c = res.Chain;
+  const int zero[2] = { 0, 0 };
+  const bool skipEmpty = this->Parameters->GetSkipEmptyBloom();
   PassSpec bright;
   bright.Source = emission;
   const int full[2] = { c.Width, c.Height };
@@ -509,13 +554,11 @@ bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
     }
   }
   // The box each target can be non-zero in (the whole target when not restricted).
-  const Box* (*region)(const Box&, bool) = [](const Box& b, bool on) { return on ? &b : nullptr; };
-  std::vector<Box> levelBox(n), blurBox(n), accumBox(n);
-  levelBox[0] = Box::Whole(c.Levels[0].Size[0], c.Levels[0].Size[1]);
-  if (restrict)
+  regions.Level[0] = Box::Whole(c.Levels[0].Size[0], c.Levels[0].Size[1]);
+  if (regions.Restrict)
   {
-    levelBox[0] = this->MeasureBrightRegion();
-    const Box& b = levelBox[0];
+    regions.Level[0] = this->MeasureBrightRegion();
+    const Box& b = regions.Level[0];
     if (!b.Empty())
     {
       const int values[4] = { b.X0, b.X1, b.Y0, b.Y1 };
@@ -527,10 +570,19 @@ bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
       return false;
     }
   }
+  return true;
+}
 
-  // 2. The pyramid, each level from the unblurred level above it; each term is one
-  // two-dimensional pass, added to the previous terms.
-  for (size_t i = 1; i < n; ++i)
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::DownsampleLevels(ChainRegions& regions)
+{
+  // Each level from the unblurred level above it; each term is one two-dimensional pass, added
+  // to the previous terms.
+  vtkBloomPassResources& res = this->Resources;
+  const vtkBloomChain& c = res.Chain;
+  const int zero[2] = { 0, 0 };
+  std::vector<Box>& levelBox = regions.Level;
+  for (size_t i = 1; i < c.Levels.size(); ++i)
   {
     const vtkBloomChain::Level& level = c.Levels[i];
     vtkBloomPassTarget& dst = level.Karis ? res.Work[i] : res.Levels[i];
@@ -552,7 +604,7 @@ bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
       down.Blend = t > 0;
       down.Name = "down";
       down.Level = static_cast<int>(i);
-      down.Region = region(levelBox[i], restrict);
+      down.Region = regions.Of(levelBox[i]);
       const int rows[2] = { level.Size[0], res.Levels[i - 1].Size[1] };
       if (!TwoDimensional(term, this->Fast))
       {
@@ -564,7 +616,7 @@ bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
         x.Name = "down-x";
         x.Level = static_cast<int>(i);
         const Box xBox = Reach(&term.X, nullptr, levelBox[i - 1], above[0], above[1]);
-        x.Region = region(xBox, restrict);
+        x.Region = regions.Of(xBox);
         this->Pass(&res.Temp, zero, x);
         down.Source = res.Temp.Color;
         down.SourceSize = rows;
@@ -581,35 +633,43 @@ bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
       normalize.Step = STEP_KARIS_NORMALIZE;
       normalize.Name = "karis-normalize";
       normalize.Level = static_cast<int>(i);
-      normalize.Region = region(levelBox[i], restrict);
+      normalize.Region = regions.Of(levelBox[i]);
       this->Pass(&res.Levels[i], zero, normalize);
     }
   }
+}
 
-  // 3. Blur the levels that contribute: x into Temp, y into Work (CASCADE: the last level
-  // goes straight into its accumulation, scaled by its weight).
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::BlurLevels(ChainRegions& regions)
+{
+  // x into Temp, y into Work (CASCADE: the last level goes straight into its accumulation,
+  // scaled by its weight).
+  vtkBloomPassResources& res = this->Resources;
+  const vtkBloomChain& c = res.Chain;
+  const int zero[2] = { 0, 0 };
+  const size_t n = c.Levels.size();
   const size_t last = n - 1;
   const bool cascade = c.AccumulateMode != vtkBloomParameters::DIRECT;
-  std::vector<vtkBloomPassTarget*> blurred(n);
-  bool lastAccumulated = false;
+  regions.LastAccumulated = false;
   for (size_t i = 0; i < n; ++i)
   {
     const vtkBloomChain::Level& level = c.Levels[i];
-    blurred[i] = &res.Levels[i];
-    blurBox[i] = levelBox[i];
+    regions.Blurred[i] = &res.Levels[i];
+    regions.Blur[i] = regions.Level[i];
     if (!level.Blur)
     {
       continue;
     }
-    const Box xBox = Reach(&level.BlurPass.X, nullptr, levelBox[i], level.Size[0], level.Size[1]);
-    blurBox[i] = Reach(nullptr, &level.BlurPass.Y, xBox, level.Size[0], level.Size[1]);
+    const Box xBox =
+      Reach(&level.BlurPass.X, nullptr, regions.Level[i], level.Size[0], level.Size[1]);
+    regions.Blur[i] = Reach(nullptr, &level.BlurPass.Y, xBox, level.Size[0], level.Size[1]);
     PassSpec x;
     x.Source = res.Levels[i].Color;
     x.SourceSize = level.Size;
     x.X = &level.BlurPass.X;
     x.Name = "blur-x";
     x.Level = static_cast<int>(i);
-    x.Region = region(xBox, restrict);
+    x.Region = regions.Of(xBox);
     this->Pass(&res.Temp, zero, x);
     PassSpec y;
     y.Source = res.Temp.Color;
@@ -617,71 +677,84 @@ bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
     y.Y = &level.BlurPass.Y;
     y.Name = "blur-y";
     y.Level = static_cast<int>(i);
-    y.Region = region(blurBox[i], restrict);
+    y.Region = regions.Of(regions.Blur[i]);
     if (cascade && i == last)
     {
       y.Weight = level.Weight;
       this->Pass(&res.Accum[last], zero, y);
-      lastAccumulated = true;
+      regions.LastAccumulated = true;
     }
     else
     {
       this->Pass(&res.Work[i], zero, y);
-      blurred[i] = &res.Work[i];
+      regions.Blurred[i] = &res.Work[i];
     }
   }
+}
 
-  // 4. Accumulate.
-  if (!cascade)
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::AccumulateDirect(ChainRegions& regions)
+{
+  // Each weighted level straight to the full size, added into Full.
+  vtkBloomPassResources& res = this->Resources;
+  const vtkBloomChain& c = res.Chain;
+  const int zero[2] = { 0, 0 };
+  const size_t n = c.Levels.size();
+  Box full;
+  for (size_t i = 0; i < n; ++i)
   {
-    Box full;
-    for (size_t i = 0; i < n; ++i)
+    if (c.Levels[i].Weight != 0.0)
     {
-      if (c.Levels[i].Weight != 0.0)
-      {
-        full = full.Union(
-          Reach(&c.Levels[i].Full.X, &c.Levels[i].Full.Y, blurBox[i], c.Width, c.Height));
-      }
+      full = full.Union(
+        Reach(&c.Levels[i].Full.X, &c.Levels[i].Full.Y, regions.Blur[i], c.Width, c.Height));
     }
-    this->CompositeRegion = full;
-    this->CompositeRestricted = restrict;
-    bool first = true;
-    for (size_t i = 0; i < n; ++i)
-    {
-      const vtkBloomChain::Level& level = c.Levels[i];
-      if (level.Weight != 0.0)
-      {
-        PassSpec up;
-        up.Source = blurred[i]->Color;
-        up.SourceSize = level.Size;
-        up.X = &level.Full.X;
-        up.Y = &level.Full.Y;
-        up.Weight = level.Weight;
-        up.Blend = !first;
-        up.Name = "accumulate";
-        up.Level = static_cast<int>(i);
-        up.Region = region(this->CompositeRegion, restrict);
-        this->Pass(&res.Full, zero, up);
-        first = false;
-      }
-    }
-    if (first)
-    {
-      this->Clear(res.Full);
-    }
-    this->EndCoverage(restrict);
-    return true;
   }
-  accumBox[last] = blurBox[last];
-  if (!lastAccumulated)
+  this->CompositeRegion = full;
+  bool first = true;
+  for (size_t i = 0; i < n; ++i)
+  {
+    const vtkBloomChain::Level& level = c.Levels[i];
+    if (level.Weight != 0.0)
+    {
+      PassSpec up;
+      up.Source = regions.Blurred[i]->Color;
+      up.SourceSize = level.Size;
+      up.X = &level.Full.X;
+      up.Y = &level.Full.Y;
+      up.Weight = level.Weight;
+      up.Blend = !first;
+      up.Name = "accumulate";
+      up.Level = static_cast<int>(i);
+      up.Region = regions.Of(this->CompositeRegion);
+      this->Pass(&res.Full, zero, up);
+      first = false;
+    }
+  }
+  if (first)
+  {
+    this->Clear(res.Full);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::AccumulateCascade(ChainRegions& regions)
+{
+  // From the last level up: A_i = up(A_{i+1}) + w_i blurred_i, x into Temp then y into Accum.
+  vtkBloomPassResources& res = this->Resources;
+  const vtkBloomChain& c = res.Chain;
+  const int zero[2] = { 0, 0 };
+  const size_t last = c.Levels.size() - 1;
+  std::vector<Box>& accumBox = regions.Accum;
+  accumBox[last] = regions.Blur[last];
+  if (!regions.LastAccumulated)
   {
     PassSpec scale;
-    scale.Source = blurred[last]->Color;
+    scale.Source = regions.Blurred[last]->Color;
     scale.SourceSize = c.Levels[last].Size;
     scale.Weight = c.Levels[last].Weight;
     scale.Name = "scale";
     scale.Level = static_cast<int>(last);
-    scale.Region = region(accumBox[last], restrict);
+    scale.Region = regions.Of(accumBox[last]);
     this->Pass(&res.Accum[last], zero, scale);
   }
   for (size_t i = last; i-- > 0;)
@@ -698,9 +771,9 @@ bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
     accumBox[i] = Reach(nullptr, &level.Up.Y, xBox, level.Size[0], level.Size[1]);
     if (level.Weight != 0.0)
     {
-      accumBox[i] = accumBox[i].Union(blurBox[i]);
+      accumBox[i] = accumBox[i].Union(regions.Blur[i]);
     }
-    x.Region = region(xBox, restrict);
+    x.Region = regions.Of(xBox);
     this->Pass(&res.Temp, zero, x);
     PassSpec y;
     y.Source = res.Temp.Color;
@@ -709,20 +782,17 @@ bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
     y.Y = &level.Up.Y;
     y.Name = "up-y";
     y.Level = static_cast<int>(i);
-    y.Region = region(accumBox[i], restrict);
+    y.Region = regions.Of(accumBox[i]);
     if (level.Weight != 0.0)
     {
       y.Step = STEP_ADD;
       y.Weight = level.Weight;
-      y.Addend = blurred[i]->Color;
+      y.Addend = regions.Blurred[i]->Color;
     }
     this->Pass(&res.Accum[i], zero, y);
   }
   this->CompositeRegion =
     c.FinalIsIdentity ? accumBox[0] : Reach(&c.Final.X, &c.Final.Y, accumBox[0], c.Width, c.Height);
-  this->CompositeRestricted = restrict;
-  this->EndCoverage(restrict);
-  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -20,6 +20,7 @@
 
 #include "vtkSmartPointer.h" // For the operator textures
 
+#include <array>
 #include <map>
 #include <memory>
 #include <string>
@@ -220,6 +221,36 @@ private:
     bool ZeroBloom = false; ///< composite where the bloom is known zero (no operator taps)
   };
 
+  /**
+   * The steps of Run() and what they pass on: with Restrict, the box each target can be
+   * non-zero in (Level: the pyramid's levels, Blur: after their blur, Accum: CASCADE's
+   * accumulations); without, every box is the whole target. Blurred is each level's blurred
+   * target (the level itself where it is not blurred); LastAccumulated, whether the last
+   * level's blur already wrote its CASCADE accumulation.
+   */
+  struct ChainRegions
+  {
+    bool Restrict = false;
+    std::vector<Box> Level;
+    std::vector<Box> Blur;
+    std::vector<Box> Accum;
+    std::vector<vtkBloomPassTarget*> Blurred;
+    bool LastAccumulated = false;
+    /// The region a pass computes: `box` when restricted, else null (the whole target).
+    const Box* Of(const Box& box) const;
+  };
+  /// Whether this Run() measures the bright region (Restrict, probed and explored over frames).
+  bool ChooseRestrict();
+  /// 1. The bright pass into level 0; false when nothing is bright (the bloom is skipped).
+  bool BrightPass(vtkTextureObject* emission, ChainRegions& regions);
+  /// 2. The pyramid: each level from the unblurred level above it.
+  void DownsampleLevels(ChainRegions& regions);
+  /// 3. The blur of each contributing level.
+  void BlurLevels(ChainRegions& regions);
+  /// 4. The accumulation into Full (DIRECT) or the Accum targets (CASCADE).
+  void AccumulateDirect(ChainRegions& regions);
+  void AccumulateCascade(ChainRegions& regions);
+
   // Content-aware evaluation (vtkBloomPassRegion.cxx).
 
   /**
@@ -397,6 +428,39 @@ private:
 
   /// After a pass's dispatches: their writes visible to what reads the target next.
   void EndCompute();
+
+  // The pieces of Pass().
+
+  /// One draw of a pass: a rectangle of its output and the evaluation mode of each axis;
+  /// Zero: a composite rectangle where the bloom is known zero.
+  struct Draw
+  {
+    Box Rect;
+    int XMode;
+    int YMode;
+    bool Zero;
+  };
+
+  /// The textures a pass reads, in a fixed order, and their samplers' names.
+  struct PassTextures
+  {
+    std::array<vtkTextureObject*, 7> Textures;
+    static constexpr const char* Samplers[7] = { "source", "xRows", "yRows", "addend", "scene",
+      "emitterDepth", "sceneDepth" };
+  };
+
+  /**
+   * Prepare `target` (clear outside the region), pick where the pass writes (a compute image,
+   * or `target`'s framebuffer bound for fragments) and set the blending.
+   */
+  ImageTarget BeginPass(
+    vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec, int width, int height);
+  /// The draws of a width x height pass, cut to its region; counts the samples it computes.
+  std::vector<Draw> Draws(const PassSpec& spec, int width, int height);
+  PassTextures PassTexturesOf(const PassSpec& spec);
+  /// Every uniform of one draw: samplers, its rectangle, the operators' interiors, the step's.
+  void SetDrawUniforms(
+    Uniforms& u, const PassSpec& spec, const Draw& draw, const PassTextures& textures);
 
   bool CountingSamples = false; ///< the occlusion query is open: fragment passes only
   void Clear(vtkBloomPassTarget& target);
