@@ -115,16 +115,22 @@ void FieldLines(vtkRenderer* renderer, vtkBloomPass* pass)
       b[i] = (3.0 * mr * x[i] - (i == 2 ? r2 : 0.0)) / (r2 * r2 * r);
     }
   };
+  // Each line starts on the equator (z = 0) and follows the field away from it, up through the
+  // northern half-space until it nears the dipole; the southern half is its mirror image. At
+  // the equator the dipole's field points to -z, so the tracer follows -B there.
   const int seedsAround = 12;
   for (int s = 0; s < seedsAround; ++s)
   {
     for (int shell = 0; shell < 3; ++shell)
     {
       const double phi = 2.0 * vtkMath::Pi() * (s + 0.5 * shell) / seedsAround;
-      const double rho = 0.35 + 0.25 * shell;
-      double x[3] = { rho * std::cos(phi), rho * std::sin(phi), 0.02 };
+      const double rho = 0.5 + 0.45 * shell;
+      double x[3] = { rho * std::cos(phi), rho * std::sin(phi), 0.0 };
+      double b0[3];
+      field(x, b0);
+      const double sense = b0[2] < 0.0 ? -1.0 : 1.0; // the direction that leaves z = 0 upwards
       std::vector<vtkIdType> ids;
-      for (int step = 0; step < 900 && vtkMath::Norm(x) < 6.0; ++step)
+      for (int step = 0; step < 900 && vtkMath::Norm(x) > 0.12 && x[2] >= 0.0; ++step)
       {
         ids.push_back(points->InsertNextPoint(x));
         double k1[3], k2[3], k3[3], k4[3], y[3];
@@ -132,6 +138,7 @@ void FieldLines(vtkRenderer* renderer, vtkBloomPass* pass)
         {
           field(p, out);
           vtkMath::Normalize(out);
+          vtkMath::MultiplyScalar(out, sense);
         };
         const double h = 0.02;
         unit(x, k1);
@@ -150,10 +157,6 @@ void FieldLines(vtkRenderer* renderer, vtkBloomPass* pass)
         for (int i = 0; i < 3; ++i)
         {
           x[i] += h / 6.0 * (k1[i] + 2.0 * k2[i] + 2.0 * k3[i] + k4[i]);
-        }
-        if (x[2] < 0.0)
-        {
-          break;
         }
       }
       // Mirror the line below the equator.
@@ -181,7 +184,7 @@ void FieldLines(vtkRenderer* renderer, vtkBloomPass* pass)
   // Emissive HDR colour: ambient only, with an ambient colour above 1.
   fieldLines->GetProperty()->SetAmbient(1.0);
   fieldLines->GetProperty()->SetDiffuse(0.0);
-  fieldLines->GetProperty()->SetAmbientColor(1.0, 2.5, 6.0);
+  fieldLines->GetProperty()->SetAmbientColor(0.4, 1.0, 2.4);
   fieldLines->GetProperty()->SetLineWidth(3.0);
   renderer->AddActor(fieldLines);
 
@@ -211,7 +214,7 @@ void FieldLines(vtkRenderer* renderer, vtkBloomPass* pass)
   vtkBloomParameters* p = pass->GetParameters();
   p->SetThreshold(1.0);
   p->SetNumberOfLevels(6);
-  p->SetStrength(0.8);
+  p->SetStrength(0.5);
 
   renderer->SetBackground(0.0, 0.0, 0.0);
   vtkCamera* camera = renderer->GetActiveCamera();
@@ -219,7 +222,7 @@ void FieldLines(vtkRenderer* renderer, vtkBloomPass* pass)
   camera->SetFocalPoint(0.0, 0.0, 0.0);
   camera->SetViewUp(0.0, 0.0, 1.0);
   renderer->ResetCamera();
-  camera->Zoom(1.5);
+  camera->Zoom(1.9);
 }
 
 // A lit ground plane and matte spheres under a strong key light, with small emissive lamps.

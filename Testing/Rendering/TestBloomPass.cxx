@@ -5,10 +5,12 @@
 #include "vtkBloomTestSupport.h"
 
 #include "vtkActor.h"
+#include "vtkActorCollection.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
 #include "vtkDoubleArray.h"
+#include "vtkIdList.h"
 #include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"
@@ -17,6 +19,7 @@
 #include "vtkOpenEXRReader.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
+#include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
 #include "vtkRenderStepsPass.h"
@@ -491,6 +494,51 @@ TEST(RenderingBloomPass, ProfilesEveryPassWithoutChangingTheImage)
     EXPECT_EQ(w.Bloom->GetNumberOfProfiledPasses(), 0);
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << scene;
   }
+}
+
+//------------------------------------------------------------------------------
+// The field-lines scene shows field lines: each is traced from the equator away from it, up to
+// near the dipole, and mirrored, so every line is a long arc that leaves the equatorial plane
+// (a tracer that steps across z = 0 at once leaves one- or two-point dashes).
+TEST(RenderingBloomPass, FieldLinesSceneTracesWholeLines)
+{
+  vtkNew<vtkRenderer> renderer;
+  vtkNew<vtkBloomPass> pass;
+  ASSERT_TRUE(vtkBloomBuildExampleScene("field-lines", renderer, pass));
+  // GetActors() rebuilds its collection on every call.
+  vtkActorCollection* actors = renderer->GetActors();
+  vtkPolyData* lines = nullptr;
+  for (actors->InitTraversal(); vtkActor* a = actors->GetNextActor();)
+  {
+    auto* data = vtkPolyData::SafeDownCast(a->GetMapper()->GetInput());
+    if (data && data->GetNumberOfLines() > 0)
+    {
+      lines = data;
+    }
+  }
+  ASSERT_NE(lines, nullptr);
+  EXPECT_GE(lines->GetNumberOfLines(), 72);
+  vtkIdType shortest = VTK_ID_MAX;
+  double lowest = 0.0, highest = 0.0;
+  vtkNew<vtkIdList> ids;
+  for (vtkIdType cell = 0; cell < lines->GetNumberOfCells(); ++cell)
+  {
+    lines->GetCellPoints(cell, ids);
+    shortest = std::min(shortest, ids->GetNumberOfIds());
+    double first[3];
+    lines->GetPoint(ids->GetId(0), first);
+    EXPECT_EQ(first[2], 0.0) << "line " << cell << " does not start on the equator";
+    for (vtkIdType k = 0; k < ids->GetNumberOfIds(); ++k)
+    {
+      double x[3];
+      lines->GetPoint(ids->GetId(k), x);
+      lowest = std::min(lowest, x[2]);
+      highest = std::max(highest, x[2]);
+    }
+  }
+  EXPECT_GE(shortest, 20) << "a field line of a few points";
+  EXPECT_GE(highest, 0.3);
+  EXPECT_LE(lowest, -0.3);
 }
 
 //------------------------------------------------------------------------------
