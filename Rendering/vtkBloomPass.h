@@ -19,8 +19,13 @@
  * first input index and band weights) and applied with exact texel fetches. Hardware bilinear
  * filtering is never used, so odd sizes, clamped borders and composed blur iterations match the
  * CPU chain, and the GPU result agrees with vtkImageBloom applied to the same float render to
- * within float rounding (tested per preset). Output alpha is the scene's alpha, as in
- * vtkImageBloom, so figures with a transparent background keep it.
+ * within float rounding (tested per preset).
+ *
+ * Alpha. Where the scene is opaque the output alpha is 1, as the scene's. Over a transparent
+ * background (a renderer background alpha below 1 in a window with alpha planes) the glow
+ * carries alpha: the colour stays premultiplied (scene + glow) and the alpha becomes
+ * a + (1 - a) min(1, max(glow's channels)), so a figure saved with alpha and composited over
+ * black or white shows its halo on both. (vtkImageBloom copies its input's alpha.)
  *
  * Selective bloom. By default every pixel of the scene can bloom (EMISSION_SCENE). With
  * SetEmissionSourceToEmitters() only the props given with AddEmitter() bloom: they are rendered

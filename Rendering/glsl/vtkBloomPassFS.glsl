@@ -386,7 +386,12 @@ void main()
   {
     bloom[i] = isnan(bloom[i]) ? 0.0 : clamp(bloom[i], -FLOAT_MAX, FLOAT_MAX);
   }
-  result = vec4(keep * base.rgb + strengthTint * bloom, base.a);
+  // The glow carries alpha: over a transparent background (alpha < 1) the colour stays
+  // premultiplied and alpha rises by the glow's largest channel, so that the halo shows over
+  // any backdrop. Where the scene is opaque, a + (1 - a) g is 1 exactly.
+  vec3 glow = strengthTint * bloom;
+  float glowAlpha = clamp(max(max(glow.r, glow.g), glow.b), 0.0, 1.0);
+  result = vec4(keep * base.rgb + glow, base.a + (1.0 - base.a) * glowAlpha);
 #else
   // No bloom (nothing passed the bright pass, or the effect is off): keep * in + 0, as
   // vtkImageBloom composites a skipped bloom.
