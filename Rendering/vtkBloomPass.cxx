@@ -42,7 +42,7 @@ public:
   vtkBloomPassResources Resources;
   vtkBloomPassChainRunner Runner;
 
-  bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h);
+  bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples);
   void RenderDelegate(vtkBloomPass* self, const vtkRenderState* s, vtkBloomPassSceneTarget& target,
     vtkProp** props, int count, bool emitters);
 
@@ -63,7 +63,7 @@ public:
 
 //------------------------------------------------------------------------------
 bool vtkBloomPass::vtkInternals::Prepare(
-  vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h)
+  vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples)
 {
   vtkBloomPassResources& res = this->Resources;
   if (res.Context && res.Context != window)
@@ -86,7 +86,7 @@ bool vtkBloomPass::vtkInternals::Prepare(
   this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
   this->Runner.Profiling = self->ProfilePasses;
   this->Runner.Profile.clear();
-  res.AllocateScene(w, h, self->EmissionSource == EMISSION_EMITTERS);
+  res.AllocateScene(w, h, self->EmissionSource == EMISSION_EMITTERS, samples);
   const bool fast = self->Quality == QUALITY_FAST;
   if (res.ChainIsStale(self->Parameters, w, h, fast))
   {
@@ -105,9 +105,12 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
   vtkOpenGLState* state = this->Resources.Context->GetState();
   vtkRenderState s2(r);
   s2.SetPropArrayAndCount(props, count);
-  s2.SetFrameBuffer(target.FBO);
-  target.FBO->Bind();
-  target.FBO->ActivateDrawBuffer(0);
+  // Multisampled, the delegate renders into the multisampled target, resolved once below.
+  vtkBloomPassMultisampleTarget& multisample = this->Resources.Multisample;
+  vtkOpenGLFramebufferObject* fbo = this->Resources.Samples ? multisample.FBO : target.FBO;
+  s2.SetFrameBuffer(fbo);
+  fbo->Bind();
+  fbo->ActivateDrawBuffer(0);
   state->vtkglViewport(0, 0, target.Size[0], target.Size[1]);
   state->vtkglScissor(0, 0, target.Size[0], target.Size[1]);
 
@@ -135,6 +138,10 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
   }
   state->vtkglEnable(GL_DEPTH_TEST);
   self->DelegatePass->Render(&s2);
+  if (this->Resources.Samples)
+  {
+    multisample.Resolve(this->Resources.Context, target);
+  }
   if (!emitters)
   {
     self->NumberOfRenderedProps += self->DelegatePass->GetNumberOfRenderedProps();
@@ -329,10 +336,15 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   const vtkBloomPassSavedState saved(state);
   vtkInternals& in = *this->Internals;
   vtkBloomPassResources& res = in.Resources;
-  if (!in.Prepare(this, window, w, h))
+  // Multisampling is kept: where the framebuffer the pass was called with has samples, the
+  // scene renders with as many.
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  if (!in.Prepare(this, window, w, h, samples))
   {
     return;
   }
+  in.Runner.GlowAlpha = true;
   if (this->CaptureResult)
   {
     res.Result.Allocate(window, w, h, GL_RGBA32F);
@@ -450,10 +462,11 @@ bool vtkBloomPass::ApplyToImage(
   const vtkBloomPassSavedState saved(state);
   vtkInternals& in = *this->Internals;
   vtkBloomPassResources& res = in.Resources;
-  if (!in.Prepare(this, window, w, h))
+  if (!in.Prepare(this, window, w, h, 0))
   {
     return false;
   }
+  in.Runner.GlowAlpha = false; // an image keeps its alpha, as vtkImageBloom's output does
   res.Result.Allocate(window, w, h, GL_RGBA32F);
 
   // Upload the image as the scene, in float RGBA (alpha 1 when there is none).

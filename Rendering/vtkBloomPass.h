@@ -25,7 +25,8 @@
  * background (a renderer background alpha below 1 in a window with alpha planes) the glow
  * carries alpha: the colour stays premultiplied (scene + glow) and the alpha becomes
  * a + (1 - a) min(1, max(glow's channels)), so a figure saved with alpha and composited over
- * black or white shows its halo on both. (vtkImageBloom copies its input's alpha.)
+ * black or white shows its halo on both. ApplyToImage, like vtkImageBloom, keeps the image's
+ * alpha.
  *
  * Selective bloom. By default every pixel of the scene can bloom (EMISSION_SCENE). With
  * SetEmissionSourceToEmitters() only the props given with AddEmitter() bloom: they are rendered

@@ -402,6 +402,7 @@ void vtkBloomPassChainRunner::SetStepUniforms(Uniforms& u, int step)
     const double strength = p->GetStrength();
     const double* tint = p->GetTint();
     setf("keep", p->GetCompositeMode() == vtkBloomParameters::LERP ? 1.0 - strength : 1.0);
+    setf("glowAlpha", this->GlowAlpha ? 1.0 : 0.0);
     const double strengthTint[3] = { strength * tint[0], strength * tint[1], strength * tint[2] };
     set3f("strengthTint", strengthTint);
     setf("largest",

@@ -63,6 +63,9 @@ public:
    */
   vtkBloomParameters* Parameters = nullptr;
   bool Fast = false;
+  /// The composite raises a transparent scene's alpha by the glow (a rendered frame), or
+  /// keeps the scene's alpha (an image, as vtkImageBloom does).
+  bool GlowAlpha = true;
   bool Restrict = false;
 
   /**

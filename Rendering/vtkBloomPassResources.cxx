@@ -9,6 +9,7 @@
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPointData.h"
+#include "vtkRenderbuffer.h"
 #include "vtkTextureObject.h"
 
 //------------------------------------------------------------------------------
@@ -123,8 +124,83 @@ void vtkBloomPassSceneTarget::ReleaseAll(vtkWindow* window)
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassResources::AllocateScene(int width, int height, bool emitters)
+void vtkBloomPassMultisampleTarget::Allocate(
+  vtkOpenGLRenderWindow* context, int width, int height, unsigned int format, int samples)
 {
+  if (this->FBO && this->Size[0] == width && this->Size[1] == height && this->Samples == samples &&
+    this->Format == format)
+  {
+    return;
+  }
+  this->Release(context);
+  this->Color = vtkSmartPointer<vtkRenderbuffer>::New();
+  this->Color->SetContext(context);
+  this->Color->Create(format, width, height, samples);
+  // The depth's format is the scene target's, as a depth resolve requires.
+  this->Depth = vtkSmartPointer<vtkRenderbuffer>::New();
+  this->Depth->SetContext(context);
+  this->Depth->Create(GL_DEPTH_COMPONENT32F, width, height, samples);
+  this->FBO = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
+  this->FBO->SetContext(context);
+  context->GetState()->PushFramebufferBindings();
+  this->FBO->Bind();
+  this->FBO->AddColorAttachment(0, this->Color);
+  this->FBO->AddDepthAttachment(this->Depth);
+  this->FBO->ActivateDrawBuffer(0);
+  context->GetState()->PopFramebufferBindings();
+  this->Size[0] = width;
+  this->Size[1] = height;
+  this->Samples = samples;
+  this->Format = format;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassMultisampleTarget::Release(vtkWindow* window)
+{
+  if (this->FBO)
+  {
+    this->FBO->ReleaseGraphicsResources(window);
+  }
+  for (vtkRenderbuffer* buffer : { this->Color.Get(), this->Depth.Get() })
+  {
+    if (buffer)
+    {
+      buffer->ReleaseGraphicsResources(window);
+    }
+  }
+  this->FBO = nullptr;
+  this->Color = this->Depth = nullptr;
+  this->Size[0] = this->Size[1] = this->Samples = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassMultisampleTarget::Resolve(
+  vtkOpenGLRenderWindow* context, vtkBloomPassSceneTarget& target)
+{
+  vtkOpenGLState* state = context->GetState();
+  state->PushFramebufferBindings();
+  this->FBO->Bind(GL_READ_FRAMEBUFFER);
+  this->FBO->ActivateReadBuffer(0);
+  target.FBO->Bind(GL_DRAW_FRAMEBUFFER);
+  target.FBO->ActivateDrawBuffer(0);
+  // A multisample resolve must cover the same rectangle; depth resolves by nearest.
+  glBlitFramebuffer(0, 0, this->Size[0], this->Size[1], 0, 0, this->Size[0], this->Size[1],
+    GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+  state->PopFramebufferBindings();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassResources::AllocateScene(int width, int height, bool emitters, int samples)
+{
+  this->Samples = samples > 1 ? samples : 0;
+  if (this->Samples)
+  {
+    this->Multisample.Allocate(this->Context, width, height, this->Format, this->Samples);
+  }
+  else
+  {
+    this->Multisample.Release(this->Context);
+  }
   this->Scene.AllocateWithDepth(this->Context, width, height, this->Format);
   if (emitters)
   {
@@ -210,6 +286,7 @@ void vtkBloomPassResources::ReleaseAll(vtkWindow* w)
   this->ReleaseChain(w);
   this->Scene.ReleaseAll(w);
   this->Emitter.ReleaseAll(w);
+  this->Multisample.Release(w);
   this->Result.Release(w);
   this->Context = nullptr;
 }

@@ -24,6 +24,7 @@ class vtkBloomParameters;
 class vtkImageData;
 class vtkOpenGLFramebufferObject;
 class vtkOpenGLRenderWindow;
+class vtkRenderbuffer;
 class vtkTextureObject;
 class vtkWindow;
 
@@ -81,6 +82,30 @@ struct vtkBloomPassSceneTarget : vtkBloomPassTarget
 };
 
 //------------------------------------------------------------------------------
+// A multisampled float colour and depth, where the delegate renders when the framebuffer the
+// pass was called with is multisampled; resolved once into a single-sample scene target.
+struct vtkBloomPassMultisampleTarget
+{
+  vtkSmartPointer<vtkOpenGLFramebufferObject> FBO;
+  vtkSmartPointer<vtkRenderbuffer> Color;
+  vtkSmartPointer<vtkRenderbuffer> Depth;
+  int Size[2] = { 0, 0 };
+  int Samples = 0;
+  unsigned int Format = 0;
+
+  /// Make it at width x height with `samples` samples of `format`, unless it already is.
+  void Allocate(
+    vtkOpenGLRenderWindow* context, int width, int height, unsigned int format, int samples);
+  void Release(vtkWindow* window);
+
+  /**
+   * Resolve the colour (the average of the samples, in float) and the depth (one sample) into
+   * `target`, of the same size and format. The framebuffer bindings are restored afterwards.
+   */
+  void Resolve(vtkOpenGLRenderWindow* context, vtkBloomPassSceneTarget& target);
+};
+
+//------------------------------------------------------------------------------
 class vtkBloomPassResources
 {
 public:
@@ -89,6 +114,10 @@ public:
 
   vtkBloomPassSceneTarget Scene;
   vtkBloomPassSceneTarget Emitter;
+  /// Where the delegate renders when Samples > 1 (the framebuffer the pass was called with
+  /// is multisampled), resolved into Scene and Emitter.
+  vtkBloomPassMultisampleTarget Multisample;
+  int Samples = 0;
   vtkBloomPassTarget Result;
 
   // The chain and its resources, rebuilt when the size or the parameters change.
@@ -104,9 +133,10 @@ public:
 
   /**
    * Make the scene target at width x height in Format, and the emitters' when `emitters`
+   * (else release it); and the multisampled target with `samples` samples when `samples` > 1
    * (else release it).
    */
-  void AllocateScene(int width, int height, bool emitters);
+  void AllocateScene(int width, int height, bool emitters, int samples);
 
   /// Whether the chain was built for other or older parameters or for another size.
   bool ChainIsStale(vtkBloomParameters* parameters, int width, int height, bool fast) const;

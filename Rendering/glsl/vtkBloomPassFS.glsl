@@ -139,6 +139,7 @@ uniform sampler2D addend;
 uniform sampler2D scene;
 uniform float keep;
 uniform vec3 strengthTint;
+uniform float glowAlpha; // 1: the glow raises a transparent scene's alpha; 0: alpha is kept
 uniform float largest; // largest finite value of the output target
 #if ZERO_BLOOM
 uniform float zeroBloom;
@@ -386,12 +387,13 @@ void main()
   {
     bloom[i] = isnan(bloom[i]) ? 0.0 : clamp(bloom[i], -FLOAT_MAX, FLOAT_MAX);
   }
-  // The glow carries alpha: over a transparent background (alpha < 1) the colour stays
-  // premultiplied and alpha rises by the glow's largest channel, so that the halo shows over
-  // any backdrop. Where the scene is opaque, a + (1 - a) g is 1 exactly.
+  // The glow carries alpha (a rendered frame): over a transparent background (alpha < 1) the
+  // colour stays premultiplied and alpha rises by the glow's largest channel, so that the halo
+  // shows over any backdrop. Where the scene is opaque (alpha >= 1), or with glowAlpha 0 (an
+  // image, as vtkImageBloom), alpha is the scene's exactly.
   vec3 glow = strengthTint * bloom;
-  float glowAlpha = clamp(max(max(glow.r, glow.g), glow.b), 0.0, 1.0);
-  result = vec4(keep * base.rgb + glow, base.a + (1.0 - base.a) * glowAlpha);
+  float coverage = clamp(max(max(glow.r, glow.g), glow.b), 0.0, 1.0);
+  result = vec4(keep * base.rgb + glow, base.a + glowAlpha * max(1.0 - base.a, 0.0) * coverage);
 #else
   // No bloom (nothing passed the bright pass, or the effect is off): keep * in + 0, as
   // vtkImageBloom composites a skipped bloom.

@@ -9,18 +9,21 @@
 #include "vtkBloomVTKCompat.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
+#include "vtkCellArray.h"
 #include "vtkDoubleArray.h"
 #include "vtkIdList.h"
 #include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
+#include "vtkMath.h"
 #include "vtkNew.h"
 #include "vtkOpenEXRReader.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPNGReader.h"
 #include "vtkPNGWriter.h"
 #include "vtkPointData.h"
+#include "vtkPoints.h"
 #include "vtkPolyData.h"
 #include "vtkPolyDataMapper.h"
 #include "vtkProperty.h"
@@ -399,6 +402,83 @@ TEST(RenderingBloomPass, GlowCarriesAlphaOverATransparentBackground)
       EXPECT_EQ(clear, transparent) << "the glow's alpha is its largest channel";
     }
   }
+}
+
+//------------------------------------------------------------------------------
+// Multisampling is kept. A fan of one-pixel lines (colours within [0, 1]) in a window with 4
+// samples: with the bloom pass adding nothing (threshold above the scene) the frame equals the
+// plain multisampled render within one 8-bit level, and most lit pixels are anti-aliased edge
+// values, as without the pass; rendered single-sample, almost none are.
+namespace
+{
+vtkSmartPointer<vtkImageData> RenderLineFan(int samples, bool bloom)
+{
+  vtkNew<vtkPoints> points;
+  vtkNew<vtkCellArray> lines;
+  for (int i = 0; i < 24; ++i)
+  {
+    const double angle = vtkMath::Pi() * (0.02 + 0.96 * i / 23.0);
+    const vtkIdType ids[2] = { points->InsertNextPoint(0.0, -0.9, 0.0),
+      points->InsertNextPoint(1.8 * std::cos(angle), -0.9 + 1.8 * std::sin(angle), 0.0) };
+    lines->InsertNextCell(2, ids);
+  }
+  vtkNew<vtkPolyData> fan;
+  fan->SetPoints(points);
+  fan->SetLines(lines);
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputData(fan);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetAmbient(1.0);
+  actor->GetProperty()->SetDiffuse(0.0);
+  actor->GetProperty()->SetAmbientColor(0.9, 0.8, 0.3);
+  BloomWindow w(240, 160);
+  w.Window->SetMultiSamples(samples);
+  w.Renderer->AddActor(actor);
+  w.Renderer->ResetCamera();
+  if (!bloom)
+  {
+    w.Renderer->SetPass(nullptr);
+  }
+  w.Bloom->GetParameters()->SetThreshold(1e30);
+  w.Window->Render();
+  EXPECT_EQ(w.Bloom->GetLastBloomSkipped(), bloom);
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(w.Window);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->DeepCopy(grab->GetOutput());
+  return image;
+}
+
+// The fraction of lit pixels (any channel above 0) that are not at the lines' full colour.
+double EdgeFraction(vtkImageData* image)
+{
+  vtkDataArray* rgb = image->GetPointData()->GetScalars();
+  double lit = 0.0, edge = 0.0;
+  for (vtkIdType p = 0; p < image->GetNumberOfPoints(); ++p)
+  {
+    const double g = rgb->GetComponent(p, 1);
+    lit += g > 0.0 ? 1.0 : 0.0;
+    edge += g > 0.0 && g < 0.8 * 255.0 - 1.0 ? 1.0 : 0.0;
+  }
+  return lit > 0.0 ? edge / lit : 0.0;
+}
+}
+
+TEST(RenderingBloomPass, KeepsMultisampling)
+{
+  auto plain = RenderLineFan(4, false);
+  auto bloomed = RenderLineFan(4, true);
+  auto single = RenderLineFan(0, true);
+  EXPECT_LE(vtkBloomTest::MaxAbsDifference(bloomed, plain), 1.0);
+  const double edges[3] = { EdgeFraction(plain), EdgeFraction(bloomed), EdgeFraction(single) };
+  std::cout << "[ multisampling ] anti-aliased share of lit pixels: plain " << edges[0]
+            << ", bloom pass " << edges[1] << ", single-sample " << edges[2] << "\n";
+  EXPECT_GT(edges[0], 0.5) << "the plain render must be anti-aliased for the test to mean much";
+  EXPECT_GT(edges[1], 0.5);
+  EXPECT_LT(edges[2], 0.1);
 }
 
 //------------------------------------------------------------------------------
