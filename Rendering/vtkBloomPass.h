@@ -21,6 +21,12 @@
  * CPU chain, and the GPU result agrees with vtkImageBloom applied to the same float render to
  * within float rounding (tested per preset).
  *
+ * Multisampling. Where the framebuffer the pass is called with is multisampled (VTK's render
+ * window asks for samples by default), the delegate renders into a multisampled float target
+ * with as many samples, resolved once (in float) before the bright pass, so thin lines keep
+ * their anti-aliasing. The composite into such a framebuffer is a fragment pass (a compute
+ * shader cannot write a multisampled image); elsewhere it is a compute pass where it can be.
+ *
  * Alpha. Where the scene is opaque the output alpha is 1, as the scene's. Over a transparent
  * background (a renderer background alpha below 1 in a window with alpha planes) the glow
  * carries alpha: the colour stays premultiplied (scene + glow) and the alpha becomes
