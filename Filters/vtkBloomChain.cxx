@@ -47,8 +47,8 @@ void vtkBloomChain::Build(vtkBloomParameters* p, int width, int height)
   const auto up = p->GetUpsampleKernel() == vtkImagePyramidUp::BILINEAR
     ? vtkBloomKernels::BilinearTaps()
     : vtkBloomKernels::TentTaps();
-  const auto blurTaps =
-    vtkBloomKernels::SymmetricTaps(p->GetEffectiveBlurHalfKernel(), p->GetBlurTapSpacing());
+  const auto blurTaps = vtkBloomKernels::SymmetricTaps(
+    p->GetEffectiveBlurHalfKernel(height), p->GetEffectiveBlurTapSpacing(height));
   const int iterations = p->GetBlurIterations();
 
   this->Levels.resize(sizes.size());
@@ -89,13 +89,13 @@ void vtkBloomChain::Build(vtkBloomParameters* p, int width, int height)
   }
   if (!this->Levels.empty())
   {
-    this->SourceIsIdentity = p->GetStartLevel() == 0;
+    this->SourceIsIdentity = p->GetEffectiveStartLevel(height) == 0;
     if (!this->SourceIsIdentity)
     {
       this->Source = Resample(full, this->Levels[0].Size, bilinear);
     }
     this->FinalIsIdentity =
-      this->AccumulateMode == vtkBloomParameters::DIRECT || p->GetStartLevel() == 0;
+      this->AccumulateMode == vtkBloomParameters::DIRECT || p->GetEffectiveStartLevel(height) == 0;
     if (!this->FinalIsIdentity)
     {
       this->Final = Resample(this->Levels[0].Size, full, bilinear);

@@ -21,6 +21,7 @@ vtkBloomParameters::vtkBloomParameters()
   this->Knee = 0.5;
   this->ClampLuminance = VTK_FLOAT_MAX;
   this->StartLevel = 1;
+  this->ReferenceHeight = 1080;
   this->NumberOfLevels = 5;
   this->LimitLevelsToImageSize = false;
   this->DownsampleKernel = vtkImagePyramidDown::JIMENEZ13;
@@ -86,6 +87,50 @@ std::vector<double> vtkBloomParameters::GetEffectiveBlurHalfKernel() const
     : vtkBloomKernels::RadiusForSigma(this->BlurStandardDeviation, 3.0);
   return vtkBloomKernels::GaussianHalfKernel(
     this->BlurStandardDeviation, radius, this->BlurGaussianKind);
+}
+
+//------------------------------------------------------------------------------
+int vtkBloomParameters::GetEffectiveStartLevel(int height) const
+{
+  if (this->ReferenceHeight <= 0 || height <= 0)
+  {
+    return this->StartLevel;
+  }
+  const double deeper = std::round(std::log2(static_cast<double>(height) / this->ReferenceHeight));
+  return static_cast<int>(std::min(std::max(this->StartLevel + deeper, 0.0), 16.0));
+}
+
+//------------------------------------------------------------------------------
+double vtkBloomParameters::GetBlurScale(int height) const
+{
+  if (this->ReferenceHeight <= 0 || height <= 0)
+  {
+    return 1.0;
+  }
+  // What the change of start level leaves of height / ReferenceHeight.
+  const int shift = this->GetEffectiveStartLevel(height) - this->StartLevel;
+  return static_cast<double>(height) / this->ReferenceHeight * std::ldexp(1.0, -shift);
+}
+
+//------------------------------------------------------------------------------
+std::vector<double> vtkBloomParameters::GetEffectiveBlurHalfKernel(int height) const
+{
+  const double scale = this->GetBlurScale(height);
+  if (this->BlurKernel == BLUR_CUSTOM || scale == 1.0)
+  {
+    return this->GetEffectiveBlurHalfKernel(); // a custom kernel scales by its spacing
+  }
+  const double sigma = this->BlurStandardDeviation * scale;
+  const int radius = this->BlurRadius >= 0 ? static_cast<int>(std::lround(this->BlurRadius * scale))
+                                           : vtkBloomKernels::RadiusForSigma(sigma, 3.0);
+  return vtkBloomKernels::GaussianHalfKernel(sigma, radius, this->BlurGaussianKind);
+}
+
+//------------------------------------------------------------------------------
+double vtkBloomParameters::GetEffectiveBlurTapSpacing(int height) const
+{
+  return this->BlurKernel == BLUR_CUSTOM ? this->BlurTapSpacing * this->GetBlurScale(height)
+                                         : this->BlurTapSpacing;
 }
 
 //------------------------------------------------------------------------------
@@ -178,7 +223,8 @@ std::vector<std::pair<int, int>> vtkBloomParameters::ComputeLevelSizes(int width
   {
     return sizes;
   }
-  int deepest = this->StartLevel + this->NumberOfLevels - 1;
+  const int start = this->GetEffectiveStartLevel(height);
+  int deepest = start + this->NumberOfLevels - 1;
   if (this->LimitLevelsToImageSize)
   {
     // A full mip chain has floor(log2(max(W, H))) + 1 levels, counting level 0.
@@ -192,7 +238,7 @@ std::vector<std::pair<int, int>> vtkBloomParameters::ComputeLevelSizes(int width
   int w = width, h = height;
   for (int k = 0; k <= deepest; ++k)
   {
-    if (k >= this->StartLevel)
+    if (k >= start)
     {
       sizes.emplace_back(w, h);
     }
@@ -277,6 +323,7 @@ void vtkBloomParameters::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Knee: " << this->Knee << "\n";
   os << indent << "ClampLuminance: " << this->ClampLuminance << "\n";
   os << indent << "StartLevel: " << this->StartLevel << "\n";
+  os << indent << "ReferenceHeight: " << this->ReferenceHeight << "\n";
   os << indent << "NumberOfLevels: " << this->NumberOfLevels << "\n";
   os << indent << "LimitLevelsToImageSize: " << onOff(this->LimitLevelsToImageSize) << "\n";
   os << indent

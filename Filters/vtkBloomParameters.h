@@ -220,6 +220,26 @@ public:
   ///@}
 
   ///@{
+  /**
+   * The height, in pixels, of the frame the sizes above are meant for. 0: they are pixels of
+   * whatever image comes (the presets' seed semantics). Above 0 (the default, 1080): the bloom
+   * keeps its size relative to the frame's height, so a frame H pixels tall looks like this
+   * one rescaled. The pyramid starts log2(H / ReferenceHeight) levels deeper (rounded; at
+   * least level 0), and the blur's sigma, radius and tap spacing take the factor that remains
+   * (GetBlurScale). At H = ReferenceHeight nothing changes.
+   */
+  vtkSetClampMacro(ReferenceHeight, int, 0, 65536);
+  vtkGetMacro(ReferenceHeight, int);
+  /// The pyramid level of the bright pass for a frame `height` pixels tall.
+  int GetEffectiveStartLevel(int height) const;
+  /// The factor on the blur's sizes for a frame `height` pixels tall (1 with no reference).
+  double GetBlurScale(int height) const;
+  /// The blur's half kernel and tap spacing for a frame `height` pixels tall.
+  std::vector<double> GetEffectiveBlurHalfKernel(int height) const;
+  double GetEffectiveBlurTapSpacing(int height) const;
+  ///@}
+
+  ///@{
   /// Downsampling kernel: vtkImagePyramidDown::JIMENEZ13 (default), BOX or BINOMIAL.
   vtkSetClampMacro(DownsampleKernel, int, 0, 2);
   vtkGetMacro(DownsampleKernel, int);
@@ -330,8 +350,9 @@ public:
   ///@}
 
   /**
-   * Sizes of the pyramid levels for an input of `width` x `height`, first level first, as
-   * (width, height) pairs (empty when no level fits).
+   * Sizes of the pyramid levels for an input of `width` x `height` (from
+   * GetEffectiveStartLevel(height)), first level first, as (width, height) pairs (empty when no
+   * level fits).
    */
   std::vector<std::pair<int, int>> ComputeLevelSizes(int width, int height) const;
 
@@ -356,6 +377,7 @@ protected:
   double Knee;
   double ClampLuminance;
   int StartLevel;
+  int ReferenceHeight;
   int NumberOfLevels;
   bool LimitLevelsToImageSize;
   int DownsampleKernel;

@@ -53,8 +53,9 @@ bool vtkBloomParameters::SetPreset(const char* name)
     return false;
   }
   const std::string preset = name;
-  // Shared defaults; each preset then states what it changes.
+  // Shared defaults; each preset then states what it changes. A seed's sizes are pixels.
   this->BloomMode = BLOOM_PYRAMID;
+  this->ReferenceHeight = 0;
   this->ClampLuminance = VTK_FLOAT_MAX;
   this->Knee = 0.5;
   this->LimitLevelsToImageSize = false;
@@ -169,6 +170,7 @@ void vtkBloomParameters::DeepCopy(vtkBloomParameters* source)
   CopyIfDifferent(this->Knee, source->Knee, changed);
   CopyIfDifferent(this->ClampLuminance, source->ClampLuminance, changed);
   CopyIfDifferent(this->StartLevel, source->StartLevel, changed);
+  CopyIfDifferent(this->ReferenceHeight, source->ReferenceHeight, changed);
   CopyIfDifferent(this->NumberOfLevels, source->NumberOfLevels, changed);
   CopyIfDifferent(this->LimitLevelsToImageSize, source->LimitLevelsToImageSize, changed);
   CopyIfDifferent(this->DownsampleKernel, source->DownsampleKernel, changed);

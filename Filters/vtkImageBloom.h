@@ -211,6 +211,8 @@ public:
   double GetClampLuminance() { return this->Parameters->GetClampLuminance(); }
   void SetStartLevel(int v) { this->Parameters->SetStartLevel(v); }
   int GetStartLevel() { return this->Parameters->GetStartLevel(); }
+  void SetReferenceHeight(int v) { this->Parameters->SetReferenceHeight(v); }
+  int GetReferenceHeight() { return this->Parameters->GetReferenceHeight(); }
   void SetNumberOfLevels(int v) { this->Parameters->SetNumberOfLevels(v); }
   int GetNumberOfLevels() { return this->Parameters->GetNumberOfLevels(); }
   void SetLimitLevelsToImageSize(bool v) { this->Parameters->SetLimitLevelsToImageSize(v); }

@@ -1,6 +1,7 @@
 // vtkImageBloom's PSF mode (its parameters are vtkBloomParameters'): the point-spread function of
-// each colour channel and the execution (bright pass, convolution with the PSF, composite). The convolution itself is
-// vtkBloomPSF's; the pyramid chain is in vtkImageBloom.cxx and vtkImageBloomReferenceChain.cxx.
+// each colour channel and the execution (bright pass, convolution with the PSF, composite). The
+// convolution itself is vtkBloomPSF's; the pyramid chain is in vtkImageBloom.cxx and
+// vtkImageBloomReferenceChain.cxx.
 #include "vtkImageBloom.h"
 
 #include "vtkBloomImageOps.h"

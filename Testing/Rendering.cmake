@@ -31,3 +31,10 @@ vtkbloom_add_gtest(TestBloomPassRegion OPENGL
   LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom
     VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonDataModel VTK::CommonCore)
 vtk_module_autoinit(TARGETS TestBloomPassRegion MODULES VTK::RenderingOpenGL2)
+
+# Temporal stability: the bloom's energy under sub-pixel camera motion against the scene's.
+vtkbloom_add_gtest(TestBloomPassMotion OPENGL
+  SOURCES Rendering/TestBloomPassMotion.cxx
+  LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom
+    VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonDataModel VTK::CommonCore)
+vtk_module_autoinit(TARGETS TestBloomPassMotion MODULES VTK::RenderingOpenGL2)

@@ -76,6 +76,8 @@ image: HDR bloom (vtkImageBloom). A preset is applied first; options then overri
   --tint R,G,B           bloom colour
   --levels N             number of pyramid levels (1..32)
   --start-level L        resolution of the bright pass: 0 full, 1 half, ...
+  --reference-height H   sizes meant for a frame H pixels tall, scaled to the image's
+                         (0: sizes in pixels, as a named preset's; default 1080, 540 for scenes)
   --down K               jimenez13 | box | binomial
   --karis                Karis average on the first downsample
   --up K                 tent | bilinear

@@ -16,10 +16,10 @@
 namespace vtkBloomTool
 {
 const std::vector<std::string> BloomOptionNames = { "--preset", "--threshold", "--knee", "--mode",
-  "--clamp-luminance", "--strength", "--composite", "--tint", "--levels", "--start-level", "--down",
-  "--up", "--accumulate", "--blur-sigma", "--blur-radius", "--blur-spacing", "--blur-iterations",
-  "--level-weights", "--convolution", "--psf", "--psf-radius", "--airy-radius", "--wavelengths",
-  "--psf-gaussians", "--psf-border" };
+  "--clamp-luminance", "--strength", "--composite", "--tint", "--levels", "--start-level",
+  "--reference-height", "--down", "--up", "--accumulate", "--blur-sigma", "--blur-radius",
+  "--blur-spacing", "--blur-iterations", "--level-weights", "--convolution", "--psf",
+  "--psf-radius", "--airy-radius", "--wavelengths", "--psf-gaussians", "--psf-border" };
 
 namespace
 {
@@ -221,6 +221,10 @@ BloomOptions::BloomOptions(Arguments& args)
   if (args.Take("--start-level", v))
   {
     this->Set(&vtkBloomParameters::SetStartLevel, ParseInt("--start-level", v, 0, 16));
+  }
+  if (args.Take("--reference-height", v))
+  {
+    this->Set(&vtkBloomParameters::SetReferenceHeight, ParseInt("--reference-height", v, 0, 65536));
   }
   if (args.Take("--down", v))
   {

@@ -27,6 +27,9 @@
 
 namespace
 {
+// The height the scenes' bloom parameters were chosen at (vtk-bloom render's default size);
+// other heights get the same look, scaled (vtkBloomParameters::ReferenceHeight).
+constexpr int SceneHeight = 540;
 // A perceptual "hot" table: black-red-yellow-white over the wavelet's range.
 void HotTable(vtkLookupTable* table, double lo, double hi)
 {
@@ -83,6 +86,7 @@ void ScalarField(vtkRenderer* renderer, vtkBloomPass* pass)
   pass->SetEmissionSourceToEmitters();
   pass->SetPreset("webgpu-market");
   vtkBloomParameters* p = pass->GetParameters();
+  p->SetReferenceHeight(SceneHeight); // the same look at every resolution
   p->SetThresholdMode(vtkImageBloomThreshold::NONE);
   p->SetNumberOfLevels(6);
   p->SetStrength(1.5);
@@ -212,6 +216,7 @@ void FieldLines(vtkRenderer* renderer, vtkBloomPass* pass)
 
   pass->SetPreset("webgpu-market");
   vtkBloomParameters* p = pass->GetParameters();
+  p->SetReferenceHeight(SceneHeight); // the same look at every resolution
   p->SetThreshold(1.0);
   p->SetNumberOfLevels(6);
   p->SetStrength(0.5);
@@ -293,6 +298,7 @@ void LitScene(vtkRenderer* renderer, vtkBloomPass* pass)
 
   pass->SetPreset("webgpu-market");
   vtkBloomParameters* p = pass->GetParameters();
+  p->SetReferenceHeight(SceneHeight); // the same look at every resolution
   p->SetThreshold(1.2);
   p->SetNumberOfLevels(6);
   p->SetStrength(0.6);

@@ -268,7 +268,8 @@ std::vector<GenericCase> GenericCases()
   std::vector<GenericCase> cases;
   {
     // The documented defaults: smoothstep T 1 knee 0.5, start level 1, 5 levels, 13-tap,
-    // sampled Gaussian sigma 1 with radius ceil(3 sigma) = 3, tent cascade, additive.
+    // sampled Gaussian sigma 1 with radius ceil(3 sigma) = 3, tent cascade, additive, as they
+    // apply at the reference height (the test sets ReferenceHeight 0: sizes in pixels).
     GenericCase c;
     c.Name = "defaults";
     c.Ref.BlurHalfKernel = HalfGaussian(1.0, 3, vtkBloomRef::SAMPLED);
@@ -423,6 +424,7 @@ TEST(FiltersBloomGeneric, MatchesReference)
           continue;
         }
         vtkNew<vtkImageBloom> bloom;
+        bloom->SetReferenceHeight(0); // the reference's sizes are pixels
         c.Configure(bloom);
         bloom->SetInputData(
           vtkBloomRef::ToImage(v.Components == 1 ? gray : image, v.Components, v.Type));
@@ -441,6 +443,7 @@ TEST(FiltersBloomGeneric, MatchesReference)
 TEST(FiltersBloomGeneric, LevelSizes)
 {
   vtkNew<vtkImageBloom> bloom;
+  bloom->SetReferenceHeight(0); // sizes in pixels
   bloom->SetStartLevel(1);
   bloom->SetNumberOfLevels(5);
   const std::vector<std::pair<int, int>> expected = { { 80, 45 }, { 40, 22 }, { 20, 11 }, { 10, 5 },
@@ -452,6 +455,42 @@ TEST(FiltersBloomGeneric, LevelSizes)
   bloom->LimitLevelsToImageSizeOn();
   const std::vector<std::pair<int, int>> limited = { { 1, 3 }, { 1, 1 } }; // log2(7) = 2
   EXPECT_EQ(bloom->ComputeLevelSizes(2, 7), limited);
+}
+
+// ReferenceHeight: at the reference height the parameters are pixels (the same bits as
+// ReferenceHeight 0); at 2^k times it the pyramid starts k levels deeper, so the levels, and the
+// blur in level pixels, are those of the reference frame; in between, the blur takes the
+// remaining factor; a preset asked for by name keeps its seed's pixels.
+TEST(FiltersBloomGeneric, ReferenceHeightScalesThePyramidAndTheBlur)
+{
+  vtkNew<vtkBloomParameters> p;
+  EXPECT_EQ(p->GetReferenceHeight(), 1080);
+  EXPECT_EQ(p->GetEffectiveStartLevel(1080), 1);
+  EXPECT_EQ(p->GetBlurScale(1080), 1.0);
+  EXPECT_EQ(p->GetEffectiveStartLevel(2160), 2);
+  EXPECT_EQ(p->GetEffectiveStartLevel(4320), 3);
+  EXPECT_EQ(p->GetEffectiveStartLevel(540), 0);
+  EXPECT_EQ(p->GetBlurScale(4320), 1.0);
+  EXPECT_NEAR(p->GetBlurScale(1440), 1440.0 / 1080.0, 1e-15);
+  EXPECT_NEAR(p->GetBlurScale(270), 0.5, 1e-15); // start level 0: the blur shrinks instead
+  EXPECT_EQ(p->ComputeLevelSizes(3840, 2160).front(), std::make_pair(960, 540));
+  EXPECT_EQ(p->ComputeLevelSizes(1920, 1080).front(), std::make_pair(960, 540));
+  EXPECT_EQ(p->GetEffectiveBlurHalfKernel(2160), p->GetEffectiveBlurHalfKernel());
+  EXPECT_GT(p->GetEffectiveBlurHalfKernel(1440).size(), p->GetEffectiveBlurHalfKernel().size());
+
+  auto image = vtkBloomRef::ToImage(vtkBloomRef::SyntheticScene(33, 20, 5), 4, VTK_FLOAT);
+  vtkNew<vtkImageBloom> pixels, reference;
+  pixels->SetReferenceHeight(0);
+  reference->SetReferenceHeight(20);
+  EXPECT_TRUE(vtkBloomTest::BitIdentical(
+    vtkBloomTest::RunAndCopy(pixels, image), vtkBloomTest::RunAndCopy(reference, image)));
+
+  for (const std::string& preset : vtkBloomParameters::GetPresetNames())
+  {
+    vtkNew<vtkBloomParameters> seed;
+    seed->SetPreset(preset.c_str());
+    EXPECT_EQ(seed->GetReferenceHeight(), 0) << preset;
+  }
 }
 
 // Strength 0 with ADDITIVE is the identity, bit for bit.

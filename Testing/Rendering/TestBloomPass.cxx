@@ -482,6 +482,74 @@ TEST(RenderingBloomPass, KeepsMultisampling)
 }
 
 //------------------------------------------------------------------------------
+// The same look at every resolution: the example scenes' bloom keeps its size relative to the
+// frame (vtkBloomParameters::ReferenceHeight). lit-spheres at 960x540, 1920x1080 and 3840x2160
+// (its emitters are surfaces, so the scene itself scales): each bloom term (result minus
+// scene), box-averaged to 960x540, agrees with the 960x540 one within 5 % relative L2.
+namespace
+{
+std::vector<double> BloomTermAt(const char* scene, int scale, bool fixedPixels)
+{
+  const int width = 960, height = 540;
+  BloomWindow w(width * scale, height * scale);
+  EXPECT_TRUE(vtkBloomBuildExampleScene(scene, w.Renderer, w.Bloom));
+  if (fixedPixels)
+  {
+    w.Bloom->GetParameters()->SetReferenceHeight(0);
+  }
+  w.Bloom->SetFloatPrecisionTo32Bit();
+  w.Bloom->CaptureResultOn();
+  w.Window->Render();
+  vtkNew<vtkImageData> sceneImage, result;
+  EXPECT_TRUE(w.Bloom->ReadSceneImage(sceneImage));
+  EXPECT_TRUE(w.Bloom->ReadResultImage(result));
+  const float* before = static_cast<const float*>(sceneImage->GetScalarPointer());
+  const float* after = static_cast<const float*>(result->GetScalarPointer());
+  std::vector<double> term(static_cast<size_t>(width) * height * 3, 0.0);
+  for (int y = 0; y < height * scale; ++y)
+  {
+    for (int x = 0; x < width * scale; ++x)
+    {
+      const size_t in = 4 * (static_cast<size_t>(y) * width * scale + x);
+      const size_t out = 3 * (static_cast<size_t>(y / scale) * width + x / scale);
+      for (int c = 0; c < 3; ++c)
+      {
+        term[out + c] += (after[in + c] - before[in + c]) / (scale * scale);
+      }
+    }
+  }
+  return term;
+}
+
+double RelativeL2(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double num = 0.0, den = 0.0;
+  for (size_t i = 0; i < a.size(); ++i)
+  {
+    num += (a[i] - b[i]) * (a[i] - b[i]);
+    den += b[i] * b[i];
+  }
+  return std::sqrt(num / den);
+}
+}
+
+TEST(RenderingBloomPass, SameLookAtEveryResolution)
+{
+  const std::vector<double> base = BloomTermAt("lit-spheres", 1, false);
+  for (const int scale : { 2, 4 })
+  {
+    const double scaled = RelativeL2(BloomTermAt("lit-spheres", scale, false), base);
+    std::cout << "[ resolution ] lit-spheres at " << scale << "x: bloom term within " << scaled
+              << " relative L2 of 960x540's\n";
+    EXPECT_LE(scaled, 0.05) << scale << "x";
+  }
+  // With the sizes in pixels (a seed's semantics) the glow shrinks: the test can tell.
+  const double pixels = RelativeL2(BloomTermAt("lit-spheres", 2, true), base);
+  std::cout << "[ resolution ] with sizes in pixels at 2x: " << pixels << "\n";
+  EXPECT_GT(pixels, 0.1);
+}
+
+//------------------------------------------------------------------------------
 // Bloom in linear HDR, then tone mapping: vtkToneMappingPass's delegate is the bloom pass.
 TEST(RenderingBloomPass, ChainsWithToneMapping)
 {
