@@ -81,6 +81,7 @@ bool vtkBloomPass::vtkInternals::Prepare(
   this->Runner.Passes = 0;
   this->Runner.Fast = self->Quality == QUALITY_FAST;
   this->Runner.UseCompute = self->UseComputeShaders;
+  this->Runner.SimulateComputeFailure = self->SimulateComputeShaderFailure;
   this->Runner.ComputePasses = 0;
   this->Runner.Parameters = self->Parameters;
   this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
@@ -589,6 +590,9 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "Emitters: " << this->Emitters->GetNumberOfItems() << "\n";
   os << indent << "Quality: " << (this->Quality == QUALITY_FAST ? "Fast" : "Exact") << "\n";
   os << indent << "UseComputeShaders: " << (this->UseComputeShaders ? "On" : "Off") << "\n";
+  os << indent
+     << "SimulateComputeShaderFailure: " << (this->SimulateComputeShaderFailure ? "On" : "Off")
+     << "\n";
   os << indent << "LastComputePasses: " << this->LastComputePasses << "\n";
   os << indent << "CaptureResult: " << (this->CaptureResult ? "On" : "Off") << "\n";
   os << indent << "NumberOfPasses: " << this->NumberOfPasses << "\n";

@@ -179,6 +179,16 @@ public:
   vtkBooleanMacro(UseComputeShaders, bool);
   ///@}
 
+  ///@{
+  /**
+   * For tests: make every compute program fail to build, as a driver's compiler might. A
+   * compute variant that does not build is not fatal: the pass warns once and runs that
+   * variant's passes as fragment passes, with the same result. Default off.
+   */
+  vtkSetMacro(SimulateComputeShaderFailure, bool);
+  vtkGetMacro(SimulateComputeShaderFailure, bool);
+  ///@}
+
   /// The passes of the last evaluation that ran as compute shaders (of GetNumberOfPasses()).
   vtkGetMacro(LastComputePasses, int);
 
@@ -332,6 +342,7 @@ protected:
   int EmissionSource;
   int Quality;
   bool UseComputeShaders;
+  bool SimulateComputeShaderFailure = false;
   int LastComputePasses;
   bool CaptureResult;
   int LastBrightRegion[4];

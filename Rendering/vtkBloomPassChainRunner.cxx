@@ -170,7 +170,19 @@ void vtkBloomPassChainRunner::Pass(
   }
   const int width = spec.X ? spec.X->OutputSize : spec.SourceSize[0];
   const int height = spec.Y ? spec.Y->OutputSize : spec.SourceSize[1];
-  const ImageTarget image = this->BeginPass(target, origin, spec, width, height);
+  ImageTarget image = this->BeginPass(target, origin, spec, width, height);
+  const std::vector<Draw> draws = this->Draws(spec, width, height);
+  if (image.Texture != 0 && !this->ComputeProgramsBuild(spec, draws, image.Format))
+  {
+    // A compute variant did not build (ComputeFailed warned once): this pass, and every later
+    // one of that variant, runs as fragments instead.
+    image = ImageTarget();
+    if (target)
+    {
+      target->FBO->Bind();
+      target->FBO->ActivateDrawBuffer(0);
+    }
+  }
   const bool compute = image.Texture != 0;
   const PassTextures textures = this->PassTexturesOf(spec);
   for (vtkTextureObject* texture : textures.Textures)
@@ -180,7 +192,7 @@ void vtkBloomPassChainRunner::Pass(
       texture->Activate();
     }
   }
-  for (const Draw& draw : this->Draws(spec, width, height))
+  for (const Draw& draw : draws)
   {
     PassSpec variant = spec;
     variant.ZeroBloom = draw.Zero;
@@ -237,6 +249,22 @@ void vtkBloomPassChainRunner::Pass(
     this->EndProfiledPass(spec);
   }
   ++this->Passes;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::ComputeProgramsBuild(
+  const PassSpec& spec, const std::vector<Draw>& draws, unsigned int format)
+{
+  for (const Draw& draw : draws)
+  {
+    PassSpec variant = spec;
+    variant.ZeroBloom = draw.Zero;
+    if (!this->Compute(this->Variant(variant, draw.XMode, draw.YMode), spec.Blend, format))
+    {
+      return false;
+    }
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------

@@ -23,6 +23,7 @@
 #include <array>
 #include <map>
 #include <memory>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -75,6 +76,8 @@ public:
    * can be written as an image (FramebufferImage); else fragment passes.
    */
   bool UseCompute = true;
+  /// For tests: every compute variant fails to build (the fallback to fragments then runs).
+  bool SimulateComputeFailure = false;
   int ComputePasses = 0; ///< passes drawn as compute since it was last set to 0
 
   /**
@@ -378,6 +381,9 @@ private:
     std::map<std::string, int> Locations;
   };
   std::map<std::string, ComputeProgram> ComputePrograms;
+  /// Compute variants that did not build: not tried again, their passes run as fragments.
+  std::set<std::string> FailedCompute;
+  bool WarnedComputeFallback = false;
 
   /// Whether the context runs compute shaders (OpenGL 4.3), asked once.
   bool ComputeSupported();
@@ -458,6 +464,9 @@ private:
    */
   ImageTarget BeginPass(
     vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec, int width, int height);
+  /// Whether the compute program of every draw builds (Compute), made now where it is new.
+  bool ComputeProgramsBuild(
+    const PassSpec& spec, const std::vector<Draw>& draws, unsigned int format);
   /// The draws of a width x height pass, cut to its region; counts the samples it computes.
   std::vector<Draw> Draws(const PassSpec& spec, int width, int height);
   PassTextures PassTexturesOf(const PassSpec& spec);

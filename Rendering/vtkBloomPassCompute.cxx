@@ -237,7 +237,12 @@ vtkBloomPassChainRunner::ComputeProgram* vtkBloomPassChainRunner::Compute(
   const char* layout = format == GL_RGBA8 ? "rgba8" : format == GL_RGBA16F ? "rgba16f" : "rgba32f";
   const std::string header = std::string("#version 430 core\n#define COMPUTE 1\n#define BLEND ") +
     (blend ? "1" : "0") + "\n#define IMAGE_FORMAT " + layout + "\n";
-  ComputeProgram& program = this->ComputePrograms[header + variant];
+  const std::string key = header + variant;
+  if (this->FailedCompute.count(key))
+  {
+    return nullptr;
+  }
+  ComputeProgram& program = this->ComputePrograms[key];
   if (program.Id)
   {
     return &program;
@@ -248,13 +253,19 @@ vtkBloomPassChainRunner::ComputeProgram* vtkBloomPassChainRunner::Compute(
   vtkShaderProgram::Substitute(text, "//BLOOM::Constants", ShaderConstants());
   vtkShaderProgram::Substitute(text, "//BLOOM::Variant", variant);
   std::string log;
-  const GLuint id = BuildComputeProgram(text.c_str(), &log);
+  const GLuint id = this->SimulateComputeFailure ? 0 : BuildComputeProgram(text.c_str(), &log);
   if (!id)
   {
-    vtkErrorWithObjectMacro(this->Owner, << "Could not build the bloom compute program:\n"
-                                         << log << "\n"
-                                         << variant);
-    this->ComputePrograms.erase(header + variant);
+    // Its passes run as fragments from now on; one warning says so, for the first variant.
+    if (!this->WarnedComputeFallback)
+    {
+      vtkWarningWithObjectMacro(this->Owner,
+        << "A bloom compute program did not build; its passes run as fragment passes instead. "
+        << (this->SimulateComputeFailure ? "(simulated for a test)" : log));
+      this->WarnedComputeFallback = true;
+    }
+    this->ComputePrograms.erase(key);
+    this->FailedCompute.insert(key);
     return nullptr;
   }
   program.Id = id;

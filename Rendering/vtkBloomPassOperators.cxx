@@ -94,13 +94,16 @@ vtkBloomPassChainRunner::Interior vtkBloomPassChainRunner::Interior::Find(
 std::string vtkBloomPassChainRunner::Interior::Defines(const char* axis, bool linear) const
 {
   // Bit k of ANY: tap (or pair) k is non-zero in some phase (else it is compiled out); of
-  // ALL: in every phase (no run-time test of its weight).
+  // ALL: in every phase (no run-time test of its weight). Only the first 32 taps have bits (a
+  // shift by 32 or more is undefined in C++ and in GLSL); the shader tests the weight of the
+  // others (tapIsOn).
   const int count = linear ? this->Pairs : this->Taps;
+  const int masked = std::min(count, 32);
   const std::vector<float>& weights = linear ? this->PairWeights : this->Weights;
-  unsigned int any = 0, all = (1u << count) - 1;
+  unsigned int any = 0, all = masked == 32 ? 0xffffffffu : (1u << masked) - 1u;
   for (int ph = 0; ph < this->Period; ++ph)
   {
-    for (int k = 0; k < count; ++k)
+    for (int k = 0; k < masked; ++k)
     {
       if (weights[ph * count + k] != 0.0f)
       {

@@ -197,6 +197,7 @@ void vtkBloomPassChainRunner::ReleaseCompute()
     }
   }
   this->ComputePrograms.clear();
+  this->FailedCompute.clear(); // a new context builds them afresh
   this->ComputeSupport = 0;
 }
 

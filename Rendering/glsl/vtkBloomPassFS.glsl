@@ -318,6 +318,19 @@ vec4 finite(vec4 v)
 }
 #endif
 
+// Whether tap k of weight w contributes. Bit k of `any`: the tap is non-zero in some phase
+// (else it is compiled out); of `all`: in every phase (no run-time test of its weight). The
+// masks hold the first 32 taps only (GLSL leaves a shift by 32 or more undefined); a wider
+// operator's further taps are tested by their weight.
+bool tapIsOn(uint any, uint all, int k, float w)
+{
+  if (k >= 32)
+  {
+    return w != 0.0;
+  }
+  return ((any >> uint(k)) & 1u) != 0u && (((all >> uint(k)) & 1u) != 0u || w != 0.0);
+}
+
 void main()
 {
   // The output sample this fragment computes; texCoord spans the draw's region.
@@ -341,13 +354,13 @@ void main()
   {
     // The tap masks are constants except for OP_TABLE: the tests fold at compile time.
     float wy = weightY(p.y, ky);
-    if (((Y_ANY >> ky) & 1u) != 0u && (((Y_ALL >> ky) & 1u) != 0u || wy != 0.0))
+    if (tapIsOn(Y_ANY, Y_ALL, ky, wy))
     {
       vec4 row = vec4(0.0);
       for (int kx = 0; kx < X_COUNT; ++kx)
       {
         float wx = weightX(p.x, kx);
-        if (((X_ANY >> kx) & 1u) != 0u && (((X_ALL >> kx) & 1u) != 0u || wx != 0.0))
+        if (tapIsOn(X_ANY, X_ALL, kx, wx))
         {
 #if X_LINEAR || Y_LINEAR
           row += wx * textureLod(source, (vec2(positionX(kx), positionY(ky)) + 0.5) * sourceTexel, 0.0);

@@ -807,3 +807,65 @@ TEST(RenderingBloomPassHardCases, ZeroTintChannelIgnoresAnOverflowingBloom)
     }
   }
 }
+
+//------------------------------------------------------------------------------
+// Operators wider than 32 taps: the shader's tap masks hold 32 taps, and a shift by 32 or more is
+// undefined in GLSL, so the taps beyond are tested by their weight. Level blurs of 33, 63, 65
+// (two passes of 33) and 385 taps (the ping-pong preset) on the GPU agree with the CPU filter's
+// REFERENCE chain to float rounding, both as tables (near the borders) and as periodic
+// interiors, exact and fast.
+TEST(RenderingBloomPassHardCases, OperatorsWiderThan32TapsMatchTheCPU)
+{
+  struct Wide
+  {
+    const char* Name;
+    int HalfTaps;
+    int Iterations;
+  };
+  const Wide cases[] = { { "33 taps", 17, 1 }, { "63 taps", 32, 1 }, { "65 taps", 17, 2 },
+    { "385 taps (ping-pong)", 0, 0 } };
+  // Bright dots, a few pixels wide, on a dim ramp: the fast mode's bilinear pairs (8-bit
+  // filtering weights) stay within their documented error on it.
+  const int extent[6] = { 0, 210, 0, 96, 0, 0 };
+  auto input = vtkBloomTest::MakeImage(extent, 4, VTK_FLOAT,
+    [](int i, int j, int, int ch)
+    {
+      const double dx = (i % 37) - 18.0, dy = (j % 29) - 14.0;
+      return ch == 3 ? 1.0 : 0.1 + 0.002 * i + 6.0 * std::exp(-(dx * dx + dy * dy) / 6.0);
+    });
+  for (const Wide& c : cases)
+  {
+    GpuBloom gpu;
+    vtkBloomParameters* p = gpu.Parameters();
+    if (c.HalfTaps == 0)
+    {
+      p->SetPreset("ping-pong");
+    }
+    else
+    {
+      p->SetReferenceHeight(0);
+      p->SetThresholdMode(vtkImageBloomThreshold::NONE);
+      p->SetStartLevel(0);
+      p->SetNumberOfLevels(1);
+      p->SetBlurKernel(vtkBloomParameters::BLUR_CUSTOM);
+      // Unequal weights, so that a dropped or doubled tap shows.
+      std::vector<double> half(c.HalfTaps);
+      for (int k = 0; k < c.HalfTaps; ++k)
+      {
+        half[k] = 1.0 / (2.0 * c.HalfTaps) * (1.0 + 0.5 * std::cos(0.7 * k));
+      }
+      p->SetBlurHalfKernel(half);
+      p->SetBlurIterations(c.Iterations);
+    }
+    auto cpu = gpu.Cpu(input);
+    for (const int quality : { vtkBloomPass::QUALITY_EXACT, vtkBloomPass::QUALITY_FAST })
+    {
+      gpu.Pass->SetQuality(quality);
+      auto out = gpu.Apply(input);
+      ASSERT_TRUE(out);
+      const double error = ColourRelativeL2(out, cpu, [](int, int) { return true; });
+      EXPECT_LE(error, quality == vtkBloomPass::QUALITY_EXACT ? 1e-5 : 2e-3)
+        << c.Name << (quality == vtkBloomPass::QUALITY_EXACT ? ", exact" : ", fast");
+    }
+  }
+}

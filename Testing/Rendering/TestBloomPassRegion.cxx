@@ -5,6 +5,7 @@
 #include "vtkBloomPass.h"
 
 #include "vtkBloomVTKCompat.h"
+#include "vtkCommand.h"
 #include "vtkFloatArray.h"
 #include "vtkFramebufferPass.h"
 #include "vtkImageBloom.h"
@@ -542,4 +543,61 @@ TEST(RenderingBloomPassRegion, SmallRegionFollowsItsMeasuredCost)
     EXPECT_TRUE(SameBits(first, output)) << "render " << render;
   }
   EXPECT_GE(full, 1);
+}
+
+namespace
+{
+// Counts the warnings and errors an object sends.
+class WarningLog : public vtkCommand
+{
+public:
+  static WarningLog* New() { return new WarningLog; }
+  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
+  int Count = 0;
+};
+}
+
+//------------------------------------------------------------------------------
+// A compute variant that does not build falls back to the fragment pass: one warning over
+// several frames, no OpenGL error, no more compute passes than with compute shaders off (the
+// bright region's reduction has its own program and fallback), and the same result, bit for bit
+// (both are fragment passes then).
+TEST(RenderingBloomPassCompute, FailedComputeProgramFallsBackToFragments)
+{
+  std::vector<float> results[2];
+  int computePasses[2] = { 0, 0 };
+  for (const bool simulate : { false, true })
+  {
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetMultiSamples(0);
+    window->SetSize(160, 90);
+    vtkNew<vtkRenderer> renderer;
+    vtkNew<vtkBloomPass> bloom;
+    vtkNew<vtkRenderStepsPass> steps;
+    bloom->SetDelegatePass(steps);
+    ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", renderer, bloom));
+    bloom->CaptureResultOn();
+    bloom->SetUseComputeShaders(simulate); // off: the reference fragment passes
+    bloom->SetSimulateComputeShaderFailure(simulate);
+    renderer->SetPass(bloom);
+    window->AddRenderer(renderer);
+    vtkNew<WarningLog> warnings;
+    bloom->AddObserver(vtkCommand::WarningEvent, warnings);
+    bloom->AddObserver(vtkCommand::ErrorEvent, warnings);
+    for (int frame = 0; frame < 3; ++frame)
+    {
+      window->Render();
+      EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+      computePasses[simulate ? 1 : 0] = bloom->GetLastComputePasses();
+    }
+    EXPECT_EQ(warnings->Count, simulate && ComposesByCompute() ? 1 : 0);
+    vtkNew<vtkImageData> result;
+    ASSERT_TRUE(bloom->ReadResultImage(result));
+    const float* values = static_cast<const float*>(result->GetScalarPointer());
+    results[simulate ? 1 : 0].assign(values, values + 4 * result->GetNumberOfPoints());
+    bloom->ReleaseGraphicsResources(window);
+  }
+  EXPECT_TRUE(results[0] == results[1]);
+  EXPECT_EQ(computePasses[1], computePasses[0]);
 }
