@@ -9,7 +9,7 @@
 //   ShaderStageThroughput [WIDTH HEIGHT [FRAMES]]      (default 3840 2160 50)
 //
 // It needs OpenGL 4.3 (compute shaders); it prints a markdown table, or says why not.
-#include "vtkBloomMedian.h"
+#include "vtkBloomFrameStatistics.h"
 
 #include "StageThroughputCS.h"
 #include "StageThroughputFS.h"

@@ -1,6 +1,8 @@
 // Frame time of an example scene with the plain render steps, with vtkBloomPass, or with the
-// least any HDR post-process does (the scene into a float target, then one full-screen copy to
-// the window: VTK's own vtkFramebufferPass, at the precision of the bloom pass's scene target),
+// least any HDR post-process does: the scene into a float target, then one full-screen copy to
+// the window, either VTK's own vtkFramebufferPass (a glBlitFramebuffer, at the precision of the
+// bloom pass's scene target) or the cheapest copy (COMPUTE_COPY: vtkBloomPass with strength 0,
+// which skips its chain and copies the scene with a compute pass where the context has one),
 // for the benchmark executables (BloomPassFrameTime and the GPU rows of BloomChainSpeed). The
 // caller interleaves the kinds of frame, so machine noise hits them alike.
 //
@@ -14,12 +16,12 @@
 
 #include "vtkActor.h"
 #include "vtkBloomExampleScenes.h"
-#include "vtkBloomMedian.h"
+#include "vtkBloomFrameStatistics.h"
+#include "vtkBloomParameters.h"
 #include "vtkBloomPass.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkCamera.h"
 #include "vtkFramebufferPass.h"
-#include "vtkImageBloom.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkPolyDataMapper.h"
@@ -41,10 +43,11 @@ class vtkBloomFrameTimer
 public:
   enum Kind
   {
-    PLAIN,      ///< the render steps into the window
-    FLOAT_COPY, ///< the render steps into a float target, copied to the window
-    BLOOM,      ///< vtkBloomPass around the render steps
-    ALTERNATIVE ///< a second vtkBloomPass (Alternative), to compare two settings frame by frame
+    PLAIN,        ///< the render steps into the window
+    FLOAT_COPY,   ///< the render steps into a float target, blitted to the window (VTK's pass)
+    BLOOM,        ///< vtkBloomPass around the render steps
+    ALTERNATIVE,  ///< a second vtkBloomPass (Alternative), to compare two settings frame by frame
+    COMPUTE_COPY, ///< a float target copied by a compute pass (vtkBloomPass, strength 0)
   };
 
   /// The offscreen window of width x height, its renderer, and the three passes' delegates.
@@ -57,6 +60,12 @@ public:
     this->Bloom->SetDelegatePass(this->Steps);
     this->Alternative->SetDelegatePass(this->Steps);
     this->FloatCopy->SetDelegatePass(this->Steps);
+    this->ComputeCopy->SetDelegatePass(this->Steps);
+    // Strength 0 skips the chain (SkipDisabledEffects): the scene's float target is copied to
+    // the window by the composite alone, a compute pass where it can be.
+    vtkBloomParameters* copy = this->ComputeCopy->GetParameters();
+    copy->SetStrength(0.0);
+    copy->SetRestrictToBrightRegion(false);
   }
 
   /// An offscreen window of width x height showing `scene`; false for an unknown scene.
@@ -68,6 +77,7 @@ public:
       return false;
     }
     this->Alternative->SetParameters(this->Bloom->GetParameters());
+    this->ComputeCopy->SetFloatPrecision(this->Bloom->GetFloatPrecision());
     this->FloatCopy->SetColorFormat(this->Bloom->GetFloatPrecision() == vtkBloomPass::FLOAT32
         ? vtkTextureObject::Float32
         : vtkTextureObject::Float16);
@@ -78,7 +88,7 @@ public:
    * A sparse scene: a dark background (0.25, below vtkImageBloom's default threshold) and one
    * flat HDR disk, (4, 3, 2) (an ambient-only sphere at the centre of a parallel projection,
    * so that turning the camera keeps its size), covering `fraction` of the window (none for
-   * 0). Both bloom passes get vtkImageBloom's defaults.
+   * 0). Both bloom passes get vtkBloomParameters' defaults.
    */
   void SetupSparse(double fraction, int width, int height)
   {
@@ -109,13 +119,13 @@ public:
       this->Renderer->AddActor(actor);
     }
     camera->SetClippingRange(1.0, 20.0);
-    vtkNew<vtkImageBloom> defaults;
+    vtkNew<vtkBloomParameters> defaults;
     this->Alternative->SetParameters(defaults);
     this->FloatCopy->SetColorFormat(vtkTextureObject::Float16);
   }
 
   /**
-   * Replace the scene's bloom parameters by a preset's ("default": vtkImageBloom's defaults),
+   * Replace the scene's bloom parameters by a preset's ("default": vtkBloomParameters' defaults),
    * keeping the scene's bright pass (threshold mode, threshold, knee) so that the same pixels
    * bloom. "scene" keeps the scene's own parameters. False for an unknown preset.
    */
@@ -125,7 +135,7 @@ public:
     {
       return true;
     }
-    vtkNew<vtkImageBloom> parameters;
+    vtkNew<vtkBloomParameters> parameters;
     if (preset != "default" && !parameters->SetPreset(preset.c_str()))
     {
       return false;
@@ -136,7 +146,7 @@ public:
     parameters->SetKnee(scene->GetKnee());
     this->Bloom->SetParameters(parameters);
     // The alternative pass gets a copy of its own, so that it may differ.
-    vtkNew<vtkImageBloom> copy;
+    vtkNew<vtkBloomParameters> copy;
     if (preset != "default")
     {
       copy->SetPreset(preset.c_str());
@@ -152,7 +162,8 @@ public:
   /// wall-clock seconds. LastGPUSeconds is the frame's GPU time.
   double Frame(Kind kind)
   {
-    vtkRenderPass* passes[] = { this->Steps, this->FloatCopy, this->Bloom, this->Alternative };
+    vtkRenderPass* passes[] = { this->Steps, this->FloatCopy, this->Bloom, this->Alternative,
+      this->ComputeCopy };
     this->Renderer->SetPass(passes[kind]);
     this->Renderer->GetActiveCamera()->Azimuth(0.5);
     const bool timed = this->Query != 0;
@@ -200,6 +211,7 @@ public:
     this->FloatCopy->ReleaseGraphicsResources(this->Window);
     this->Bloom->ReleaseGraphicsResources(this->Window);
     this->Alternative->ReleaseGraphicsResources(this->Window);
+    this->ComputeCopy->ReleaseGraphicsResources(this->Window);
     this->Window->ReleaseGraphicsResources(this->Window);
   }
 
@@ -209,6 +221,7 @@ public:
   vtkNew<vtkBloomPass> Alternative;
   vtkNew<vtkRenderStepsPass> Steps;
   vtkNew<vtkFramebufferPass> FloatCopy;
+  vtkNew<vtkBloomPass> ComputeCopy;
   double LastGPUSeconds = std::numeric_limits<double>::quiet_NaN();
   /// Wall-clock seconds of the last frame's Render() alone (before glFinish): the CPU's time
   /// to submit it, and any wait for the GPU within it.

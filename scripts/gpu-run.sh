@@ -11,8 +11,10 @@
 #   gpu.txt          the GPU, its driver and the OpenGL renderer the pass ran on
 #   ctest.log        ctest -R '^Rendering' (every rendering test), and ctest.xml (JUnit)
 #   frametime.md     BloomPassFrameTime: every scene and preset (or $PRESETS) at 1920x1080 and
-#                    3840x2160, GPU timer and wall clock, median of $FRAMES (default 50) frames;
-#                    then the default preset in the fast mode
+#                    3840x2160, GPU timer, $FRAMES (default 50) frames of each kind: the bloom
+#                    over the plain frame and over the cheapest float copy by the mean, and the
+#                    bloom frame's median, mean, p99 and maximum; then the default preset in the
+#                    fast mode
 #   profile.md       the per-pass GPU profile of the default preset at 3840x2160, every scene,
 #                    then of lit-spheres in the fast mode (QUALITY_FAST)
 #   quality.md       the exact pass and the fast mode for every preset at 3840x2160: GPU time
@@ -77,7 +79,7 @@ if command -v ctest >/dev/null 2>&1; then
 else
   # No CMake there: the test executables themselves, in their CTest working directory.
   status=0
-  for t in TestBloomPass TestBloomPassHardCases TestBloomPassRegion; do
+  for t in TestBloomPass TestBloomPassHardCases TestBloomPassRegion TestBloomPassMotion; do
     (cd "$VTKBLOOM_GPU_BUILD/Testing" && timeout 600 "$bin/$t") 2>&1 | tee -a "$OUT/ctest.log"
     [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
   done
@@ -87,14 +89,14 @@ fi
 if step frametime; then
 echo "== frame time"
 {
-  echo "GPU timer (GL_TIME_ELAPSED) and wall clock (Render, glFinish), median of $FRAMES frames"
+  echo "GPU timer (GL_TIME_ELAPSED), $FRAMES frames of each kind"
   echo
   for size in "1920 1080" "3840 2160"; do
     # shellcheck disable=SC2086
     timeout 300 "$bin/BloomPassFrameTime" all $size "$FRAMES" "$PRESETS"
     echo
   done
-  echo "The fast mode (QUALITY_FAST), vtkImageBloom's defaults"
+  echo "The fast mode (QUALITY_FAST), vtkBloomParameters' defaults"
   echo
   for size in "1920 1080" "3840 2160"; do
     # shellcheck disable=SC2086

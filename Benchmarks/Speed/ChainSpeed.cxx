@@ -7,7 +7,7 @@
 // executable: the peak of live heap bytes during a first, cold run of the chain minus the bytes
 // live before it, minus the one output frame. It counts every buffer the chain allocates,
 // VTK arrays and OpenCV matrices included.
-#include "vtkBloomMedian.h"
+#include "vtkBloomFrameStatistics.h"
 #include "vtkImageBloom.h"
 
 #include "vtkImageData.h"
