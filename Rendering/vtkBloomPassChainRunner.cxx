@@ -509,6 +509,15 @@ bool vtkBloomPassChainRunner::ChooseRestrict()
   {
     return false;
   }
+  this->CollectCostTimings();
+  this->RegionDeclined = this->RegionDeclined || !this->RegionPays();
+  if (this->RegionDeclined)
+  {
+    // The region's read-back costs more than the chain it saves (a fast GPU: docs/gpu.md).
+    // Measuring it even one frame in eight makes that frame stutter, so it is not measured
+    // again on this context: every frame runs the full chain, with no wait for the GPU.
+    return false;
+  }
   if (this->FramesUntilProbe > 0)
   {
     --this->FramesUntilProbe;

@@ -303,8 +303,9 @@ private:
    * the chain to the end of the composite, read back frames later without waiting, and
    * averaged per kind (RegionCost with the region measured, FullCost without); an evaluation
    * that compiled a program is not timed. While the region pays, the 4th evaluation and then
-   * one in ExploreInterval run the full chain to learn FullCost. The output is the same bits
-   * either way.
+   * one in ExploreInterval run the full chain to learn FullCost. Once it does not pay, it is not
+   * measured again on this context (ChooseRestrict): a measured frame would wait for the GPU
+   * and stutter among the others. The output is the same bits either way.
    */
   bool RegionPays() const;
   void BeginCostTiming(bool measured);
@@ -326,6 +327,7 @@ private:
   int CostTimingSupport = 0; ///< 0 not asked, 1 yes, -1 no
   static constexpr int FirstExplore = 4;
   int FramesUntilExplore = FirstExplore;
+  bool RegionDeclined = false;  ///< the region did not pay: not measured again on this context
   bool CompiledProgram = false; ///< a program was made since BeginCostTiming
 
   /// The region of the bloom term within the composite's output; outside it the bloom is zero.

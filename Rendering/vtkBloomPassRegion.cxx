@@ -312,6 +312,7 @@ void vtkBloomPassChainRunner::ReleaseCostTiming()
   this->CostTimingSupport = 0;
   this->RegionCost = this->FullCost = -1.0;
   this->FramesUntilExplore = FirstExplore;
+  this->RegionDeclined = false;
 }
 
 //------------------------------------------------------------------------------
