@@ -176,6 +176,177 @@ void ConvertScalars(vtkDataArray* scalars, std::vector<T>& out)
     worker(scalars);
   }
 }
+
+//------------------------------------------------------------------------------
+// Why an image of this extent cannot be written, or "" when it can: OpenEXR images are
+// non-empty and two-dimensional.
+std::string CheckExtent(const int extent[6])
+{
+  if (extent[0] > extent[1] || extent[2] > extent[3] || extent[4] > extent[5])
+  {
+    return "the input image is empty";
+  }
+  if (extent[4] != extent[5])
+  {
+    std::ostringstream message;
+    message << "the input has " << (extent[5] - extent[4] + 1)
+            << " z slices; an OpenEXR image holds one (extract it with vtkExtractVOI)";
+    return message.str();
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+// Why `scalars` cannot be written as a width x height image, or "" when they can.
+std::string CheckScalars(vtkDataArray* scalars, vtkIdType width, vtkIdType height)
+{
+  if (width > VTK_INT_MAX || height > VTK_INT_MAX)
+  {
+    return "the input extent is too large for OpenEXR";
+  }
+  const vtkIdType pixels = width * height;
+  if (!scalars || scalars->GetNumberOfTuples() != pixels)
+  {
+    return "the input has no point scalars matching its extent";
+  }
+  const int components = scalars->GetNumberOfComponents();
+  if (components < 1 || components > 4)
+  {
+    std::ostringstream message;
+    message << "the input has " << components << " components; 1 (Y), 2 (YA), 3 (RGB) or 4 "
+            << "(RGBA) are supported";
+    return message.str();
+  }
+  const int scalarType = scalars->GetDataType();
+  if (scalarType != VTK_FLOAT && scalarType != VTK_DOUBLE && scalarType != VTK_UNSIGNED_INT)
+  {
+    return std::string("unsupported scalar type ") + scalars->GetDataTypeAsString() +
+      "; use float, double or unsigned int";
+  }
+  return std::string();
+}
+
+//------------------------------------------------------------------------------
+// The display window: the one set (xmin, xmax, ymin, ymax), else the data window when none
+// is (an empty one).
+Imath::Box2i DisplayWindowOf(const int window[4], const Imath::Box2i& dataWindow)
+{
+  if (window[0] <= window[1] && window[2] <= window[3])
+  {
+    return Imath::Box2i(Imath::V2i(window[0], window[2]), Imath::V2i(window[1], window[3]));
+  }
+  return dataWindow;
+}
+
+//------------------------------------------------------------------------------
+// The buffers that hold the pixels when they must be converted for OpenEXR, one per type.
+struct PixelBuffers
+{
+  std::vector<float> Floats;
+  std::vector<Imath::half> Halves;
+  std::vector<uint32_t> Uints;
+};
+
+// The interleaved pixels in the file's pixel type: the scalars' own memory where the bits
+// are already right, else a converted copy in `buffers`.
+const char* PixelData(vtkDataArray* scalars, Imf::PixelType pixelType, PixelBuffers& buffers)
+{
+  if (pixelType == Imf::UINT && vtkUnsignedIntArray::FastDownCast(scalars))
+  {
+    return reinterpret_cast<const char*>(vtkUnsignedIntArray::FastDownCast(scalars)->GetPointer(0));
+  }
+  if (pixelType == Imf::UINT)
+  {
+    ConvertScalars(scalars, buffers.Uints);
+    return reinterpret_cast<const char*>(buffers.Uints.data());
+  }
+  if (pixelType == Imf::HALF)
+  {
+    ConvertScalars(scalars, buffers.Halves);
+    return reinterpret_cast<const char*>(buffers.Halves.data());
+  }
+  if (vtkFloatArray* direct = vtkFloatArray::FastDownCast(scalars))
+  {
+    // Float to FLOAT is a copy of the bits: OpenEXR reads the array itself.
+    return reinterpret_cast<const char*>(direct->GetPointer(0));
+  }
+  ConvertScalars(scalars, buffers.Floats);
+  return reinterpret_cast<const char*>(buffers.Floats.data());
+}
+
+//------------------------------------------------------------------------------
+// One channel per component (Y, YA, RGB or RGBA) in the header, and the slice of the
+// interleaved pixels at `base` that feeds it in the frame buffer.
+void AddChannels(Imf::Header& header, Imf::FrameBuffer& frameBuffer, Imf::PixelType pixelType,
+  const char* base, int components, const Imath::Box2i& dataWindow, vtkIdType width)
+{
+  static const char* const channelNames[4][4] = { { "Y" }, { "Y", "A" }, { "R", "G", "B" },
+    { "R", "G", "B", "A" } };
+  const size_t elementSize = pixelType == Imf::HALF ? sizeof(Imath::half) : 4;
+  const size_t xStride = elementSize * static_cast<size_t>(components);
+  const size_t yStride = xStride * static_cast<size_t>(width);
+  for (int c = 0; c < components; ++c)
+  {
+    const char* name = channelNames[components - 1][c];
+    header.channels().insert(name, Imf::Channel(pixelType));
+    // Slice::Make maps absolute pixel coordinates onto our buffer without forming an
+    // out-of-range pointer ourselves.
+    frameBuffer.insert(
+      name, Imf::Slice::Make(pixelType, base + c * elementSize, dataWindow, xStride, yStride));
+  }
+}
+
+//------------------------------------------------------------------------------
+// Write the image to `path`, in tiles or in scan lines. Returns false when the stream failed
+// (a full disk), which the output file's destructor does not report; OpenEXR's own errors
+// throw.
+bool WriteImage(const fs::path& path, const Imf::Header& header,
+  const Imf::FrameBuffer& frameBuffer, bool tiled, int height, int numberOfThreads)
+{
+  std::ofstream stream(path, std::ios::out | std::ios::binary | std::ios::trunc);
+  if (!stream)
+  {
+    throw std::runtime_error("cannot open the temporary file " + path.string());
+  }
+  {
+    Imf::StdOFStream exrStream(stream, path.string().c_str());
+    const int threads = vtkOpenEXRUseThreadPool(numberOfThreads);
+    if (tiled)
+    {
+      Imf::TiledOutputFile out(exrStream, header, threads);
+      out.setFrameBuffer(frameBuffer);
+      out.writeTiles(0, out.numXTiles() - 1, 0, out.numYTiles() - 1);
+    }
+    else
+    {
+      Imf::OutputFile out(exrStream, header, threads);
+      out.setFrameBuffer(frameBuffer);
+      out.writePixels(height);
+    }
+    // The output file's destructor writes the chunk offset table and swallows any error;
+    // the stream state checked below still records it.
+  }
+  stream.close();
+  return !stream.fail();
+}
+
+//------------------------------------------------------------------------------
+// Move the written temporary file onto the target; throws when that fails. Replacing a file
+// keeps its permissions; a new file gets the default (umask) ones.
+void ReplaceTarget(const fs::path& temporary, const fs::path& target)
+{
+  std::error_code ec;
+  const fs::file_status previous = fs::status(target, ec);
+  if (!ec && fs::is_regular_file(previous))
+  {
+    fs::permissions(temporary, previous.permissions(), ec);
+  }
+  fs::rename(temporary, target, ec);
+  if (ec)
+  {
+    throw std::runtime_error("cannot replace the target: " + ec.message());
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -256,17 +427,10 @@ void vtkOpenEXRWriter::WriteData()
   }
   int extent[6];
   input->GetExtent(extent);
-  if (extent[0] > extent[1] || extent[2] > extent[3] || extent[4] > extent[5])
+  std::string problem = CheckExtent(extent);
+  if (!problem.empty())
   {
-    fail(vtkErrorCode::UnknownError, "the input image is empty");
-    return;
-  }
-  if (extent[4] != extent[5])
-  {
-    std::ostringstream message;
-    message << "the input has " << (extent[5] - extent[4] + 1)
-            << " z slices; an OpenEXR image holds one (extract it with vtkExtractVOI)";
-    fail(vtkErrorCode::UnknownError, message.str());
+    fail(vtkErrorCode::UnknownError, problem);
     return;
   }
   // The array chosen with SetInputArrayToProcess(0, ...), else the active point scalars.
@@ -285,32 +449,10 @@ void vtkOpenEXRWriter::WriteData()
   }
   const vtkIdType width = static_cast<vtkIdType>(extent[1]) - extent[0] + 1;
   const vtkIdType height = static_cast<vtkIdType>(extent[3]) - extent[2] + 1;
-  if (width > VTK_INT_MAX || height > VTK_INT_MAX)
+  problem = CheckScalars(scalars, width, height);
+  if (!problem.empty())
   {
-    fail(vtkErrorCode::UnknownError, "the input extent is too large for OpenEXR");
-    return;
-  }
-  const vtkIdType pixels = width * height;
-  if (!scalars || scalars->GetNumberOfTuples() != pixels)
-  {
-    fail(vtkErrorCode::UnknownError, "the input has no point scalars matching its extent");
-    return;
-  }
-  const int components = scalars->GetNumberOfComponents();
-  if (components < 1 || components > 4)
-  {
-    std::ostringstream message;
-    message << "the input has " << components << " components; 1 (Y), 2 (YA), 3 (RGB) or 4 "
-            << "(RGBA) are supported";
-    fail(vtkErrorCode::UnknownError, message.str());
-    return;
-  }
-  const int scalarType = scalars->GetDataType();
-  if (scalarType != VTK_FLOAT && scalarType != VTK_DOUBLE && scalarType != VTK_UNSIGNED_INT)
-  {
-    fail(vtkErrorCode::UnknownError,
-      std::string("unsupported scalar type ") + scalars->GetDataTypeAsString() +
-        "; use float, double or unsigned int");
+    fail(vtkErrorCode::UnknownError, problem);
     return;
   }
   if (this->Tiled &&
@@ -328,71 +470,26 @@ void vtkOpenEXRWriter::WriteData()
   }
 
   const Imath::Box2i dataWindow(Imath::V2i(extent[0], extent[2]), Imath::V2i(extent[1], extent[3]));
-  Imath::Box2i displayWindow = dataWindow;
-  if (this->DisplayWindow[0] <= this->DisplayWindow[1] &&
-    this->DisplayWindow[2] <= this->DisplayWindow[3])
-  {
-    displayWindow = Imath::Box2i(Imath::V2i(this->DisplayWindow[0], this->DisplayWindow[2]),
-      Imath::V2i(this->DisplayWindow[1], this->DisplayWindow[3]));
-  }
-
-  static const char* const channelNames[4][4] = { { "Y" }, { "Y", "A" }, { "R", "G", "B" },
-    { "R", "G", "B", "A" } };
+  const Imath::Box2i displayWindow = DisplayWindowOf(this->DisplayWindow, dataWindow);
+  const int scalarType = scalars->GetDataType();
   const Imf::PixelType pixelType = scalarType == VTK_UNSIGNED_INT ? Imf::UINT
     : this->PixelType == PIXEL_TYPE_HALF                          ? Imf::HALF
                                                                   : Imf::FLOAT;
-  const size_t elementSize = pixelType == Imf::HALF ? sizeof(Imath::half) : 4;
 
   fs::path temporary;
   bool haveTemporary = false;
   try
   {
     // Convert first: a bad_alloc here must not leave a temporary file behind.
-    std::vector<float> floats;
-    std::vector<Imath::half> halves;
-    std::vector<uint32_t> uints;
-    const char* base = nullptr;
-    if (pixelType == Imf::UINT && vtkUnsignedIntArray::FastDownCast(scalars))
-    {
-      base =
-        reinterpret_cast<const char*>(vtkUnsignedIntArray::FastDownCast(scalars)->GetPointer(0));
-    }
-    else if (pixelType == Imf::UINT)
-    {
-      ConvertScalars(scalars, uints);
-      base = reinterpret_cast<const char*>(uints.data());
-    }
-    else if (pixelType == Imf::HALF)
-    {
-      ConvertScalars(scalars, halves);
-      base = reinterpret_cast<const char*>(halves.data());
-    }
-    else if (vtkFloatArray* direct = vtkFloatArray::FastDownCast(scalars))
-    {
-      // Float to FLOAT is a copy of the bits: OpenEXR reads the array itself.
-      base = reinterpret_cast<const char*>(direct->GetPointer(0));
-    }
-    else
-    {
-      ConvertScalars(scalars, floats);
-      base = reinterpret_cast<const char*>(floats.data());
-    }
+    PixelBuffers buffers;
+    const char* base = PixelData(scalars, pixelType, buffers);
     this->UpdateProgress(0.25);
 
     Imf::Header header(displayWindow, dataWindow, 1.0f, Imath::V2f(0.0f, 0.0f), 1.0f,
       Imf::INCREASING_Y, static_cast<Imf::Compression>(this->Compression));
     Imf::FrameBuffer frameBuffer;
-    const size_t xStride = elementSize * static_cast<size_t>(components);
-    const size_t yStride = xStride * static_cast<size_t>(width);
-    for (int c = 0; c < components; ++c)
-    {
-      const char* name = channelNames[components - 1][c];
-      header.channels().insert(name, Imf::Channel(pixelType));
-      // Slice::Make maps absolute pixel coordinates onto our buffer without forming an
-      // out-of-range pointer ourselves.
-      frameBuffer.insert(
-        name, Imf::Slice::Make(pixelType, base + c * elementSize, dataWindow, xStride, yStride));
-    }
+    AddChannels(
+      header, frameBuffer, pixelType, base, scalars->GetNumberOfComponents(), dataWindow, width);
     if (this->Tiled)
     {
       header.setTileDescription(Imf::TileDescription(static_cast<unsigned int>(this->TileSize[0]),
@@ -407,50 +504,14 @@ void vtkOpenEXRWriter::WriteData()
       return;
     }
     haveTemporary = true;
-
-    std::ofstream stream(temporary, std::ios::out | std::ios::binary | std::ios::trunc);
-    if (!stream)
-    {
-      throw std::runtime_error("cannot open the temporary file " + temporary.string());
-    }
-    {
-      Imf::StdOFStream exrStream(stream, temporary.string().c_str());
-      const int threads = vtkOpenEXRUseThreadPool(this->NumberOfThreads);
-      if (this->Tiled)
-      {
-        Imf::TiledOutputFile out(exrStream, header, threads);
-        out.setFrameBuffer(frameBuffer);
-        out.writeTiles(0, out.numXTiles() - 1, 0, out.numYTiles() - 1);
-      }
-      else
-      {
-        Imf::OutputFile out(exrStream, header, threads);
-        out.setFrameBuffer(frameBuffer);
-        out.writePixels(static_cast<int>(height));
-      }
-      // The output file's destructor writes the chunk offset table and swallows any error;
-      // the stream state checked below still records it.
-    }
-    stream.close();
-    if (stream.fail())
+    if (!WriteImage(temporary, header, frameBuffer, this->Tiled != 0, static_cast<int>(height),
+          this->NumberOfThreads))
     {
       this->SetErrorCode(vtkErrorCode::OutOfDiskSpaceError);
       throw std::runtime_error("writing the temporary file failed (disk full?)");
     }
     this->UpdateProgress(0.9);
-
-    // Replacing a file keeps its permissions; a new file gets the default (umask) ones.
-    std::error_code ec;
-    const fs::file_status previous = fs::status(fs::path(fileName), ec);
-    if (!ec && fs::is_regular_file(previous))
-    {
-      fs::permissions(temporary, previous.permissions(), ec);
-    }
-    fs::rename(temporary, fs::path(fileName), ec);
-    if (ec)
-    {
-      throw std::runtime_error("cannot replace the target: " + ec.message());
-    }
+    ReplaceTarget(temporary, fs::path(fileName));
     haveTemporary = false;
   }
   catch (const std::bad_alloc&)
