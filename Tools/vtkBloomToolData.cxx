@@ -221,6 +221,39 @@ void FillColorMap(const std::string& name, vtkColorTransferFunction* colours, do
     colours->AddRGBPoint(lo + p[0] * span, p[1], p[2], p[3]);
   }
 }
+
+//------------------------------------------------------------------------------
+// The background, and the camera looking along the chosen axis (iso: along -1,-1,-1), z up (y
+// up for +-z), then turned and zoomed by TurnCamera.
+void PlaceCamera(vtkRenderer* renderer, const DataSceneOptions& options)
+{
+  if (options.HasBackground)
+  {
+    renderer->SetBackground(options.Background);
+  }
+  else
+  {
+    renderer->SetBackground(0.02, 0.02, 0.03);
+  }
+  static const std::map<std::string, std::array<double, 3>> directions = {
+    { "iso", { -1, -1, -1 } }, { "+x", { 1, 0, 0 } }, { "-x", { -1, 0, 0 } }, { "+y", { 0, 1, 0 } },
+    { "-y", { 0, -1, 0 } }, { "+z", { 0, 0, 1 } }, { "-z", { 0, 0, -1 } }
+  };
+  const auto direction = directions.at(options.View);
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetFocalPoint(0.0, 0.0, 0.0);
+  camera->SetPosition(-direction[0], -direction[1], -direction[2]);
+  if (options.View == "+z" || options.View == "-z")
+  {
+    camera->SetViewUp(0.0, 1.0, 0.0);
+  }
+  else
+  {
+    camera->SetViewUp(0.0, 0.0, 1.0);
+  }
+  renderer->ResetCamera();
+  TurnCamera(renderer, options);
+}
 }
 
 //------------------------------------------------------------------------------
@@ -319,6 +352,14 @@ struct DataScene::vtkInternals
         std::to_string(this->Options.ColorComponent) };
     }
   }
+
+  // The steps of DataScene::Build, defined below.
+  void CheckRepresentation(vtkDataObject* data, const std::string& name) const;
+  void BuildVolume(vtkRenderer* renderer, int component, double gain);
+  void BuildSurface(vtkRenderer* renderer, vtkBloomPass* pass, int component, double gain);
+  vtkAlgorithm* SurfaceSource();
+  void ColourMapper(int component);
+  void AddEmitter(vtkBloomPass* pass, vtkProperty* property, double gain);
 };
 
 DataScene::DataScene()
@@ -327,6 +368,223 @@ DataScene::DataScene()
 }
 
 DataScene::~DataScene() = default;
+
+//------------------------------------------------------------------------------
+// Refuse what the representation and the chosen array cannot do with this data.
+void DataScene::vtkInternals::CheckRepresentation(
+  vtkDataObject* data, const std::string& name) const
+{
+  const DataSceneOptions& options = this->Options;
+  if (this->IsVolume && !vtkImageData::SafeDownCast(data))
+  {
+    throw UsageError{ "--representation volume needs image data (.vti); " + name + " holds " +
+      data->GetClassName() };
+  }
+  if (this->IsVolume && options.HasEmitRange)
+  {
+    throw UsageError{ "--emit-range applies to surface, points and wireframe; a volume blooms "
+                      "as a whole scene (raise --emit-gain)" };
+  }
+  if ((options.HasEmitRange || !options.Contours.empty() || this->IsVolume) &&
+    this->Array.Name.empty())
+  {
+    throw UsageError{ name +
+      " has no point or cell array to contour, emit or render as a "
+      "volume by; its " +
+      DescribeArrays(data) };
+  }
+}
+
+//------------------------------------------------------------------------------
+// --representation volume: the image through the CPU ray caster, coloured by the colour map
+// lifted by the gain, its opacity a ramp over the colour range.
+void DataScene::vtkInternals::BuildVolume(vtkRenderer* renderer, int component, double gain)
+{
+  vtkNew<vtkColorTransferFunction> colours;
+  FillColorMap(this->Options.Colormap, colours, this->ColorRange[0], this->ColorRange[1]);
+  // HDR colours: the gain lifts the volume above the bright-pass threshold.
+  for (int i = 0; i < colours->GetSize(); ++i)
+  {
+    double node[6];
+    colours->GetNodeValue(i, node);
+    node[1] *= gain;
+    node[2] *= gain;
+    node[3] *= gain;
+    colours->SetNodeValue(i, node);
+  }
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(this->ColorRange[0], 0.0);
+  opacity->AddPoint(this->ColorRange[1], 0.3);
+  vtkNew<vtkVolumeProperty> property;
+  property->SetColor(colours);
+  property->SetScalarOpacity(opacity);
+  property->SetInterpolationTypeToLinear();
+  vtkAlgorithm* source = this->Producer;
+  if (this->Array.OnCells)
+  {
+    this->ToPoints->SetInputConnection(this->Producer->GetOutputPort());
+    source = this->ToPoints;
+  }
+  this->VolumeMapper->SetInputConnection(source->GetOutputPort());
+  // CPU ray casting: VTK 9.1's GPU ray caster draws nothing inside a framebuffer render pass
+  // (vtkFramebufferPass as much as vtkBloomPass), while the CPU image is composited there.
+  this->VolumeMapper->SetRequestedRenderModeToRayCast();
+  this->VolumeMapper->SetScalarModeToUsePointFieldData();
+  this->VolumeMapper->SelectScalarArray(this->Array.Name.c_str());
+  if (this->Array.Components > 1)
+  {
+    this->VolumeMapper->SetVectorMode(
+      component < 0 ? vtkSmartVolumeMapper::MAGNITUDE : vtkSmartVolumeMapper::COMPONENT);
+    this->VolumeMapper->SetVectorComponent(std::max(component, 0));
+  }
+  this->Volume->SetMapper(this->VolumeMapper);
+  this->Volume->SetProperty(property);
+  renderer->AddVolume(this->Volume);
+}
+
+//------------------------------------------------------------------------------
+// Surface, points or wireframe: the data (or its contours) through a mapper, coloured by the
+// chosen array, and what glows: the emit range through an emitter, else the whole actor.
+void DataScene::vtkInternals::BuildSurface(
+  vtkRenderer* renderer, vtkBloomPass* pass, int component, double gain)
+{
+  vtkAlgorithm* source = this->SurfaceSource();
+  this->Mapper->SetInputConnection(source->GetOutputPort());
+  if (!this->Array.Name.empty())
+  {
+    this->ColourMapper(component);
+  }
+  else
+  {
+    this->Mapper->ScalarVisibilityOff();
+  }
+  vtkProperty* property = this->Actor->GetProperty();
+  // Blocks without the coloured array, and data without arrays, in a neutral grey.
+  property->SetColor(0.7, 0.7, 0.7);
+  if (this->Options.Representation == "points")
+  {
+    property->SetRepresentationToPoints();
+    property->SetPointSize(3.0);
+  }
+  else if (this->Options.Representation == "wireframe")
+  {
+    property->SetRepresentationToWireframe();
+  }
+  this->Actor->SetMapper(this->Mapper);
+  renderer->AddActor(this->Actor);
+
+  if (this->Options.HasEmitRange)
+  {
+    this->AddEmitter(pass, property, gain);
+  }
+  else if (gain != 1.0)
+  {
+    property->SetAmbient(property->GetAmbient() * gain);
+    property->SetDiffuse(property->GetDiffuse() * gain);
+  }
+}
+
+//------------------------------------------------------------------------------
+// The pipeline in front of the mapper (the contours when asked, the surface of each block of
+// composite data), and the mapper that suits it; returns the last stage.
+vtkAlgorithm* DataScene::vtkInternals::SurfaceSource()
+{
+  vtkAlgorithm* source = this->Producer;
+  if (!this->Options.Contours.empty())
+  {
+    if (this->Array.OnCells)
+    {
+      this->ToPoints->SetInputConnection(source->GetOutputPort());
+      source = this->ToPoints;
+    }
+    this->Contour->SetInputConnection(source->GetOutputPort());
+    this->Contour->SetInputArrayToProcess(
+      0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, this->Array.Name.c_str());
+    for (size_t i = 0; i < this->Options.Contours.size(); ++i)
+    {
+      this->Contour->SetValue(static_cast<int>(i), this->Options.Contours[i]);
+    }
+    source = this->Contour;
+  }
+  if (this->IsComposite)
+  {
+    // Block by block (each keeps its own arrays), drawn by the composite mapper.
+    this->Surface->SetInputConnection(source->GetOutputPort());
+    source = this->Surface;
+    this->Mapper = vtkSmartPointer<vtkBloomCompositePolyDataMapper>::New();
+  }
+  else
+  {
+    this->Mapper = vtkSmartPointer<vtkDataSetMapper>::New();
+  }
+  return source;
+}
+
+//------------------------------------------------------------------------------
+// Colour the mapper by the chosen array (a component, or the magnitude for component -1)
+// through a 256-entry table sampled from the colour map.
+void DataScene::vtkInternals::ColourMapper(int component)
+{
+  const bool onCells = this->Array.OnCells && this->Options.Contours.empty();
+  this->Table->SetNumberOfTableValues(256);
+  this->Table->SetTableRange(this->ColorRange);
+  for (int i = 0; i < 256; ++i)
+  {
+    double rgb[3];
+    this->Colours->GetColor(
+      this->ColorRange[0] + (this->ColorRange[1] - this->ColorRange[0]) * i / 255.0, rgb);
+    this->Table->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
+  }
+  if (this->Array.Components > 1)
+  {
+    if (component < 0)
+    {
+      this->Table->SetVectorModeToMagnitude();
+    }
+    else
+    {
+      this->Table->SetVectorModeToComponent();
+      this->Table->SetVectorComponent(component);
+    }
+  }
+  this->Mapper->SetLookupTable(this->Table);
+  this->Mapper->SetScalarRange(this->ColorRange);
+  if (onCells)
+  {
+    this->Mapper->SetScalarModeToUseCellFieldData();
+  }
+  else
+  {
+    this->Mapper->SetScalarModeToUsePointFieldData();
+  }
+  this->Mapper->SelectColorArray(this->Array.Name.c_str());
+  this->Mapper->ScalarVisibilityOn();
+  this->Mapper->SetColorModeToMapScalars();
+  this->Mapper->SetInterpolateScalarsBeforeMapping(true);
+}
+
+//------------------------------------------------------------------------------
+// Only the emit range glows: an emitter copy of the actor, black outside the range, its
+// colours lifted to HDR by the gain and unlit (ambient only), as the scalar-field scene.
+void DataScene::vtkInternals::AddEmitter(vtkBloomPass* pass, vtkProperty* property, double gain)
+{
+  this->Emitter = vtkBloomPass::CreateScalarRangeEmitter(this->Actor, this->Options.EmitRange);
+  if (!this->Emitter)
+  {
+    throw RunError{ "cannot make the emitter for --emit-range" };
+  }
+  vtkNew<vtkProperty> glow;
+  glow->DeepCopy(property);
+  glow->SetAmbient(gain);
+  glow->SetDiffuse(0.0);
+  glow->SetSpecular(0.0);
+  // Blocks without the array take the property's colour: black, so they do not emit.
+  glow->SetColor(0.0, 0.0, 0.0);
+  this->Emitter->SetProperty(glow);
+  pass->SetEmissionSourceToEmitters();
+  pass->AddEmitter(this->Emitter);
+  pass->GetParameters()->SetThresholdMode(vtkImageBloomThreshold::NONE);
+}
 
 //------------------------------------------------------------------------------
 void DataScene::Build(vtkDataObject* data, const std::string& name, const DataSceneOptions& options,
@@ -338,23 +596,7 @@ void DataScene::Build(vtkDataObject* data, const std::string& name, const DataSc
   d.Array = ChooseArray(data, options.ColorBy);
   d.IsComposite = vtkCompositeDataSet::SafeDownCast(data) != nullptr;
   d.IsVolume = options.Representation == "volume";
-  if (d.IsVolume && !vtkImageData::SafeDownCast(data))
-  {
-    throw UsageError{ "--representation volume needs image data (.vti); " + name + " holds " +
-      data->GetClassName() };
-  }
-  if (d.IsVolume && options.HasEmitRange)
-  {
-    throw UsageError{ "--emit-range applies to surface, points and wireframe; a volume blooms "
-                      "as a whole scene (raise --emit-gain)" };
-  }
-  if ((options.HasEmitRange || !options.Contours.empty() || d.IsVolume) && d.Array.Name.empty())
-  {
-    throw UsageError{ name +
-      " has no point or cell array to contour, emit or render as a "
-      "volume by; its " +
-      DescribeArrays(data) };
-  }
+  d.CheckRepresentation(data, name);
   const int component = d.Array.Components == 1 ? 0 : options.ColorComponent;
   if (options.HasRange)
   {
@@ -374,190 +616,13 @@ void DataScene::Build(vtkDataObject* data, const std::string& name, const DataSc
   d.FileName = name;
   if (d.IsVolume)
   {
-    vtkNew<vtkColorTransferFunction> colours;
-    FillColorMap(options.Colormap, colours, d.ColorRange[0], d.ColorRange[1]);
-    // HDR colours: the gain lifts the volume above the bright-pass threshold.
-    for (int i = 0; i < colours->GetSize(); ++i)
-    {
-      double node[6];
-      colours->GetNodeValue(i, node);
-      node[1] *= gain;
-      node[2] *= gain;
-      node[3] *= gain;
-      colours->SetNodeValue(i, node);
-    }
-    vtkNew<vtkPiecewiseFunction> opacity;
-    opacity->AddPoint(d.ColorRange[0], 0.0);
-    opacity->AddPoint(d.ColorRange[1], 0.3);
-    vtkNew<vtkVolumeProperty> property;
-    property->SetColor(colours);
-    property->SetScalarOpacity(opacity);
-    property->SetInterpolationTypeToLinear();
-    vtkAlgorithm* source = d.Producer;
-    if (d.Array.OnCells)
-    {
-      d.ToPoints->SetInputConnection(d.Producer->GetOutputPort());
-      source = d.ToPoints;
-    }
-    d.VolumeMapper->SetInputConnection(source->GetOutputPort());
-    // CPU ray casting: VTK 9.1's GPU ray caster draws nothing inside a framebuffer render pass
-    // (vtkFramebufferPass as much as vtkBloomPass), while the CPU image is composited there.
-    d.VolumeMapper->SetRequestedRenderModeToRayCast();
-    d.VolumeMapper->SetScalarModeToUsePointFieldData();
-    d.VolumeMapper->SelectScalarArray(d.Array.Name.c_str());
-    if (d.Array.Components > 1)
-    {
-      d.VolumeMapper->SetVectorMode(
-        component < 0 ? vtkSmartVolumeMapper::MAGNITUDE : vtkSmartVolumeMapper::COMPONENT);
-      d.VolumeMapper->SetVectorComponent(std::max(component, 0));
-    }
-    d.Volume->SetMapper(d.VolumeMapper);
-    d.Volume->SetProperty(property);
-    renderer->AddVolume(d.Volume);
+    d.BuildVolume(renderer, component, gain);
   }
   else
   {
-    vtkAlgorithm* source = d.Producer;
-    if (!options.Contours.empty())
-    {
-      if (d.Array.OnCells)
-      {
-        d.ToPoints->SetInputConnection(source->GetOutputPort());
-        source = d.ToPoints;
-      }
-      d.Contour->SetInputConnection(source->GetOutputPort());
-      d.Contour->SetInputArrayToProcess(
-        0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, d.Array.Name.c_str());
-      for (size_t i = 0; i < options.Contours.size(); ++i)
-      {
-        d.Contour->SetValue(static_cast<int>(i), options.Contours[i]);
-      }
-      source = d.Contour;
-    }
-    if (d.IsComposite)
-    {
-      // Block by block (each keeps its own arrays), drawn by the composite mapper.
-      d.Surface->SetInputConnection(source->GetOutputPort());
-      source = d.Surface;
-      d.Mapper = vtkSmartPointer<vtkBloomCompositePolyDataMapper>::New();
-    }
-    else
-    {
-      d.Mapper = vtkSmartPointer<vtkDataSetMapper>::New();
-    }
-    d.Mapper->SetInputConnection(source->GetOutputPort());
-    if (!d.Array.Name.empty())
-    {
-      const bool onCells = d.Array.OnCells && options.Contours.empty();
-      d.Table->SetNumberOfTableValues(256);
-      d.Table->SetTableRange(d.ColorRange);
-      for (int i = 0; i < 256; ++i)
-      {
-        double rgb[3];
-        d.Colours->GetColor(d.ColorRange[0] + (d.ColorRange[1] - d.ColorRange[0]) * i / 255.0, rgb);
-        d.Table->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
-      }
-      if (d.Array.Components > 1)
-      {
-        if (component < 0)
-        {
-          d.Table->SetVectorModeToMagnitude();
-        }
-        else
-        {
-          d.Table->SetVectorModeToComponent();
-          d.Table->SetVectorComponent(component);
-        }
-      }
-      d.Mapper->SetLookupTable(d.Table);
-      d.Mapper->SetScalarRange(d.ColorRange);
-      if (onCells)
-      {
-        d.Mapper->SetScalarModeToUseCellFieldData();
-      }
-      else
-      {
-        d.Mapper->SetScalarModeToUsePointFieldData();
-      }
-      d.Mapper->SelectColorArray(d.Array.Name.c_str());
-      d.Mapper->ScalarVisibilityOn();
-      d.Mapper->SetColorModeToMapScalars();
-      d.Mapper->SetInterpolateScalarsBeforeMapping(true);
-    }
-    else
-    {
-      d.Mapper->ScalarVisibilityOff();
-    }
-    vtkProperty* property = d.Actor->GetProperty();
-    // Blocks without the coloured array, and data without arrays, in a neutral grey.
-    property->SetColor(0.7, 0.7, 0.7);
-    if (options.Representation == "points")
-    {
-      property->SetRepresentationToPoints();
-      property->SetPointSize(3.0);
-    }
-    else if (options.Representation == "wireframe")
-    {
-      property->SetRepresentationToWireframe();
-    }
-    d.Actor->SetMapper(d.Mapper);
-    renderer->AddActor(d.Actor);
-
-    if (options.HasEmitRange)
-    {
-      // Only the emit range glows: an emitter copy of the actor, black outside the range, its
-      // colours lifted to HDR by the gain and unlit (ambient only), as the scalar-field scene.
-      d.Emitter = vtkBloomPass::CreateScalarRangeEmitter(d.Actor, options.EmitRange);
-      if (!d.Emitter)
-      {
-        throw RunError{ "cannot make the emitter for --emit-range" };
-      }
-      vtkNew<vtkProperty> glow;
-      glow->DeepCopy(property);
-      glow->SetAmbient(gain);
-      glow->SetDiffuse(0.0);
-      glow->SetSpecular(0.0);
-      // Blocks without the array take the property's colour: black, so they do not emit.
-      glow->SetColor(0.0, 0.0, 0.0);
-      d.Emitter->SetProperty(glow);
-      pass->SetEmissionSourceToEmitters();
-      pass->AddEmitter(d.Emitter);
-      pass->GetParameters()->SetThresholdMode(vtkImageBloomThreshold::NONE);
-    }
-    else if (gain != 1.0)
-    {
-      property->SetAmbient(property->GetAmbient() * gain);
-      property->SetDiffuse(property->GetDiffuse() * gain);
-    }
+    d.BuildSurface(renderer, pass, component, gain);
   }
-
-  // The camera looks along the chosen axis (iso: along -1,-1,-1), z up (y up for +-z).
-  if (options.HasBackground)
-  {
-    renderer->SetBackground(options.Background);
-  }
-  else
-  {
-    renderer->SetBackground(0.02, 0.02, 0.03);
-  }
-  static const std::map<std::string, std::array<double, 3>> directions = {
-    { "iso", { -1, -1, -1 } }, { "+x", { 1, 0, 0 } }, { "-x", { -1, 0, 0 } }, { "+y", { 0, 1, 0 } },
-    { "-y", { 0, -1, 0 } }, { "+z", { 0, 0, 1 } }, { "-z", { 0, 0, -1 } }
-  };
-  const auto direction = directions.at(options.View);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetPosition(-direction[0], -direction[1], -direction[2]);
-  if (options.View == "+z" || options.View == "-z")
-  {
-    camera->SetViewUp(0.0, 1.0, 0.0);
-  }
-  else
-  {
-    camera->SetViewUp(0.0, 0.0, 1.0);
-  }
-  renderer->ResetCamera();
-  TurnCamera(renderer, options);
+  PlaceCamera(renderer, options);
 }
 
 //------------------------------------------------------------------------------
