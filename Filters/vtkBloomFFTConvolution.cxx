@@ -11,6 +11,17 @@
 #include <mutex>
 #include <type_traits>
 
+struct vtkBloomFFTConvolution::Block
+{
+  int Row0 = 0;
+  int Rows = 0;
+  int Col0 = 0;
+  int Cols = 0;
+  int Rank = 0;
+  std::vector<double> U; ///< Rank x Rows
+  std::vector<double> V; ///< Cols x Rank (V^T transposed, so that V^T x runs over rows of V)
+};
+
 namespace
 {
 /**
@@ -168,18 +179,182 @@ void MakePlans(int n, void*& forward, void*& inverse)
   F::Free(real);
   F::Free(complex);
 }
+
+//------------------------------------------------------------------------------
+// The kernel of the operator's invariant rows, without its zero ends, and where row j reads
+// it: x[j + offset + k]. False when those rows are all zero.
+bool InvariantKernel(const vtkBloomLinearOperator& op,
+  const vtkBloomLinearOperator::InvariantRange& range, std::vector<double>& kernel, int& offset)
+{
+  const int mid = (range.Begin + range.End) / 2;
+  const size_t width = static_cast<size_t>(op.Width);
+  const double* row = op.Weights.data() + mid * width;
+  int k0 = 0, k1 = op.Width - 1;
+  while (k0 <= k1 && row[k0] == 0.0)
+  {
+    ++k0;
+  }
+  while (k1 >= k0 && row[k1] == 0.0)
+  {
+    --k1;
+  }
+  if (k0 > k1)
+  {
+    return false;
+  }
+  kernel.assign(row + k0, row + k1 + 1);
+  offset = op.First[mid] - mid + k0;
+  return true;
 }
 
-struct vtkBloomFFTConvolution::Block
+//------------------------------------------------------------------------------
+// The kernel's spectrum for a circular convolution of length n whose output j sits at
+// PadLeft + j, divided by n (FFTW's inverse does not), interleaved re, im, in double and
+// single precision.
+void KernelSpectrum(const std::vector<double>& kernel, int offset, int n,
+  std::vector<double>& spectrumD, std::vector<float>& spectrumF)
 {
-  int Row0 = 0;
-  int Rows = 0;
-  int Col0 = 0;
-  int Cols = 0;
-  int Rank = 0;
-  std::vector<double> U; ///< Rank x Rows
-  std::vector<double> V; ///< Cols x Rank (V^T transposed, so that V^T x runs over rows of V)
-};
+  const int taps = static_cast<int>(kernel.size());
+  std::vector<double> h(n, 0.0);
+  for (int k = 0; k < taps; ++k)
+  {
+    const long long m = ((-(offset + k)) % n + n) % n;
+    h[m] += kernel[k];
+  }
+  std::vector<fftw_complex> spectrum(n / 2 + 1);
+  {
+    std::lock_guard<std::mutex> lock(vtkBloomFFTConvolution::PlannerMutex());
+    fftw_plan plan = fftw_plan_dft_r2c_1d(n, h.data(), spectrum.data(), FFTW_ESTIMATE);
+    fftw_execute(plan);
+    fftw_destroy_plan(plan);
+  }
+  spectrumD.resize(2 * spectrum.size());
+  spectrumF.resize(2 * spectrum.size());
+  for (size_t q = 0; q < spectrum.size(); ++q)
+  {
+    for (int part = 0; part < 2; ++part)
+    {
+      spectrumD[2 * q + part] = spectrum[q][part] / n;
+      spectrumF[2 * q + part] = static_cast<float>(spectrumD[2 * q + part]);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// Columns [c0, c1] of `rows` (which start at column w0) as a dense block, factored into
+// block.U and block.V; block.Rank is 0 when nothing is left above the tolerance.
+void FactorBlock(const std::vector<std::vector<double>>& rows, int w0, int c0, int c1,
+  vtkBloomFFTConvolution::Block& block)
+{
+  block.Col0 = c0;
+  block.Cols = c1 - c0 + 1;
+  std::vector<double> dense(static_cast<size_t>(block.Rows) * block.Cols);
+  for (int r = 0; r < block.Rows; ++r)
+  {
+    std::copy(rows[r].begin() + (c0 - w0), rows[r].begin() + (c1 - w0) + 1,
+      dense.begin() + static_cast<size_t>(r) * block.Cols);
+  }
+  std::vector<double> vt;
+  block.Rank = Factor(std::move(dense), block.Rows, block.Cols, 1e-12, block.U, vt);
+  block.V.resize(vt.size());
+  for (int k = 0; k < block.Rank; ++k)
+  {
+    for (int q = 0; q < block.Cols; ++q)
+    {
+      block.V[static_cast<size_t>(q) * block.Rank + k] =
+        vt[static_cast<size_t>(k) * block.Cols + q];
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+// D = M - T on rows [r0, r1) (rows outside the invariant range, at one end), factored into
+// `block`. False when D is zero there, or of rank 0.
+bool BorderCorrection(const vtkBloomLinearOperator& op, const std::vector<double>& kernel,
+  int offset, int border, int r0, int r1, vtkBloomFFTConvolution::Block& block)
+{
+  const int n = op.InputSize;
+  const size_t width = static_cast<size_t>(op.Width);
+  const int taps = static_cast<int>(kernel.size());
+  // The columns the rows touch (M's support and T's folded taps) bound the block.
+  int w0 = n, w1 = -1;
+  for (int j = r0; j < r1; ++j)
+  {
+    w0 = std::min(w0, op.First[j]);
+    w1 = std::max(w1, std::min(n - 1, op.First[j] + op.Width - 1));
+    for (int k = 0; k < taps; ++k)
+    {
+      const int i = vtkBloomLinearOperator::FoldIndex(j + offset + k, n, border);
+      if (i >= 0)
+      {
+        w0 = std::min(w0, i);
+        w1 = std::max(w1, i);
+      }
+    }
+  }
+  const int span = w1 - w0 + 1;
+  std::vector<std::vector<double>> rows(r1 - r0, std::vector<double>(span, 0.0));
+  int c0 = n, c1 = -1;
+  for (int j = r0; j < r1; ++j)
+  {
+    std::vector<double>& d = rows[j - r0];
+    for (size_t k = 0; k < width && op.First[j] + static_cast<int>(k) < n; ++k)
+    {
+      d[op.First[j] + k - w0] += op.Weights[j * width + k];
+    }
+    for (int k = 0; k < taps; ++k)
+    {
+      const int i = vtkBloomLinearOperator::FoldIndex(j + offset + k, n, border);
+      if (i >= 0)
+      {
+        d[i - w0] -= kernel[k];
+      }
+    }
+    for (int i = 0; i < span; ++i)
+    {
+      if (d[i] != 0.0)
+      {
+        c0 = std::min(c0, i + w0);
+        c1 = std::max(c1, i + w0);
+      }
+    }
+  }
+  if (c1 < c0)
+  {
+    return false;
+  }
+  block.Row0 = r0;
+  block.Rows = r1 - r0;
+  FactorBlock(rows, w0, c0, c1, block);
+  return block.Rank > 0;
+}
+
+//------------------------------------------------------------------------------
+// The outputs each input sample reaches, [lo[i], hi[i]], made monotone so that a range's
+// reach is its ends'.
+void OutputReach(const vtkBloomLinearOperator& op, std::vector<int>& lo, std::vector<int>& hi)
+{
+  const int n = op.InputSize;
+  lo.assign(n, n);
+  hi.assign(n, -1);
+  for (int j = 0; j < n; ++j)
+  {
+    for (int i = op.First[j]; i < std::min(n, op.First[j] + op.Width); ++i)
+    {
+      lo[i] = std::min(lo[i], j);
+      hi[i] = std::max(hi[i], j);
+    }
+  }
+  for (int i = n - 2; i >= 0; --i)
+  {
+    lo[i] = std::min(lo[i], lo[i + 1]);
+  }
+  for (int i = 1; i < n; ++i)
+  {
+    hi[i] = std::max(hi[i], hi[i - 1]);
+  }
+}
+}
 
 //------------------------------------------------------------------------------
 vtkBloomFFTConvolution::Workspace::~Workspace()
@@ -319,58 +494,20 @@ bool vtkBloomFFTConvolution::Build(const vtkBloomLinearOperator& op, int border,
     return false;
   }
   // The kernel of the invariant rows, without its zero ends: row j reads x[j + offset + k].
-  const int mid = (range.Begin + range.End) / 2;
-  const size_t width = static_cast<size_t>(op.Width);
-  const double* row = op.Weights.data() + mid * width;
-  int k0 = 0, k1 = op.Width - 1;
-  while (k0 <= k1 && row[k0] == 0.0)
-  {
-    ++k0;
-  }
-  while (k1 >= k0 && row[k1] == 0.0)
-  {
-    --k1;
-  }
-  if (k0 > k1)
+  std::vector<double> kernel;
+  int offset = 0;
+  if (!InvariantKernel(op, range, kernel, offset))
   {
     return false;
   }
-  const std::vector<double> kernel(row + k0, row + k1 + 1);
   const int taps = static_cast<int>(kernel.size());
-  const int offset = op.First[mid] - mid + k0;
   this->Size = n;
   this->Border = border;
   this->Single = single;
   this->PadLeft = std::max(0, -offset);
   this->PadRight = std::max(0, offset + taps - 1);
   this->N = vtkBloomFFTConvolution::GoodTransformSize(n + this->PadLeft + this->PadRight);
-
-  // The kernel's spectrum for a circular convolution whose output j sits at PadLeft + j.
-  {
-    std::vector<double> h(this->N, 0.0);
-    for (int k = 0; k < taps; ++k)
-    {
-      const long long m = ((-(offset + k)) % this->N + this->N) % this->N;
-      h[m] += kernel[k];
-    }
-    std::vector<fftw_complex> spectrum(this->N / 2 + 1);
-    {
-      std::lock_guard<std::mutex> lock(vtkBloomFFTConvolution::PlannerMutex());
-      fftw_plan plan = fftw_plan_dft_r2c_1d(this->N, h.data(), spectrum.data(), FFTW_ESTIMATE);
-      fftw_execute(plan);
-      fftw_destroy_plan(plan);
-    }
-    this->SpectrumD.resize(2 * spectrum.size());
-    this->SpectrumF.resize(2 * spectrum.size());
-    for (size_t q = 0; q < spectrum.size(); ++q)
-    {
-      for (int part = 0; part < 2; ++part)
-      {
-        this->SpectrumD[2 * q + part] = spectrum[q][part] / this->N;
-        this->SpectrumF[2 * q + part] = static_cast<float>(this->SpectrumD[2 * q + part]);
-      }
-    }
-  }
+  KernelSpectrum(kernel, offset, this->N, this->SpectrumD, this->SpectrumF);
 
   // D = M - T on the rows outside the invariant range, one block per end.
   for (int side = 0; side < 2; ++side)
@@ -381,100 +518,14 @@ bool vtkBloomFFTConvolution::Build(const vtkBloomLinearOperator& op, int border,
     {
       continue;
     }
-    // The columns the rows touch (M's support and T's folded taps) bound the block.
-    int w0 = n, w1 = -1;
-    for (int j = r0; j < r1; ++j)
-    {
-      w0 = std::min(w0, op.First[j]);
-      w1 = std::max(w1, std::min(n - 1, op.First[j] + op.Width - 1));
-      for (int k = 0; k < taps; ++k)
-      {
-        const int i = vtkBloomLinearOperator::FoldIndex(j + offset + k, n, border);
-        if (i >= 0)
-        {
-          w0 = std::min(w0, i);
-          w1 = std::max(w1, i);
-        }
-      }
-    }
-    const int span = w1 - w0 + 1;
-    std::vector<std::vector<double>> rows(r1 - r0, std::vector<double>(span, 0.0));
-    int c0 = n, c1 = -1;
-    for (int j = r0; j < r1; ++j)
-    {
-      std::vector<double>& d = rows[j - r0];
-      for (size_t k = 0; k < width && op.First[j] + static_cast<int>(k) < n; ++k)
-      {
-        d[op.First[j] + k - w0] += op.Weights[j * width + k];
-      }
-      for (int k = 0; k < taps; ++k)
-      {
-        const int i = vtkBloomLinearOperator::FoldIndex(j + offset + k, n, border);
-        if (i >= 0)
-        {
-          d[i - w0] -= kernel[k];
-        }
-      }
-      for (int i = 0; i < span; ++i)
-      {
-        if (d[i] != 0.0)
-        {
-          c0 = std::min(c0, i + w0);
-          c1 = std::max(c1, i + w0);
-        }
-      }
-    }
-    if (c1 < c0)
-    {
-      continue;
-    }
     Block block;
-    block.Row0 = r0;
-    block.Rows = r1 - r0;
-    block.Col0 = c0;
-    block.Cols = c1 - c0 + 1;
-    std::vector<double> dense(static_cast<size_t>(block.Rows) * block.Cols);
-    for (int r = 0; r < block.Rows; ++r)
-    {
-      std::copy(rows[r].begin() + (c0 - w0), rows[r].begin() + (c1 - w0) + 1,
-        dense.begin() + static_cast<size_t>(r) * block.Cols);
-    }
-    std::vector<double> vt;
-    block.Rank = Factor(std::move(dense), block.Rows, block.Cols, 1e-12, block.U, vt);
-    block.V.resize(vt.size());
-    for (int k = 0; k < block.Rank; ++k)
-    {
-      for (int q = 0; q < block.Cols; ++q)
-      {
-        block.V[static_cast<size_t>(q) * block.Rank + k] =
-          vt[static_cast<size_t>(k) * block.Cols + q];
-      }
-    }
-    if (block.Rank > 0)
+    if (BorderCorrection(op, kernel, offset, border, r0, r1, block))
     {
       this->Corrections.push_back(std::move(block));
     }
   }
 
-  // The outputs each input sample reaches, made monotone so that a range's reach is its ends'.
-  this->ReachLo.assign(n, n);
-  this->ReachHi.assign(n, -1);
-  for (int j = 0; j < n; ++j)
-  {
-    for (int i = op.First[j]; i < std::min(n, op.First[j] + op.Width); ++i)
-    {
-      this->ReachLo[i] = std::min(this->ReachLo[i], j);
-      this->ReachHi[i] = std::max(this->ReachHi[i], j);
-    }
-  }
-  for (int i = n - 2; i >= 0; --i)
-  {
-    this->ReachLo[i] = std::min(this->ReachLo[i], this->ReachLo[i + 1]);
-  }
-  for (int i = 1; i < n; ++i)
-  {
-    this->ReachHi[i] = std::max(this->ReachHi[i], this->ReachHi[i - 1]);
-  }
+  OutputReach(op, this->ReachLo, this->ReachHi);
 
   std::lock_guard<std::mutex> lock(vtkBloomFFTConvolution::PlannerMutex());
   if (single)
