@@ -187,6 +187,90 @@ void ClampToFinite(vtkImageData* image, const int extent[6])
     }
   }
 }
+
+//------------------------------------------------------------------------------
+// A copy of `input` with its non-finite samples replaced (see CleanValues). Without
+// sanitize, `kinds` records which samples were +Inf, -Inf or NaN, indexed from the whole
+// extent's origin, so that RequestData can mark the outputs they reach.
+vtkSmartPointer<vtkImageData> CleanCopy(
+  vtkImageData* input, const int whole[6], bool sanitize, KindBlock& kinds)
+{
+  vtkSmartPointer<vtkImageData> clean = vtkSmartPointer<vtkImageData>::New();
+  clean->DeepCopy(input);
+  const vtkIdType count = input->GetPointData()->GetScalars()->GetNumberOfValues();
+  void* data = clean->GetPointData()->GetScalars()->GetVoidPointer(0);
+  std::vector<std::uint8_t>* record = nullptr;
+  if (!sanitize)
+  {
+    int ext[6];
+    input->GetExtent(ext);
+    for (int a = 0; a < 3; ++a)
+    {
+      kinds.Lo[a] = ext[2 * a] - whole[2 * a];
+      kinds.Size[a] = ext[2 * a + 1] - ext[2 * a] + 1;
+    }
+    kinds.NumberOfComponents = input->GetNumberOfScalarComponents();
+    kinds.Kinds.assign(static_cast<size_t>(count), std::uint8_t(0));
+    record = &kinds.Kinds;
+  }
+  if (input->GetScalarType() == VTK_FLOAT)
+  {
+    CleanValues(static_cast<float*>(data), count, sanitize, record);
+  }
+  else
+  {
+    CleanValues(static_cast<double*>(data), count, sanitize, record);
+  }
+  return clean;
+}
+
+//------------------------------------------------------------------------------
+// Bytes per piece for the EXACT direct path's slabs: every piece repeats the x pass over the
+// rows its y support needs, so the default pieces of 64 KiB (a few rows) would redo it about
+// 2R / rows times; cut slabs instead, about four per thread.
+vtkIdType SlabBytesPerPiece(vtkImageData* input, const int updateExtent[6])
+{
+  vtkIdType bytes =
+    static_cast<vtkIdType>(input->GetNumberOfScalarComponents()) * input->GetScalarSize();
+  for (int a = 0; a < 3; ++a)
+  {
+    bytes *= std::max(updateExtent[2 * a + 1] - updateExtent[2 * a] + 1, 1);
+  }
+  const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
+  return std::max<vtkIdType>(65536, bytes / (4 * threads));
+}
+
+//------------------------------------------------------------------------------
+// Write the non-finite value each kind stands for (+Inf, -Inf or NaN) into the outputs of
+// `outExt` whose kinds (indexed from the whole extent's origin) are set.
+void WriteKinds(
+  vtkImageData* output, const int outExt[6], const int whole[6], const KindBlock& kinds)
+{
+  const int nc = output->GetNumberOfScalarComponents();
+  for (int k = outExt[4]; k <= outExt[5]; ++k)
+  {
+    for (int j = outExt[2]; j <= outExt[3]; ++j)
+    {
+      for (int i = outExt[0]; i <= outExt[1]; ++i)
+      {
+        const std::uint8_t* kind =
+          kinds.Kinds.data() + kinds.Offset(i - whole[0], j - whole[2], k - whole[4]);
+        for (int c = 0; c < nc; ++c)
+        {
+          if (!kind[c])
+          {
+            continue;
+          }
+          const double value = kind[c] == KIND_POSITIVE_INFINITY
+            ? std::numeric_limits<double>::infinity()
+            : (kind[c] == KIND_NEGATIVE_INFINITY ? -std::numeric_limits<double>::infinity()
+                                                 : std::numeric_limits<double>::quiet_NaN());
+          output->SetScalarComponentFromDouble(i, j, k, c, value);
+        }
+      }
+    }
+  }
+}
 }
 
 //------------------------------------------------------------------------------
@@ -411,32 +495,8 @@ int vtkImageSeparableGaussian::RequestData(
   KindBlock kinds;
   if (nonFinite)
   {
-    clean = vtkSmartPointer<vtkImageData>::New();
-    clean->DeepCopy(input);
-    void* data = clean->GetPointData()->GetScalars()->GetVoidPointer(0);
-    std::vector<std::uint8_t>* record = nullptr;
-    if (!this->SanitizeNonFinite)
-    {
-      int ext[6];
-      input->GetExtent(ext);
-      const int* whole = inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT());
-      for (int a = 0; a < 3; ++a)
-      {
-        kinds.Lo[a] = ext[2 * a] - whole[2 * a];
-        kinds.Size[a] = ext[2 * a + 1] - ext[2 * a] + 1;
-      }
-      kinds.NumberOfComponents = input->GetNumberOfScalarComponents();
-      kinds.Kinds.assign(static_cast<size_t>(count), std::uint8_t(0));
-      record = &kinds.Kinds;
-    }
-    if (isFloat)
-    {
-      CleanValues(static_cast<float*>(data), count, this->SanitizeNonFinite, record);
-    }
-    else
-    {
-      CleanValues(static_cast<double*>(data), count, this->SanitizeNonFinite, record);
-    }
+    clean = CleanCopy(input, inInfo->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT()),
+      this->SanitizeNonFinite, kinds);
     this->CleanInput = clean;
   }
 
@@ -446,19 +506,11 @@ int vtkImageSeparableGaussian::RequestData(
   this->LastFFTAxes = fftAxes;
   if (this->Method == EXACT && fftAxes == 0)
   {
-    // Every piece repeats the x pass over the rows its y support needs, so the default pieces of
-    // 64 KiB (a few rows) would redo it about 2R / rows times: cut slabs, about four per thread.
+    // The direct path, threaded by the superclass over slabs.
     int updateExtent[6];
     outInfo->Get(vtkStreamingDemandDrivenPipeline::UPDATE_EXTENT(), updateExtent);
-    vtkIdType bytes =
-      static_cast<vtkIdType>(input->GetNumberOfScalarComponents()) * input->GetScalarSize();
-    for (int a = 0; a < 3; ++a)
-    {
-      bytes *= std::max(updateExtent[2 * a + 1] - updateExtent[2 * a] + 1, 1);
-    }
-    const int threads = std::max(1, vtkSMPTools::GetEstimatedNumberOfThreads());
     this->SplitMode = SLAB;
-    this->DesiredBytesPerPiece = std::max<vtkIdType>(65536, bytes / (4 * threads));
+    this->DesiredBytesPerPiece = SlabBytesPerPiece(input, updateExtent);
     result = this->Superclass::RequestData(request, inputVector, outputVector);
   }
   else
@@ -506,30 +558,7 @@ int vtkImageSeparableGaussian::RequestData(
       kinds = DilateKinds(
         kinds, a, op, outExt[2 * a] - whole[2 * a], outExt[2 * a + 1] - outExt[2 * a] + 1);
     }
-    const int nc = output->GetNumberOfScalarComponents();
-    for (int k = outExt[4]; k <= outExt[5]; ++k)
-    {
-      for (int j = outExt[2]; j <= outExt[3]; ++j)
-      {
-        for (int i = outExt[0]; i <= outExt[1]; ++i)
-        {
-          const std::uint8_t* kind =
-            kinds.Kinds.data() + kinds.Offset(i - whole[0], j - whole[2], k - whole[4]);
-          for (int c = 0; c < nc; ++c)
-          {
-            if (!kind[c])
-            {
-              continue;
-            }
-            const double value = kind[c] == KIND_POSITIVE_INFINITY
-              ? std::numeric_limits<double>::infinity()
-              : (kind[c] == KIND_NEGATIVE_INFINITY ? -std::numeric_limits<double>::infinity()
-                                                   : std::numeric_limits<double>::quiet_NaN());
-            output->SetScalarComponentFromDouble(i, j, k, c, value);
-          }
-        }
-      }
-    }
+    WriteKinds(output, outExt, whole, kinds);
   }
   return result;
 }
