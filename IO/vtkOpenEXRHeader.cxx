@@ -219,24 +219,14 @@ bool SelectChannels(
   return true;
 }
 
-}
-
 //------------------------------------------------------------------------------
-bool vtkOpenEXRHeader::SameLayout(const vtkOpenEXRHeader& other) const
-{
-  return std::equal(this->DataWindow, this->DataWindow + 4, other.DataWindow) &&
-    this->Part == other.Part && this->ScalarType == other.ScalarType &&
-    this->NumberOfComponents == other.NumberOfComponents &&
-    this->LuminanceChroma == other.LuminanceChroma && this->Compression == other.Compression;
-}
-
-//------------------------------------------------------------------------------
-bool vtkOpenEXRReadHeader(vtkOpenEXRCoreFile& file, int partIndex, const std::string& partName,
-  const std::string& layer, const vtkOpenEXRLimits& limits, vtkOpenEXRHeader& header,
-  vtkOpenEXRFailure& failure)
+// Read the part names and choose the part: the one named `partName` when that is given, else
+// the one at `partIndex`.
+bool ChoosePart(vtkOpenEXRCoreFile& file, int partIndex, const std::string& partName,
+  vtkOpenEXRHeader& header, vtkOpenEXRFailure& failure)
 {
   int count = 0;
-  exr_result_t result = exr_get_count(file.Context, &count);
+  const exr_result_t result = exr_get_count(file.Context, &count);
   if (result != EXR_ERR_SUCCESS || count < 1)
   {
     return failure.Set(vtkErrorCode::FileFormatError, "the file has no parts");
@@ -280,32 +270,16 @@ bool vtkOpenEXRReadHeader(vtkOpenEXRCoreFile& file, int partIndex, const std::st
   {
     header.Part = partIndex;
   }
-  const int part = header.Part;
+  return true;
+}
 
-  result = exr_get_storage(file.Context, part, &header.Storage);
-  if (result != EXR_ERR_SUCCESS)
-  {
-    return failure.Set(
-      vtkErrorCode::FileFormatError, "cannot read the part type: " + file.Describe(result));
-  }
-  if (header.Storage != EXR_STORAGE_SCANLINE && header.Storage != EXR_STORAGE_TILED)
-  {
-    std::ostringstream message;
-    message << "part " << part << " ('" << header.PartNames[part] << "') holds "
-            << StorageName(header.Storage)
-            << " data; deep images are not supported, only flat scanline and tiled parts";
-    return failure.Set(vtkErrorCode::FileFormatError, message.str());
-  }
-  if (!ReadWindow(file, part, true, header.DataWindow, failure) ||
-    !ReadWindow(file, part, false, header.DisplayWindow, failure))
-  {
-    return false;
-  }
-  header.Width = static_cast<vtkTypeInt64>(header.DataWindow[1]) - header.DataWindow[0] + 1;
-  header.Height = static_cast<vtkTypeInt64>(header.DataWindow[3]) - header.DataWindow[2] + 1;
-
+//------------------------------------------------------------------------------
+// Read the part's channel list, each name split into its layer and base name at the last dot.
+bool ReadChannels(
+  vtkOpenEXRCoreFile& file, int part, vtkOpenEXRHeader& header, vtkOpenEXRFailure& failure)
+{
   const exr_attr_chlist_t* channels = nullptr;
-  result = exr_get_channels(file.Context, part, &channels);
+  const exr_result_t result = exr_get_channels(file.Context, part, &channels);
   if (result != EXR_ERR_SUCCESS || !channels || channels->num_channels < 1)
   {
     return failure.Set(vtkErrorCode::FileFormatError, "the part has no channels");
@@ -339,21 +313,15 @@ bool vtkOpenEXRReadHeader(vtkOpenEXRCoreFile& file, int partIndex, const std::st
     channel.YSampling = entry.y_sampling;
     header.Channels.push_back(channel);
   }
+  return true;
+}
 
-  if (!SelectChannels(header, layer, failure))
-  {
-    return false;
-  }
-
-  result = exr_get_compression(file.Context, part, &header.Compression);
-  if (result != EXR_ERR_SUCCESS || header.Compression < EXR_COMPRESSION_NONE ||
-    header.Compression >= EXR_COMPRESSION_LAST_TYPE)
-  {
-    return failure.Set(vtkErrorCode::FileFormatError, "invalid compression");
-  }
-
-  // Refuse before allocating: width * height against the pixel limit, and the decoded output,
-  // width * height * components * 4 bytes, against the byte limit, with overflow checks.
+//------------------------------------------------------------------------------
+// Refuse before allocating: width * height against the pixel limit, and the decoded output,
+// width * height * components * 4 bytes, against the byte limit, with overflow checks.
+bool CheckLimits(
+  const vtkOpenEXRHeader& header, const vtkOpenEXRLimits& limits, vtkOpenEXRFailure& failure)
+{
   vtkTypeUInt64 pixels = 0, bytes = 0;
   const vtkTypeUInt64 perPixel = 4u * static_cast<vtkTypeUInt64>(header.NumberOfComponents);
   const bool representable = CheckedMultiply(static_cast<vtkTypeUInt64>(header.Width),
@@ -382,6 +350,64 @@ bool vtkOpenEXRReadHeader(vtkOpenEXRCoreFile& file, int partIndex, const std::st
     return failure.Set(vtkErrorCode::FileFormatError, "image rows are too wide to decode");
   }
   return true;
+}
+
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenEXRHeader::SameLayout(const vtkOpenEXRHeader& other) const
+{
+  return std::equal(this->DataWindow, this->DataWindow + 4, other.DataWindow) &&
+    this->Part == other.Part && this->ScalarType == other.ScalarType &&
+    this->NumberOfComponents == other.NumberOfComponents &&
+    this->LuminanceChroma == other.LuminanceChroma && this->Compression == other.Compression;
+}
+
+//------------------------------------------------------------------------------
+bool vtkOpenEXRReadHeader(vtkOpenEXRCoreFile& file, int partIndex, const std::string& partName,
+  const std::string& layer, const vtkOpenEXRLimits& limits, vtkOpenEXRHeader& header,
+  vtkOpenEXRFailure& failure)
+{
+  if (!ChoosePart(file, partIndex, partName, header, failure))
+  {
+    return false;
+  }
+  const int part = header.Part;
+
+  exr_result_t result = exr_get_storage(file.Context, part, &header.Storage);
+  if (result != EXR_ERR_SUCCESS)
+  {
+    return failure.Set(
+      vtkErrorCode::FileFormatError, "cannot read the part type: " + file.Describe(result));
+  }
+  if (header.Storage != EXR_STORAGE_SCANLINE && header.Storage != EXR_STORAGE_TILED)
+  {
+    std::ostringstream message;
+    message << "part " << part << " ('" << header.PartNames[part] << "') holds "
+            << StorageName(header.Storage)
+            << " data; deep images are not supported, only flat scanline and tiled parts";
+    return failure.Set(vtkErrorCode::FileFormatError, message.str());
+  }
+  if (!ReadWindow(file, part, true, header.DataWindow, failure) ||
+    !ReadWindow(file, part, false, header.DisplayWindow, failure))
+  {
+    return false;
+  }
+  header.Width = static_cast<vtkTypeInt64>(header.DataWindow[1]) - header.DataWindow[0] + 1;
+  header.Height = static_cast<vtkTypeInt64>(header.DataWindow[3]) - header.DataWindow[2] + 1;
+
+  if (!ReadChannels(file, part, header, failure) || !SelectChannels(header, layer, failure))
+  {
+    return false;
+  }
+
+  result = exr_get_compression(file.Context, part, &header.Compression);
+  if (result != EXR_ERR_SUCCESS || header.Compression < EXR_COMPRESSION_NONE ||
+    header.Compression >= EXR_COMPRESSION_LAST_TYPE)
+  {
+    return failure.Set(vtkErrorCode::FileFormatError, "invalid compression");
+  }
+  return CheckLimits(header, limits, failure);
 }
 
 //------------------------------------------------------------------------------
