@@ -289,6 +289,36 @@ struct Plane
 }
 
 //------------------------------------------------------------------------------
+void vtkBloomFastChainParameters::Set(
+  vtkBloomParameters* bloom, const vtkBloomChain* chain, int width, int height)
+{
+  this->ThresholdMode = bloom->GetThresholdMode();
+  this->Threshold = bloom->GetThreshold();
+  this->Knee = bloom->GetKnee();
+  this->ClampLuminance = bloom->GetClampLuminance();
+  this->Chain = chain;
+  this->LevelSizes = bloom->ComputeLevelSizes(width, height);
+  this->LevelWeights.clear();
+  for (size_t i = 0; i < this->LevelSizes.size(); ++i)
+  {
+    this->LevelWeights.push_back(bloom->GetLevelWeight(static_cast<int>(i)));
+  }
+  this->DownsampleKernel = bloom->GetDownsampleKernel();
+  this->KarisAverage = bloom->GetKarisAverage();
+  this->BlurIterations = bloom->GetBlurIterations();
+  this->AccumulateMode = bloom->GetAccumulateMode();
+  this->CompositeMode = bloom->GetCompositeMode();
+  this->Strength = bloom->GetStrength();
+  bloom->GetTint(this->Tint);
+  this->SanitizeNonFinite = bloom->GetSanitizeNonFinite();
+  this->SkipEmpty = bloom->GetSkipEmptyBloom();
+  this->TrimPyramid = bloom->GetTrimPyramid();
+  this->RestrictToBrightRegion = bloom->GetRestrictToBrightRegion();
+  this->SkipDisabled = bloom->GetSkipDisabledEffects();
+  this->ConvolutionMode = bloom->GetConvolutionMode();
+}
+
+//------------------------------------------------------------------------------
 struct vtkBloomFastChain::Internals
 {
   std::vector<Plane> Levels;

@@ -60,6 +60,7 @@
 #include "vtkType.h"         // For vtkMTimeType
 
 class vtkBloomChain;
+class vtkBloomParameters;
 
 #include <cstddef>
 #include <utility>
@@ -69,9 +70,16 @@ class vtkAlgorithm;
 class vtkDataArray;
 class vtkImageData;
 
-/// Everything the chain needs, as vtkImageBloom's parameters say it.
+/**
+ * Everything the chain needs for one update: the bloom's values copied once from its
+ * vtkBloomParameters (Set) into plain fields, which the fused per-sample loops read without a
+ * virtual getter call, and the execution options of the filter (UseAVX2, ChainTime).
+ */
 struct vtkBloomFastChainParameters
 {
+  /// Copy the values of `bloom`, with the chain built for width x height and its level sizes.
+  void Set(vtkBloomParameters* bloom, const vtkBloomChain* chain, int width, int height);
+
   int ThresholdMode = 0;
   double Threshold = 1.0;
   double Knee = 0.5;

@@ -244,30 +244,8 @@ bool vtkImageBloom::ExecuteFast(
   const int width = inExt[1] - inExt[0] + 1;
   const int height = inExt[3] - inExt[2] + 1;
   vtkBloomFastChainParameters p;
-  p.ThresholdMode = this->Parameters->GetThresholdMode();
-  p.Threshold = this->Parameters->GetThreshold();
-  p.Knee = this->Parameters->GetKnee();
-  p.ClampLuminance = this->Parameters->GetClampLuminance();
-  p.Chain = this->Chain;
-  p.LevelSizes = this->ComputeLevelSizes(width, height);
-  for (size_t i = 0; i < p.LevelSizes.size(); ++i)
-  {
-    p.LevelWeights.push_back(this->GetLevelWeight(static_cast<int>(i)));
-  }
-  p.DownsampleKernel = this->Parameters->GetDownsampleKernel();
-  p.KarisAverage = this->Parameters->GetKarisAverage();
-  p.BlurIterations = this->Parameters->GetBlurIterations();
-  p.AccumulateMode = this->Parameters->GetAccumulateMode();
-  p.CompositeMode = this->Parameters->GetCompositeMode();
-  p.Strength = this->Parameters->GetStrength();
-  std::copy(this->Parameters->GetTint(), this->Parameters->GetTint() + 3, p.Tint);
-  p.SanitizeNonFinite = this->Parameters->GetSanitizeNonFinite();
-  p.SkipEmpty = this->Parameters->GetSkipEmptyBloom();
-  p.TrimPyramid = this->Parameters->GetTrimPyramid();
-  p.RestrictToBrightRegion = this->Parameters->GetRestrictToBrightRegion();
-  p.SkipDisabled = this->Parameters->GetSkipDisabledEffects();
+  p.Set(this->Parameters, this->Chain, width, height);
   p.UseAVX2 = this->UseAVX2;
-  p.ConvolutionMode = this->Parameters->GetConvolutionMode();
   p.ChainTime = this->ChainTime.GetMTime();
   if (!vtkBloomFastChain::Supports(p, input))
   {
