@@ -58,6 +58,21 @@ namespace
 bool Fast = false;     // --fast
 bool Fragment = false; // --fragment
 
+// The timer on `scene` with `preset`, in the quality and shader stage the options ask for; false,
+// with a message, for an unknown scene or preset.
+bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::string& preset,
+  int width, int height)
+{
+  if (!timer.Setup(scene, width, height) || !timer.UsePreset(preset))
+  {
+    std::fprintf(stderr, "unknown scene %s or preset %s\n", scene.c_str(), preset.c_str());
+    return false;
+  }
+  timer.Bloom->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
+  timer.Bloom->SetUseComputeShaders(!Fragment);
+  return true;
+}
+
 std::vector<std::string> Expand(const std::string& name, const std::vector<std::string>& all)
 {
   return name == "all" ? all : std::vector<std::string>{ name };
@@ -72,13 +87,10 @@ bool TimeFrames(const std::string& scene, const std::string& preset, int width, 
   int frames, bool header)
 {
   vtkBloomFrameTimer timer;
-  if (!timer.Setup(scene, width, height) || !timer.UsePreset(preset))
+  if (!SetUp(timer, scene, preset, width, height))
   {
-    std::fprintf(stderr, "unknown scene %s or preset %s\n", scene.c_str(), preset.c_str());
     return false;
   }
-  timer.Bloom->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
-  timer.Bloom->SetUseComputeShaders(!Fragment);
   // Selective scenes also render their emitters; measure the plain scene pass for all.
   const vtkBloomFrameTimer::Kind kinds[] = { vtkBloomFrameTimer::PLAIN,
     vtkBloomFrameTimer::COMPUTE_COPY, vtkBloomFrameTimer::FLOAT_COPY, vtkBloomFrameTimer::BLOOM };
@@ -118,13 +130,10 @@ bool ProfilePasses(
   const std::string& scene, const std::string& preset, int width, int height, int frames)
 {
   vtkBloomFrameTimer timer;
-  if (!timer.Setup(scene, width, height) || !timer.UsePreset(preset))
+  if (!SetUp(timer, scene, preset, width, height))
   {
-    std::fprintf(stderr, "unknown scene %s or preset %s\n", scene.c_str(), preset.c_str());
     return false;
   }
-  timer.Bloom->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
-  timer.Bloom->SetUseComputeShaders(!Fragment);
   // Unprofiled frames first: the whole bloom frame and the floor, for the totals.
   std::vector<double> floorGPU, frameGPU;
   for (int f = -2; f < frames; ++f)

@@ -5,16 +5,6 @@
 # the half-precision RGBA interface).
 find_package(OpenEXR 3 REQUIRED)
 
-# The independent float64 reference the filter suites compare against. It is built once here
-# and shares no code with the module under test.
-if (NOT TARGET vtkbloom_reference)
-  add_library(vtkbloom_reference STATIC
-    "${CMAKE_CURRENT_LIST_DIR}/Support/vtkBloomReference.cxx")
-  target_include_directories(vtkbloom_reference PUBLIC "${CMAKE_CURRENT_LIST_DIR}/Support")
-  target_link_libraries(vtkbloom_reference PUBLIC VTK::CommonCore VTK::CommonDataModel
-    vtkbloom_build_flags)
-endif ()
-
 set(vtkbloom_filters_test_libraries
   vtkbloom_reference
   VTKBloom::FiltersBloom

@@ -9,14 +9,6 @@ target_include_directories(vtkbloom_hardcases PUBLIC "${CMAKE_CURRENT_LIST_DIR}/
 target_link_libraries(vtkbloom_hardcases PUBLIC VTK::CommonCore VTK::CommonDataModel
   vtkbloom_build_flags)
 
-if (NOT TARGET vtkbloom_reference)
-  add_library(vtkbloom_reference STATIC
-    "${CMAKE_CURRENT_LIST_DIR}/Support/vtkBloomReference.cxx")
-  target_include_directories(vtkbloom_reference PUBLIC "${CMAKE_CURRENT_LIST_DIR}/Support")
-  target_link_libraries(vtkbloom_reference PUBLIC VTK::CommonCore VTK::CommonDataModel
-    vtkbloom_build_flags)
-endif ()
-
 foreach (test IN ITEMS TestNumericsGaussian TestNumericsHardCases)
   vtkbloom_add_gtest(${test}
     SOURCES "${CMAKE_CURRENT_LIST_DIR}/Numerics/${test}.cxx"

@@ -30,6 +30,30 @@ namespace
 // The height the scenes' bloom parameters were chosen at (vtk-bloom render's default size);
 // other heights get the same look, scaled (vtkBloomParameters::ReferenceHeight).
 constexpr int SceneHeight = 540;
+
+// The scenes' bloom: the webgpu-market chain with the scene's own levels and strength, sized
+// for SceneHeight so that it looks the same at every resolution. Returns the parameters for
+// the scene's bright pass.
+vtkBloomParameters* SceneBloom(vtkBloomPass* pass, int levels, double strength)
+{
+  pass->SetPreset("webgpu-market");
+  vtkBloomParameters* p = pass->GetParameters();
+  p->SetReferenceHeight(SceneHeight);
+  p->SetNumberOfLevels(levels);
+  p->SetStrength(strength);
+  return p;
+}
+
+// A camera at `position` looking at `focus`, z up or y up.
+vtkCamera* SceneCamera(
+  vtkRenderer* renderer, const double position[3], const double focus[3], bool zUp)
+{
+  vtkCamera* camera = renderer->GetActiveCamera();
+  camera->SetPosition(position[0], position[1], position[2]);
+  camera->SetFocalPoint(focus[0], focus[1], focus[2]);
+  camera->SetViewUp(0.0, zUp ? 0.0 : 1.0, zUp ? 1.0 : 0.0);
+  return camera;
+}
 // A perceptual "hot" table: black-red-yellow-white over the wavelet's range.
 void HotTable(vtkLookupTable* table, double lo, double hi)
 {
@@ -84,18 +108,11 @@ void ScalarField(vtkRenderer* renderer, vtkBloomPass* pass)
   auto emitter = vtkBloomPass::CreateScalarRangeEmitter(slice, hot);
   pass->AddEmitter(emitter);
   pass->SetEmissionSourceToEmitters();
-  pass->SetPreset("webgpu-market");
-  vtkBloomParameters* p = pass->GetParameters();
-  p->SetReferenceHeight(SceneHeight); // the same look at every resolution
-  p->SetThresholdMode(vtkImageBloomThreshold::NONE);
-  p->SetNumberOfLevels(6);
-  p->SetStrength(1.5);
+  SceneBloom(pass, 6, 1.5)->SetThresholdMode(vtkImageBloomThreshold::NONE);
 
   renderer->SetBackground(0.02, 0.02, 0.03);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.0, 0.0, 300.0);
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetViewUp(0.0, 1.0, 0.0);
+  const double position[3] = { 0.0, 0.0, 300.0 }, focus[3] = { 0.0, 0.0, 0.0 };
+  vtkCamera* camera = SceneCamera(renderer, position, focus, false);
   renderer->ResetCamera();
   camera->Zoom(1.9);
 }
@@ -214,18 +231,11 @@ void FieldLines(vtkRenderer* renderer, vtkBloomPass* pass)
     renderer->AddActor(particle);
   }
 
-  pass->SetPreset("webgpu-market");
-  vtkBloomParameters* p = pass->GetParameters();
-  p->SetReferenceHeight(SceneHeight); // the same look at every resolution
-  p->SetThreshold(1.0);
-  p->SetNumberOfLevels(6);
-  p->SetStrength(0.5);
+  SceneBloom(pass, 6, 0.5)->SetThreshold(1.0);
 
   renderer->SetBackground(0.0, 0.0, 0.0);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(0.0, -9.0, 2.5);
-  camera->SetFocalPoint(0.0, 0.0, 0.0);
-  camera->SetViewUp(0.0, 0.0, 1.0);
+  const double position[3] = { 0.0, -9.0, 2.5 }, focus[3] = { 0.0, 0.0, 0.0 };
+  vtkCamera* camera = SceneCamera(renderer, position, focus, true);
   renderer->ResetCamera();
   camera->Zoom(1.9);
 }
@@ -296,19 +306,11 @@ void LitScene(vtkRenderer* renderer, vtkBloomPass* pass)
   fill->SetIntensity(0.35);
   renderer->AddLight(fill);
 
-  pass->SetPreset("webgpu-market");
-  vtkBloomParameters* p = pass->GetParameters();
-  p->SetReferenceHeight(SceneHeight); // the same look at every resolution
-  p->SetThreshold(1.2);
-  p->SetNumberOfLevels(6);
-  p->SetStrength(0.6);
+  SceneBloom(pass, 6, 0.6)->SetThreshold(1.2);
 
   renderer->SetBackground(0.05, 0.06, 0.08);
-  vtkCamera* camera = renderer->GetActiveCamera();
-  camera->SetPosition(1.0, -8.0, 4.5);
-  camera->SetFocalPoint(0.2, 0.2, 0.6);
-  camera->SetViewUp(0.0, 0.0, 1.0);
-  camera->SetViewAngle(35.0);
+  const double position[3] = { 1.0, -8.0, 4.5 }, focus[3] = { 0.2, 0.2, 0.6 };
+  SceneCamera(renderer, position, focus, true)->SetViewAngle(35.0);
 }
 
 struct Scene

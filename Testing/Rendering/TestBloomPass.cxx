@@ -85,6 +85,14 @@ double ColourRelativeL2(vtkImageData* a, vtkImageData* b)
   return std::sqrt(num / std::max(den, 1e-300));
 }
 
+// The image of an OpenEXR file.
+vtkSmartPointer<vtkImageData> ReadExr(const std::string& path)
+{
+  vtkNew<vtkOpenEXRReader> reader;
+  reader->SetFileName(path.c_str());
+  return vtkBloomTest::UpdateAndCopy(reader);
+}
+
 // Largest value of channel c.
 double MaxChannel(vtkImageData* image, int c)
 {
@@ -234,9 +242,7 @@ TEST(RenderingBloomPass, SkipsAnEmptyBloomExactly)
 TEST(RenderingBloomPass, ApplyToImageMatchesThePresetExamples)
 {
   VTKBLOOM_REQUIRE_DATA(input, "presets/example_161x91.exr");
-  vtkNew<vtkOpenEXRReader> reader;
-  reader->SetFileName(input.c_str());
-  reader->Update();
+  vtkSmartPointer<vtkImageData> image = ReadExr(input);
   BloomWindow w(16, 16);
   w.Bloom->SetFloatPrecisionTo32Bit(); // the image is stored at the pass's precision
   for (const auto& preset : vtkImageBloom::GetPresetNames())
@@ -247,7 +253,7 @@ TEST(RenderingBloomPass, ApplyToImageMatchesThePresetExamples)
     expectedReader->Update();
     ASSERT_TRUE(w.Bloom->SetPreset(preset.c_str()));
     vtkNew<vtkImageData> gpu;
-    ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), reader->GetOutput(), gpu));
+    ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), image, gpu));
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
     const double error = ColourRelativeL2(gpu, expectedReader->GetOutput());
     EXPECT_LE(error, 1e-5) << preset;
@@ -262,23 +268,21 @@ TEST(RenderingBloomPass, ApplyToImageMatchesThePresetExamples)
 TEST(RenderingBloomPass, SharedParametersDriveThePassAndTheFilter)
 {
   VTKBLOOM_REQUIRE_DATA(input, "presets/example_161x91.exr");
-  vtkNew<vtkOpenEXRReader> reader;
-  reader->SetFileName(input.c_str());
-  reader->Update();
+  vtkSmartPointer<vtkImageData> image = ReadExr(input);
   vtkNew<vtkImageBloom> cpu;
   cpu->SetPreset("crt-halfres"); // older than the chain the pass is about to build
   cpu->SetExecutionModeToReference();
-  cpu->SetInputData(reader->GetOutput());
+  cpu->SetInputData(image);
   BloomWindow w(16, 16);
   w.Bloom->SetFloatPrecisionTo32Bit();
   vtkNew<vtkImageData> defaults, shared;
-  ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), reader->GetOutput(), defaults));
+  ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), image, defaults));
   w.Bloom->SetParameters(cpu->GetParameters());
   EXPECT_EQ(w.Bloom->GetParameters(), cpu->GetParameters());
   for (const double strength : { 1.5 /* the preset's own: no edit */, 0.25 })
   {
     cpu->GetParameters()->SetStrength(strength);
-    ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), reader->GetOutput(), shared));
+    ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), image, shared));
     cpu->Update();
     EXPECT_LE(ColourRelativeL2(shared, cpu->GetOutput()), 1e-5) << strength;
     EXPECT_GT(ColourRelativeL2(shared, defaults), 1e-3) << strength;
@@ -769,21 +773,19 @@ TEST(RenderingBloomPass, RegressionImages)
 TEST(RenderingBloomPass, NonFiniteInputFollowsTheCPUPolicy)
 {
   VTKBLOOM_REQUIRE_DATA(path, "exr/TestImages_BrightRingsNanInf.exr");
-  vtkNew<vtkOpenEXRReader> reader;
-  reader->SetFileName(path.c_str());
-  reader->Update();
+  vtkSmartPointer<vtkImageData> image = ReadExr(path);
   BloomWindow w(16, 16);
   w.Bloom->SetFloatPrecisionTo32Bit();
   w.Bloom->SetPreset("webgpu-market");
   vtkNew<vtkImageBloom> cpu;
   cpu->SetParameters(w.Bloom->GetParameters());
   cpu->SetExecutionModeToReference();
-  cpu->SetInputData(reader->GetOutput());
+  cpu->SetInputData(image);
   for (const bool sanitize : { true, false })
   {
     cpu->SetSanitizeNonFinite(sanitize);
     vtkNew<vtkImageData> gpu;
-    ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), reader->GetOutput(), gpu));
+    ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), image, gpu));
     cpu->Update();
     vtkDataArray* g = gpu->GetPointData()->GetScalars();
     vtkDataArray* c = cpu->GetOutput()->GetPointData()->GetScalars();
