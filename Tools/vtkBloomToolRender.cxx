@@ -40,7 +40,8 @@ struct Stage
     errors.Watch(this->Window);
     errors.Watch(this->Pass);
     this->Window->SetOffScreenRendering(1);
-    this->Window->SetMultiSamples(0);
+    // Anti-aliased, as VTK's windows are by default: the pass keeps the samples.
+    this->Window->SetMultiSamples(4);
     this->Window->SetSize(options.Size[0], options.Size[1]);
     this->Window->AddRenderer(this->Renderer);
     this->Pass->SetDelegatePass(this->Steps);

@@ -310,7 +310,7 @@ int View(const std::string& input, const RenderOptions& options, const std::stri
   Viewer viewer;
   viewer.Options = options;
   viewer.Window->SetSize(options.Size[0], options.Size[1]);
-  viewer.Window->SetMultiSamples(0);
+  viewer.Window->SetMultiSamples(4); // anti-aliased: the pass keeps the samples
   viewer.Window->SetWindowName(("vtk-bloom view " + input).c_str());
   viewer.Window->AddRenderer(viewer.Renderer);
   viewer.Interactor->SetRenderWindow(viewer.Window);
