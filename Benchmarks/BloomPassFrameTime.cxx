@@ -14,6 +14,7 @@
 //   BloomPassFrameTime --quality SCENE WIDTH HEIGHT FRAMES [CSV]
 //   BloomPassFrameTime --sparse WIDTH HEIGHT FRAMES [fast]
 //   BloomPassFrameTime --sync SCENE WIDTH HEIGHT FRAMES
+//   BloomPassFrameTime --orbit SCENE WIDTH HEIGHT FRAMES
 //
 // SCENE is a name of vtkBloomExampleSceneNames() or "all" (default lit-spheres); PRESET is
 // "scene" (the scene's own parameters, the default), "default" (vtkBloomParameters' defaults),
@@ -32,6 +33,9 @@
 // 1 % and 10 % of the window), vtkImageBloom's defaults, the full chain
 // (RestrictToBrightRegion off) against the content-aware one (on) frame by frame; also checks
 // on one frame that both give the same bits.
+//
+// --orbit: stutter. The bloom over the cheapest float copy, frame by frame, over FRAMES frames
+// of an orbiting camera: median, mean, p99, maximum, and the frames above 1.5 x the median.
 //
 // --sync: the cost of the pass's one wait for the GPU (the bright region's read-back, or
 // SkipEmptyBloom's occlusion query): vtkImageBloom's defaults with the content-aware chain, with
@@ -409,10 +413,51 @@ bool SparseTable(int width, int height, int frames, bool fast)
   }
   return true;
 }
+
+// Stutter: FRAMES frames of an orbiting camera (half a degree a frame), each a bloom frame and
+// a frame of the cheapest float copy, interleaved. The bloom's cost per frame is the
+// difference; its median, mean, p99 and maximum over the frames after 16 of warm-up (the
+// first frames compile programs and learn what the bright region costs), and how many frames
+// cost more than 1.5 times the median.
+bool OrbitTable(const std::string& scene, int width, int height, int frames)
+{
+  vtkBloomFrameTimer timer;
+  if (!SetUp(timer, scene, "scene", width, height))
+  {
+    return false;
+  }
+  std::vector<double> cost;
+  for (int f = -16; f < frames; ++f)
+  {
+    timer.Frame(vtkBloomFrameTimer::COMPUTE_COPY);
+    const double copy = timer.LastGPUSeconds;
+    timer.Frame(vtkBloomFrameTimer::BLOOM);
+    if (f >= 0)
+    {
+      cost.push_back(1e3 * (timer.LastGPUSeconds - copy));
+    }
+  }
+  const vtkBloomFrameStatistics stats(cost);
+  const long over = std::count_if(
+    cost.begin(), cost.end(), [&stats](double ms) { return ms > 1.5 * stats.Median; });
+  std::printf("Bloom over the cheapest float copy, GPU time per frame, %d frames of an orbiting "
+              "camera after 16 of warm-up\n"
+              "| scene | size | median | mean | p99 | max | max / median | frames over 1.5 x "
+              "median |\n|---|---|---|---|---|---|---|---|\n"
+              "| %s | %dx%d | %.3f ms | %.3f ms | %.3f ms | %.3f ms | %.2f | %ld |\n",
+    frames, scene.c_str(), width, height, stats.Median, stats.Mean, stats.P99, stats.Max,
+    stats.Median > 0.0 ? stats.Max / stats.Median : 0.0, over);
+  std::fflush(stdout);
+  return true;
+}
 }
 
 int main(int argc, char* argv[])
 {
+  if (argc > 5 && std::strcmp(argv[1], "--orbit") == 0)
+  {
+    return OrbitTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0 : 1;
+  }
   if (argc > 5 && std::strcmp(argv[1], "--quality") == 0)
   {
     return QualityTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5]),

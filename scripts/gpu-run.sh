@@ -23,12 +23,14 @@
 #   sparse.md        sparse scenes (0 %, 0.1 %, 1 %, 10 % bright) at 3840x2160: the full chain
 #                    against the content-aware one, exact and fast
 #   sync.md          the cost of the pass's one wait for the GPU (BloomPassFrameTime --sync)
+#   orbit.md         stutter: the bloom over the cheapest float copy, frame by frame, over 1000
+#                    frames of an orbiting camera at 3840x2160 (BloomPassFrameTime --orbit)
 #   stages.md        ShaderStageThroughput: one full-screen pass as a fragment and as a compute
 #                    shader at 3840x2160
 #   render.png       `vtk-bloom render` of lit-spheres at 3840x2160
 #   run.log          everything printed
 #
-# STEPS (default "tests frametime profile quality sparse sync stages render") picks the
+# STEPS (default "tests frametime profile quality sparse sync orbit stages render") picks the
 # steps. At most 8 files come back from the device tool: pick fewer steps there.
 # The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
 # CUDA image) and the pack at the absolute paths it was built with.
@@ -37,7 +39,7 @@ cd "${VTKBLOOM_GPU_ROOT:-$PWD}" || exit 1
 OUT=${OUT:-$(mktemp -d)}
 mkdir -p "$OUT"
 FRAMES=${FRAMES:-50}
-STEPS=${STEPS:-tests frametime profile quality sparse sync stages render}
+STEPS=${STEPS:-tests frametime profile quality sparse sync orbit stages render}
 PRESETS=${PRESETS:-all}
 step() { [[ " $STEPS " == *" $1 "* ]]; }
 exec > >(tee "$OUT/run.log") 2>&1
@@ -132,6 +134,16 @@ fi
 if step sync; then
 echo "== the wait for the GPU"
 timeout 120 "$bin/BloomPassFrameTime" --sync lit-spheres 3840 2160 "$FRAMES" | tee "$OUT/sync.md"
+fi
+
+if step orbit; then
+echo "== stutter over an orbiting camera"
+{
+  for scene in lit-spheres field-lines; do
+    timeout 300 "$bin/BloomPassFrameTime" --orbit "$scene" 3840 2160 1000
+    echo
+  done
+} | tee "$OUT/orbit.md"
 fi
 
 if step stages; then
