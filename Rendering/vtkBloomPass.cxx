@@ -433,6 +433,18 @@ double vtkBloomPass::GetFullCost() const
 }
 
 //------------------------------------------------------------------------------
+double vtkBloomPass::GetLastChainMilliseconds()
+{
+  vtkBloomPassResources& res = this->Internals->Resources;
+  if (!res.Context)
+  {
+    return -1.0;
+  }
+  res.Context->MakeCurrent();
+  return this->Internals->Runner.CollectLastChainMilliseconds();
+}
+
+//------------------------------------------------------------------------------
 bool vtkBloomPass::ApplyToImage(
   vtkOpenGLRenderWindow* window, vtkImageData* input, vtkImageData* output)
 {

@@ -286,10 +286,19 @@ public:
    * an evaluation, from the start of the chain to the end of the composite, with the bright
    * region measured (its read-back's wait included) and with the full chain; negative until
    * timed (GPU timestamps, read frames later without waiting). Where the full chain is the
-   * cheaper, the region is measured every 8th render only (docs/rendering.md).
+   * cheaper, the region is not measured again on this context (docs/rendering.md).
    */
   double GetRegionCost() const;
   double GetFullCost() const;
+
+  /**
+   * The GPU milliseconds of the bloom itself in the latest render whose GPU timestamps have
+   * arrived: from the bright pass to the end of the composite, the scene's render excluded;
+   * negative until one has. It never waits: after a render has completed (glFinish), it is that
+   * render's. For benchmarks: the cost of the bloom frame by frame, where a difference of two
+   * frame times would add the scene's own variation.
+   */
+  double GetLastChainMilliseconds();
 
   ///@{
   /**

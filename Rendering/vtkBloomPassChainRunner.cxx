@@ -466,10 +466,7 @@ bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
   }
   ChainRegions regions;
   regions.Restrict = this->ChooseRestrict();
-  if (this->Restrict)
-  {
-    this->BeginCostTiming(regions.Restrict);
-  }
+  this->BeginCostTiming(regions.Restrict); // every evaluation: LastChainMilliseconds
   this->CompositeRestricted = false;
   this->ComputedSamples = this->FullSamples = 0.0;
   this->Coverage = 1.0;

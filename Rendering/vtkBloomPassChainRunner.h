@@ -95,6 +95,18 @@ public:
   double FullCost = -1.0;
 
   /**
+   * GPU milliseconds of the latest evaluation whose timestamps have arrived (from the bright
+   * pass to the end of the composite); negative until one has. Collects what has arrived,
+   * without waiting; the context must be current.
+   */
+  double CollectLastChainMilliseconds()
+  {
+    this->CollectCostTimings();
+    return this->LastChainMilliseconds;
+  }
+  double LastChainMilliseconds = -1.0;
+
+  /**
    * out = keep * scene + Strength * Tint * bloom into `target`, or into the bound framebuffer
    * at `origin` when `target` is null.
    */
@@ -316,8 +328,9 @@ private:
   struct CostSlot
   {
     unsigned int Queries[2] = { 0, 0 };
-    bool Measured = false; ///< the evaluation measured the region
-    bool Pending = false;  ///< both timestamps issued, not read yet
+    bool Measured = false;     ///< the evaluation measured the region
+    bool ContentAware = false; ///< Restrict was on: the time counts for RegionPays
+    bool Pending = false;      ///< both timestamps issued, not read yet
   };
   static constexpr int CostSlots = 4;
   static constexpr int ExploreInterval = 32;

@@ -236,6 +236,7 @@ void vtkBloomPassChainRunner::BeginCostTiming(bool measured)
   }
   glQueryCounter(slot.Queries[0], GL_TIMESTAMP);
   slot.Measured = measured;
+  slot.ContentAware = this->Restrict;
   this->CostTimingOpen = true;
   this->CompiledProgram = false;
 }
@@ -254,7 +255,7 @@ void vtkBloomPassChainRunner::EndCostTiming()
     // first full chain compiles the programs of the operators' borders the region had left
     // out; time the next one instead.
     this->CostTimingOpen = false;
-    if (!slot.Measured)
+    if (!slot.Measured && slot.ContentAware)
     {
       this->FramesUntilExplore = 1;
     }
@@ -285,8 +286,12 @@ void vtkBloomPassChainRunner::CollectCostTimings()
     glGetQueryObjectui64v(slot.Queries[1], GL_QUERY_RESULT, &end);
     slot.Pending = false;
     const double ms = end >= start ? 1e-6 * static_cast<double>(end - start) : 0.0;
-    double& average = slot.Measured ? this->RegionCost : this->FullCost;
-    average = average < 0.0 ? ms : 0.5 * (average + ms);
+    this->LastChainMilliseconds = ms;
+    if (slot.ContentAware)
+    {
+      double& average = slot.Measured ? this->RegionCost : this->FullCost;
+      average = average < 0.0 ? ms : 0.5 * (average + ms);
+    }
   }
 }
 

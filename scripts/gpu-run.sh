@@ -23,7 +23,7 @@
 #   sparse.md        sparse scenes (0 %, 0.1 %, 1 %, 10 % bright) at 3840x2160: the full chain
 #                    against the content-aware one, exact and fast
 #   sync.md          the cost of the pass's one wait for the GPU (BloomPassFrameTime --sync)
-#   orbit.md         stutter: the bloom over the cheapest float copy, frame by frame, over 1000
+#   orbit.md         stutter: the bloom's own GPU time, frame by frame, over 1000
 #                    frames of an orbiting camera at 3840x2160 (BloomPassFrameTime --orbit)
 #   stages.md        ShaderStageThroughput: one full-screen pass as a fragment and as a compute
 #                    shader at 3840x2160
