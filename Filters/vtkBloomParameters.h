@@ -226,7 +226,8 @@ public:
    * keeps its size relative to the frame's height, so a frame H pixels tall looks like this
    * one rescaled. The pyramid starts log2(H / ReferenceHeight) levels deeper (rounded; at
    * least level 0), and the blur's sigma, radius and tap spacing take the factor that remains
-   * (GetBlurScale). At H = ReferenceHeight nothing changes.
+   * (GetBlurScale). At H = ReferenceHeight nothing changes. PSF mode's sizes (AiryRadius,
+   * the Gaussians, PSFRadius) stay in pixels.
    */
   vtkSetClampMacro(ReferenceHeight, int, 0, 65536);
   vtkGetMacro(ReferenceHeight, int);

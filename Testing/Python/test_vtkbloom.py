@@ -97,6 +97,25 @@ class Package(unittest.TestCase):
         self.assertEqual(errors.count, 1)
         self.assertEqual(bloom.GetStrength(), 0.52)  # unchanged by the failed call
 
+    def test_shared_parameters(self):
+        # One vtkBloomParameters, shared by two filters: an edit through either reaches both,
+        # and the old enum names are the parameters' values.
+        first, second = vtkbloom.vtkImageBloom(), vtkbloom.vtkImageBloom()
+        parameters = vtkbloom.vtkBloomParameters()
+        first.SetParameters(parameters)
+        second.SetParameters(first.GetParameters())
+        first.SetStrength(0.25)
+        self.assertEqual(second.GetStrength(), 0.25)
+        self.assertEqual(parameters.GetStrength(), 0.25)
+        self.assertEqual(vtkbloom.vtkImageBloom.LERP, vtkbloom.vtkBloomParameters.LERP)
+        self.assertIn("ping-pong", parameters.GetPresetNamesList())
+        image = image_from_array(np.full((9, 16, 4), 2.0, np.float32))
+        for bloom in (first, second):
+            bloom.SetInputData(image)
+            bloom.Update()
+        np.testing.assert_array_equal(array_from_image(first.GetOutput()),
+                                      array_from_image(second.GetOutput()))
+
     def test_documented_constant(self):
         # PRESETS.md: webgpu-market turns a constant 0.5 into 0.607421875.
         bloom = vtkbloom.vtkImageBloom()
