@@ -57,7 +57,7 @@ void vtkBloomChain::Build(vtkBloomParameters* p, int width, int height)
     Level& level = this->Levels[i];
     level.Size[0] = sizes[i].first;
     level.Size[1] = sizes[i].second;
-    level.Weight = p->GetLevelWeight(static_cast<int>(i));
+    level.Weight = p->GetEffectiveLevelWeight(static_cast<int>(i), height);
     if (i > 0)
     {
       const int* previous = this->Levels[i - 1].Size;

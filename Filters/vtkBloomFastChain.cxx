@@ -301,7 +301,7 @@ void vtkBloomFastChainParameters::Set(
   this->LevelWeights.clear();
   for (size_t i = 0; i < this->LevelSizes.size(); ++i)
   {
-    this->LevelWeights.push_back(bloom->GetLevelWeight(static_cast<int>(i)));
+    this->LevelWeights.push_back(bloom->GetEffectiveLevelWeight(static_cast<int>(i), height));
   }
   this->DownsampleKernel = bloom->GetDownsampleKernel();
   this->KarisAverage = bloom->GetKarisAverage();

@@ -90,14 +90,26 @@ std::vector<double> vtkBloomParameters::GetEffectiveBlurHalfKernel() const
 }
 
 //------------------------------------------------------------------------------
-int vtkBloomParameters::GetEffectiveStartLevel(int height) const
+int vtkBloomParameters::GetLevelShift(int height) const
 {
   if (this->ReferenceHeight <= 0 || height <= 0)
   {
-    return this->StartLevel;
+    return 0;
   }
-  const double deeper = std::round(std::log2(static_cast<double>(height) / this->ReferenceHeight));
-  return static_cast<int>(std::min(std::max(this->StartLevel + deeper, 0.0), 16.0));
+  return static_cast<int>(
+    std::lround(std::log2(static_cast<double>(height) / this->ReferenceHeight)));
+}
+
+//------------------------------------------------------------------------------
+int vtkBloomParameters::GetEffectiveStartLevel(int height) const
+{
+  return std::min(std::max(this->StartLevel + this->GetLevelShift(height), 0), 16);
+}
+
+//------------------------------------------------------------------------------
+int vtkBloomParameters::GetDroppedLevels(int height) const
+{
+  return this->GetEffectiveStartLevel(height) - (this->StartLevel + this->GetLevelShift(height));
 }
 
 //------------------------------------------------------------------------------
@@ -107,9 +119,27 @@ double vtkBloomParameters::GetBlurScale(int height) const
   {
     return 1.0;
   }
-  // What the change of start level leaves of height / ReferenceHeight.
-  const int shift = this->GetEffectiveStartLevel(height) - this->StartLevel;
-  return static_cast<double>(height) / this->ReferenceHeight * std::ldexp(1.0, -shift);
+  // What the shift by whole levels leaves of height / ReferenceHeight: within [0.71, 1.42].
+  return static_cast<double>(height) / this->ReferenceHeight *
+    std::ldexp(1.0, -this->GetLevelShift(height));
+}
+
+//------------------------------------------------------------------------------
+double vtkBloomParameters::GetEffectiveLevelWeight(int level, int height) const
+{
+  const int dropped = this->GetDroppedLevels(height);
+  if (level > 0 || dropped == 0)
+  {
+    return this->GetLevelWeight(level + dropped);
+  }
+  // The first level stands for the finer levels the frame has no room for: their weights
+  // fold into it, so that the weights keep their sum.
+  double sum = 0.0;
+  for (int j = 0; j <= std::min(dropped, this->NumberOfLevels - 1); ++j)
+  {
+    sum += this->GetLevelWeight(j);
+  }
+  return sum;
 }
 
 //------------------------------------------------------------------------------
@@ -223,8 +253,11 @@ std::vector<std::pair<int, int>> vtkBloomParameters::ComputeLevelSizes(int width
   {
     return sizes;
   }
+  // The deepest level keeps its size relative to the frame too, so that a frame too small to
+  // start as deep as the reference drops its finest levels rather than add coarser ones.
   const int start = this->GetEffectiveStartLevel(height);
-  int deepest = start + this->NumberOfLevels - 1;
+  int deepest =
+    std::max(start, this->StartLevel + this->GetLevelShift(height) + this->NumberOfLevels - 1);
   if (this->LimitLevelsToImageSize)
   {
     // A full mip chain has floor(log2(max(W, H))) + 1 levels, counting level 0.
@@ -249,7 +282,7 @@ std::vector<std::pair<int, int>> vtkBloomParameters::ComputeLevelSizes(int width
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomParameters::IsBloomDisabled(int colours, size_t levels) const
+bool vtkBloomParameters::IsBloomDisabled(int colours, size_t levels, int height) const
 {
   double tint[3] = { this->Tint[0], this->Tint[1], this->Tint[2] };
   if (colours == 1)
@@ -265,7 +298,7 @@ bool vtkBloomParameters::IsBloomDisabled(int colours, size_t levels) const
   bool zeroWeights = true;
   for (size_t i = 0; i < levels; ++i)
   {
-    zeroWeights &= this->GetLevelWeight(static_cast<int>(i)) == 0.0;
+    zeroWeights &= this->GetEffectiveLevelWeight(static_cast<int>(i), height) == 0.0;
   }
   return zeroTerm || (levels > 0 && zeroWeights);
 }

@@ -224,16 +224,27 @@ public:
    * The height, in pixels, of the frame the sizes above are meant for. 0: they are pixels of
    * whatever image comes (the presets' seed semantics). Above 0 (the default, 1080): the bloom
    * keeps its size relative to the frame's height, so a frame H pixels tall looks like this
-   * one rescaled. The pyramid starts log2(H / ReferenceHeight) levels deeper (rounded; at
-   * least level 0), and the blur's sigma, radius and tap spacing take the factor that remains
-   * (GetBlurScale). At H = ReferenceHeight nothing changes. PSF mode's sizes (AiryRadius,
+   * one rescaled. The pyramid starts and ends log2(H / ReferenceHeight) levels deeper
+   * (rounded; a frame too small to start above level 0 drops its finest levels instead), and
+   * the blur's sigma, radius and tap spacing take the factor that remains (GetBlurScale). At
+   * H = ReferenceHeight nothing changes. PSF mode's sizes (AiryRadius,
    * the Gaussians, PSFRadius) stay in pixels.
    */
   vtkSetClampMacro(ReferenceHeight, int, 0, 65536);
   vtkGetMacro(ReferenceHeight, int);
-  /// The pyramid level of the bright pass for a frame `height` pixels tall.
+  /// round(log2(height / ReferenceHeight)): how many levels deeper the pyramid starts and ends.
+  int GetLevelShift(int height) const;
+  /// The pyramid level of the bright pass for a frame `height` pixels tall (at least 0).
   int GetEffectiveStartLevel(int height) const;
-  /// The factor on the blur's sizes for a frame `height` pixels tall (1 with no reference).
+  /**
+   * The finest levels of the reference frame's pyramid that a frame `height` pixels tall has
+   * no room for (its pyramid cannot start above level 0). Level i > 0 there weighs
+   * GetLevelWeight(i + GetDroppedLevels(height)); level 0 weighs the sum of the weights of
+   * the levels it stands for, so that the weights keep their sum (GetEffectiveLevelWeight).
+   */
+  int GetDroppedLevels(int height) const;
+  double GetEffectiveLevelWeight(int level, int height) const;
+  /// The factor on the blur's sizes that the shift by whole levels leaves (1 with no reference).
   double GetBlurScale(int height) const;
   /// The blur's half kernel and tap spacing for a frame `height` pixels tall.
   std::vector<double> GetEffectiveBlurHalfKernel(int height) const;
@@ -358,10 +369,11 @@ public:
   std::vector<std::pair<int, int>> ComputeLevelSizes(int width, int height) const;
 
   /**
-   * True when Strength, the tint or the weights of the first `levels` levels make the bloom
-   * term zero. With one colour channel the tint counts by its luminance.
+   * True when Strength, the tint or the weights of the first `levels` levels (of a frame
+   * `height` pixels tall: GetEffectiveLevelWeight) make the bloom term zero. With one colour
+   * channel the tint counts by its luminance.
    */
-  bool IsBloomDisabled(int colours, size_t levels) const;
+  bool IsBloomDisabled(int colours, size_t levels, int height = 0) const;
 
   /**
    * The first reason these parameters cannot be evaluated (a non-finite threshold, strength,

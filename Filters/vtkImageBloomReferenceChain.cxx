@@ -138,7 +138,7 @@ bool vtkImageBloom::ThresholdStep(
   const auto sizes = this->ComputeLevelSizes(width, height);
   if (sizes.empty() ||
     (this->Parameters->GetSkipDisabledEffects() &&
-      this->Parameters->IsBloomDisabled(colours, sizes.size())))
+      this->Parameters->IsBloomDisabled(colours, sizes.size(), height)))
   {
     // No level fits (LimitLevelsToImageSize with a start level beyond the mip chain), or the
     // bloom term is zero: there is nothing to bloom, and the composite sees a black bloom.

@@ -460,7 +460,8 @@ bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
   this->SanitizeOutput = parameters->GetSanitizeNonFinite();
   const size_t n = c.Levels.size();
   if (n == 0 ||
-    (parameters->GetSkipDisabledEffects() && parameters->IsBloomDisabled(3, c.Levels.size())))
+    (parameters->GetSkipDisabledEffects() &&
+      parameters->IsBloomDisabled(3, c.Levels.size(), c.Height)))
   {
     return false;
   }

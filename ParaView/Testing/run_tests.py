@@ -220,6 +220,39 @@ if len(images) == 3:
     check(error < 1e-2 and worst <= 2, 'view against the baseline image: relative L2 %.2e, max %g levels'
           % (error, worst))
 
+# 4b. A screenshot at twice the view's size (the view resized) keeps the look: the bloom term
+# (with bloom minus without) at 960x720, averaged down to 480x360, is near the 480x360 one with
+# the default reference height (1080; both frames are below it, so each folds its finest levels
+# into its first: 6.7 % measured), and far from it with the sizes in pixels (17 %).
+def load_rgb(path):
+    reader = vtkPNGReader()
+    reader.SetFileName(path)
+    reader.Update()
+    w, h, _ = reader.GetOutput().GetDimensions()
+    pixels = vtk_to_numpy(reader.GetOutput().GetPointData().GetScalars()).astype(np.float64)
+    return pixels.reshape(h, w, -1)[..., :3]
+
+
+def scaled_bloom_error(prefix):
+    term = [load_rgb('%s-bloom-%d.png' % (prefix, s)) - load_rgb('%s-plain-%d.png' % (prefix, s))
+            for s in (1, 2)]
+    h, w, c = term[0].shape
+    return relative_l2(term[1].reshape(h, 2, w, 2, c).mean(axis=(1, 3)), term[0])
+
+
+errors = {}
+for reference_height in (1080, 0):
+    prefix = os.path.join(out, 'scale-%d' % reference_height)
+    status, log = pvbatch(1, 'bloom_view_scale.py', prefix, str(reference_height))
+    check(status == 0, 'bloom_view_scale.py, reference height %d (exit %d)'
+          % (reference_height, status))
+    if status == 0:
+        errors[reference_height] = scaled_bloom_error(prefix)
+if len(errors) == 2:
+    check(errors[1080] < 0.1 and errors[0] > 1.5 * errors[1080],
+          'a 2x screenshot keeps the bloom\'s look: relative L2 %.3f (reference height 1080), '
+          '%.3f (pixels)' % (errors[1080], errors[0]))
+
 # 5. HDR under MPI: 3 ranks composite float colour through IceT and bloom as serial does.
 hdr = {}
 for ranks, float_composite, use_bloom in ((1, 1, 1), (3, 1, 1), (3, 0, 1), (1, 1, 0)):

@@ -472,7 +472,20 @@ TEST(FiltersBloomGeneric, ReferenceHeightScalesThePyramidAndTheBlur)
   EXPECT_EQ(p->GetEffectiveStartLevel(540), 0);
   EXPECT_EQ(p->GetBlurScale(4320), 1.0);
   EXPECT_NEAR(p->GetBlurScale(1440), 1440.0 / 1080.0, 1e-15);
-  EXPECT_NEAR(p->GetBlurScale(270), 0.5, 1e-15); // start level 0: the blur shrinks instead
+  EXPECT_NEAR(p->GetBlurScale(270), 1.0, 1e-15);
+  EXPECT_NEAR(p->GetBlurScale(720), 720.0 / 540.0, 1e-15); // one level shallower, then 4/3
+  // 270 rows: two levels shallower than level 1 is above level 0, so the finest level of the
+  // reference is dropped; the deepest level keeps its size (1080 / 2^5 = 270 / 2^3).
+  EXPECT_EQ(p->GetEffectiveStartLevel(270), 0);
+  EXPECT_EQ(p->GetDroppedLevels(270), 1);
+  EXPECT_EQ(p->ComputeLevelSizes(480, 270).size(), 4u);
+  EXPECT_EQ(
+    p->ComputeLevelSizes(480, 270).back().second, p->ComputeLevelSizes(1920, 1080).back().second);
+  p->SetLevelWeights({ 0.5, 2.0 });
+  EXPECT_EQ(p->GetEffectiveLevelWeight(0, 270), 2.5); // the dropped level folds into level 0
+  EXPECT_EQ(p->GetEffectiveLevelWeight(1, 270), 1.0);
+  EXPECT_EQ(p->GetEffectiveLevelWeight(0, 1080), 0.5);
+  p->SetLevelWeights(std::vector<double>());
   EXPECT_EQ(p->ComputeLevelSizes(3840, 2160).front(), std::make_pair(960, 540));
   EXPECT_EQ(p->ComputeLevelSizes(1920, 1080).front(), std::make_pair(960, 540));
   EXPECT_EQ(p->GetEffectiveBlurHalfKernel(2160), p->GetEffectiveBlurHalfKernel());
