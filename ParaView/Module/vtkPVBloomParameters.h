@@ -2,8 +2,9 @@
  * @class   vtkPVBloomParameters
  * @brief   The hand-set parameters of the plugin's Bloom filter and bloom view.
  *
- * The vtkBloomParameters of vtkPVImageBloom's CustomParameters. It adds what ParaView's vector properties need to set the two weight lists
- * element by element: a count, then one call per element with its index.
+ * The vtkBloomParameters of vtkPVImageBloom's CustomParameters. It adds what ParaView's vector
+ * properties need to set the two weight lists element by element: a count, then one call per
+ * element with its index.
  */
 
 #ifndef vtkPVBloomParameters_h

@@ -60,7 +60,8 @@ void vtkPVImageBloom::SetCustomParameters(vtkBloomParameters* parameters)
   {
     this->CustomParameters->RemoveObserver(this->CustomObserver);
   }
-  this->CustomParameters = parameters ? parameters : vtkSmartPointer<vtkBloomParameters>::New().Get();
+  this->CustomParameters =
+    parameters ? parameters : vtkSmartPointer<vtkBloomParameters>::New().Get();
   this->CustomObserver = this->CustomParameters->AddObserver(
     vtkCommand::ModifiedEvent, this, &vtkPVImageBloom::UpdateParameters);
   this->UpdateParameters();
