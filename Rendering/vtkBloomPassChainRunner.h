@@ -479,9 +479,12 @@ private:
    */
   ImageTarget BeginPass(
     vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec, int width, int height);
-  /// Whether the compute program of every draw builds (Compute), made now where it is new.
-  bool ComputeProgramsBuild(
-    const PassSpec& spec, const std::vector<Draw>& draws, unsigned int format);
+  /**
+   * The compute program of every variant (Compute, made now where it is new) into `programs`;
+   * false when one does not build.
+   */
+  bool ComputeProgramsOf(const std::vector<std::string>& variants, bool blend, unsigned int format,
+    std::vector<ComputeProgram*>& programs);
   /// The draws of a width x height pass, cut to its region; counts the samples it computes.
   std::vector<Draw> Draws(const PassSpec& spec, int width, int height);
   PassTextures PassTexturesOf(const PassSpec& spec);

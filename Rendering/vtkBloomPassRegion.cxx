@@ -224,8 +224,7 @@ void vtkBloomPassChainRunner::BeginCostTiming(bool measured)
   {
     return;
   }
-  this->CollectCostTimings();
-  CostSlot& slot = this->CostTimings[this->NextCostSlot];
+  CostSlot& slot = this->CostTimings[this->NextCostSlot]; // collected by Run()
   if (slot.Pending)
   {
     return; // every slot still in flight: this evaluation goes untimed rather than wait
