@@ -4,7 +4,7 @@
 // (Testing/Numerics/TestNumericsHardCases.cxx). Each case asserts a stated property; where the
 // CPU vtkImageBloom is the reference it runs with the same parameters (the pass's own
 // vtkBloomParameters, shared) in REFERENCE mode, the double-precision chain.
-// One file for all of them (about 800 lines), so that the GPU cases sit beside each other as
+// One file for all of them (about 860 lines), so that the GPU cases sit beside each other as
 // the CPU suite's do and share one fixture (GpuBloom); each TEST is independent and short.
 #include "vtkBloomChain.h"
 #include "vtkBloomHardCases.h"

@@ -1,0 +1,34 @@
+// The offscreen window the vtkBloomPass suites render in (TestBloomPass.cxx,
+// TestBloomPassLiveScenes.cxx).
+#ifndef vtkBloomPassTestWindow_h
+#define vtkBloomPassTestWindow_h
+
+#include "vtkBloomPass.h"
+#include "vtkNew.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindow.h"
+#include "vtkRenderer.h"
+
+// An offscreen window with one renderer whose pass is bloom(render steps).
+struct BloomWindow
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkBloomPass> Bloom;
+  vtkNew<vtkRenderStepsPass> Steps;
+
+  BloomWindow(int width, int height)
+  {
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(width, height);
+    this->Window->AddRenderer(this->Renderer);
+    this->Bloom->SetDelegatePass(this->Steps);
+    this->Renderer->SetPass(this->Bloom);
+  }
+  ~BloomWindow() { this->Window->ReleaseGraphicsResources(this->Window); }
+  vtkOpenGLRenderWindow* GL() { return vtkOpenGLRenderWindow::SafeDownCast(this->Window); }
+};
+
+#endif
