@@ -206,6 +206,12 @@ TEST(CommandLine, UsageErrorsExitWithTwo)
   EXPECT_EQ(RunTool("image --threshold abc " + in + " " + out), 2);
   EXPECT_EQ(RunTool("image --knee 2 " + in + " " + out), 2);
   EXPECT_EQ(RunTool("image --levels 0 " + in + " " + out), 2);
+  for (const std::string bad : { "-1", "65537", "tall" })
+  {
+    EXPECT_EQ(RunTool("image --reference-height " + bad + " " + in + " " + out, &errors), 2);
+    EXPECT_NE(errors.find("--reference-height expects an integer in [0, 65536]"), std::string::npos)
+      << errors;
+  }
   EXPECT_EQ(RunTool("image --bogus 1 " + in + " " + out), 2);
   EXPECT_EQ(RunTool("image " + in), 2);
   EXPECT_EQ(RunTool("blur " + in + " " + out, &errors), 2);
