@@ -2,11 +2,15 @@
 
 #include "vtkActor.h"
 #include "vtkBloomPassChainRunner.h"
+#include "vtkBloomPassEmission.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkDataArray.h"
 #include "vtkImageBloom.h"
 #include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkInformationDoubleVectorKey.h"
+#include "vtkInformationObjectBaseKey.h"
 #include "vtkLookupTable.h"
 #include "vtkMapper.h"
 #include "vtkNew.h"
@@ -27,6 +31,42 @@
 #include <vector>
 
 vtkStandardNewMacro(vtkBloomPass);
+vtkInformationKeyMacro(vtkBloomPass, EMITTER_SOURCE, ObjectBase);
+vtkInformationKeyRestrictedMacro(vtkBloomPass, EMITTER_SCALAR_RANGE, DoubleVector, 2);
+
+namespace
+{
+// The table of a scalar-range emitter drawn with vertex colours: `colours` sampled over the
+// range, black outside it. The mapper may still colour by texture, where a value exactly at an
+// end of the table's range samples the edge between the range and the black outside it: the
+// table spans the range widened by a hair, so that both ends themselves glow.
+vtkSmartPointer<vtkLookupTable> vtkBloomPassRangeTable(
+  vtkScalarsToColors* colours, const double range[2])
+{
+  const double hair =
+    1e-6 * std::max({ range[1] - range[0], std::abs(range[0]), std::abs(range[1]), 1e-300 });
+  const double lo = range[0] - hair, hi = range[1] + hair;
+  const int n = 256;
+  auto table = vtkSmartPointer<vtkLookupTable>::New();
+  table->SetNumberOfTableValues(n);
+  table->SetTableRange(lo, hi);
+  // Vectors are mapped as the actor maps them (magnitude or one component).
+  table->SetVectorMode(colours->GetVectorMode());
+  table->SetVectorComponent(colours->GetVectorComponent());
+  for (int i = 0; i < n; ++i)
+  {
+    const double value = lo + (hi - lo) * (i + 0.5) / n;
+    double rgb[3];
+    colours->GetColor(value, rgb);
+    table->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
+  }
+  table->SetUseBelowRangeColor(true);
+  table->SetBelowRangeColor(0.0, 0.0, 0.0, 1.0);
+  table->SetUseAboveRangeColor(true);
+  table->SetAboveRangeColor(0.0, 0.0, 0.0, 1.0);
+  return table;
+}
+}
 
 //------------------------------------------------------------------------------
 // The render-pass side of the internals: the GL resources and the chain runner that draws into
@@ -41,10 +81,23 @@ public:
 
   vtkBloomPassResources Resources;
   vtkBloomPassChainRunner Runner;
+  vtkBloomPassEmission Emission;
 
-  bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples);
+  bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples,
+    vtkBloomPassResources::EmissionTarget emission);
+
+  /// What the delegate renders: the scene, the scene and its emission, or the emitters alone.
+  enum Content
+  {
+    SCENE,
+    SCENE_AND_EMISSION,
+    EMITTERS
+  };
   void RenderDelegate(vtkBloomPass* self, const vtkRenderState* s, vtkBloomPassSceneTarget& target,
-    vtkProp** props, int count, bool emitters);
+    vtkProp** props, int count, Content content);
+  // Clear the target the delegate renders into: its emission to zero, and its colour and depth
+  // as the renderer would (black where the emitters render alone).
+  void ClearTarget(vtkRenderer* r, vtkOpenGLFramebufferObject* fbo, Content content);
 
   // The last evaluation's content-aware figures.
   void Report(vtkBloomPass* self)
@@ -62,8 +115,8 @@ public:
 };
 
 //------------------------------------------------------------------------------
-bool vtkBloomPass::vtkInternals::Prepare(
-  vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples)
+bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w,
+  int h, int samples, vtkBloomPassResources::EmissionTarget emission)
 {
   vtkBloomPassResources& res = this->Resources;
   if (res.Context && res.Context != window)
@@ -87,7 +140,7 @@ bool vtkBloomPass::vtkInternals::Prepare(
   this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
   this->Runner.Profiling = self->ProfilePasses;
   this->Runner.Profile.clear();
-  res.AllocateScene(w, h, self->EmissionSource == EMISSION_EMITTERS, samples);
+  res.AllocateScene(w, h, emission, samples);
   const bool fast = self->Quality == QUALITY_FAST;
   if (res.ChainIsStale(self->Parameters, w, h, fast))
   {
@@ -100,7 +153,7 @@ bool vtkBloomPass::vtkInternals::Prepare(
 
 //------------------------------------------------------------------------------
 void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRenderState* s,
-  vtkBloomPassSceneTarget& target, vtkProp** props, int count, bool emitters)
+  vtkBloomPassSceneTarget& target, vtkProp** props, int count, Content content)
 {
   vtkRenderer* r = s->GetRenderer();
   vtkOpenGLState* state = this->Resources.Context->GetState();
@@ -115,21 +168,67 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
   state->vtkglViewport(0, 0, target.Size[0], target.Size[1]);
   state->vtkglScissor(0, 0, target.Size[0], target.Size[1]);
 
-  // Emitters shine on black: the renderer's background must not bloom with them.
+  // Emitters shine on black: the renderer's background must not bloom with them. With the
+  // emission, the renderer's clear must not reach the emission attachment: the pass clears
+  // and the renderer does not.
   double background[3], background2[3];
   r->GetBackground(background);
   r->GetBackground2(background2);
   const double backgroundAlpha = r->GetBackgroundAlpha();
   const bool gradient = r->GetGradientBackground();
   const bool textured = r->GetTexturedBackground();
-  if (emitters)
+  const vtkTypeBool erase = r->GetErase();
+  if (content == EMITTERS)
   {
     r->SetBackground(0.0, 0.0, 0.0);
     r->SetBackgroundAlpha(0.0);
     r->SetGradientBackground(false);
     r->SetTexturedBackground(false);
   }
-  if (r->Transparent() || emitters)
+  this->ClearTarget(r, fbo, content);
+  if (content == SCENE_AND_EMISSION)
+  {
+    r->SetErase(false);
+    fbo->ActivateDrawBuffers(2);
+  }
+  state->vtkglEnable(GL_DEPTH_TEST);
+  const bool emission = content != SCENE;
+  this->Emission.EmittersAlone = content == EMITTERS;
+  if (emission)
+  {
+    self->PreRender(&s2); // the emission's shader replacement
+  }
+  self->DelegatePass->Render(&s2);
+  if (emission)
+  {
+    self->PostRender(&s2);
+  }
+  fbo->ActivateDrawBuffer(0);
+  if (this->Resources.Samples)
+  {
+    multisample.Resolve(this->Resources.Context, target);
+  }
+  if (content != EMITTERS)
+  {
+    self->NumberOfRenderedProps += self->DelegatePass->GetNumberOfRenderedProps();
+  }
+  r->SetErase(erase);
+  if (content == EMITTERS)
+  {
+    r->SetBackground(background);
+    r->SetBackground2(background2);
+    r->SetBackgroundAlpha(backgroundAlpha);
+    r->SetGradientBackground(gradient);
+    r->SetTexturedBackground(textured);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::vtkInternals::ClearTarget(
+  vtkRenderer* r, vtkOpenGLFramebufferObject* fbo, Content content)
+{
+  vtkOpenGLState* state = this->Resources.Context->GetState();
+  if (r->Transparent() || content == EMITTERS)
   {
     // The camera pass does not clear layered renderers; an offscreen target must start empty.
     state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
@@ -137,23 +236,17 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
     state->vtkglDepthMask(GL_TRUE);
     state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   }
-  state->vtkglEnable(GL_DEPTH_TEST);
-  self->DelegatePass->Render(&s2);
-  if (this->Resources.Samples)
+  else if (content == SCENE_AND_EMISSION && r->GetErase() && r->GetRenderWindow()->GetErase())
   {
-    multisample.Resolve(this->Resources.Context, target);
+    r->Clear(); // the background, gradient or textured included, into the colour only
   }
-  if (!emitters)
+  if (content == SCENE_AND_EMISSION)
   {
-    self->NumberOfRenderedProps += self->DelegatePass->GetNumberOfRenderedProps();
-  }
-  else
-  {
-    r->SetBackground(background);
-    r->SetBackground2(background2);
-    r->SetBackgroundAlpha(backgroundAlpha);
-    r->SetGradientBackground(gradient);
-    r->SetTexturedBackground(textured);
+    fbo->ActivateDrawBuffers(2);
+    const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glClearBufferfv(GL_COLOR, 1, zero);
+    fbo->ActivateDrawBuffer(0);
   }
 }
 
@@ -255,32 +348,6 @@ vtkSmartPointer<vtkActor> vtkBloomPass::CreateScalarRangeEmitter(
   {
     return nullptr;
   }
-  // Sample the actor's colours over the range; everything outside maps to black. The mapper
-  // may colour by texture (InterpolateScalarsBeforeMapping), where a value exactly at an end
-  // of the table's range samples the edge between the range and the black outside it: the
-  // table spans the range widened by a hair, so that both ends themselves glow.
-  const double hair =
-    1e-6 * std::max({ range[1] - range[0], std::abs(range[0]), std::abs(range[1]), 1e-300 });
-  const double lo = range[0] - hair, hi = range[1] + hair;
-  const int n = 256;
-  vtkNew<vtkLookupTable> table;
-  table->SetNumberOfTableValues(n);
-  table->SetTableRange(lo, hi);
-  // Vectors are mapped as the actor maps them (magnitude or one component).
-  table->SetVectorMode(colours->GetVectorMode());
-  table->SetVectorComponent(colours->GetVectorComponent());
-  for (int i = 0; i < n; ++i)
-  {
-    const double value = lo + (hi - lo) * (i + 0.5) / n;
-    double rgb[3];
-    colours->GetColor(value, rgb);
-    table->SetTableValue(i, rgb[0], rgb[1], rgb[2], 1.0);
-  }
-  table->SetUseBelowRangeColor(true);
-  table->SetBelowRangeColor(0.0, 0.0, 0.0, 1.0);
-  table->SetUseAboveRangeColor(true);
-  table->SetAboveRangeColor(0.0, 0.0, 0.0, 1.0);
-
   vtkSmartPointer<vtkMapper> copy;
   copy.TakeReference(mapper->NewInstance());
   // Not ShallowCopy: the OpenGL mapper's copies its deprecated shader-code members too.
@@ -300,12 +367,32 @@ vtkSmartPointer<vtkActor> vtkBloomPass::CreateScalarRangeEmitter(
   copy->SetArrayComponent(mapper->GetArrayComponent());
   copy->SetColorMode(mapper->GetColorMode());
   copy->SetInterpolateScalarsBeforeMapping(mapper->GetInterpolateScalarsBeforeMapping());
-  copy->SetLookupTable(table);
-  copy->SetScalarRange(lo, hi);
 
   auto emitter = vtkSmartPointer<vtkActor>::New();
   emitter->ShallowCopy(actor);
   emitter->SetMapper(copy);
+  const bool textured = mapper->GetInterpolateScalarsBeforeMapping() &&
+    mapper->GetScalarVisibility() && !colours->UsingLogScale();
+  if (textured)
+  {
+    // The actor's own colours through the same texture coordinates; the range is tested per
+    // fragment (vtkBloomPassEmission), so the pass can write it in the actor's own render.
+    vtkSmartPointer<vtkScalarsToColors> table;
+    table.TakeReference(colours->NewInstance());
+    table->DeepCopy(colours);
+    copy->SetLookupTable(table);
+    copy->SetScalarRange(mapper->GetScalarRange());
+    copy->SetUseLookupTableScalarRange(mapper->GetUseLookupTableScalarRange());
+    vtkNew<vtkInformation> keys;
+    keys->Set(vtkBloomPass::EMITTER_SOURCE(), actor);
+    keys->Set(vtkBloomPass::EMITTER_SCALAR_RANGE(), range, 2);
+    emitter->SetPropertyKeys(keys);
+  }
+  else
+  {
+    copy->SetLookupTable(vtkBloomPassRangeTable(colours, range));
+    copy->SetScalarRange(copy->GetLookupTable()->GetRange());
+  }
   return emitter;
 }
 
@@ -341,7 +428,16 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // scene renders with as many.
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
-  if (!in.Prepare(this, window, w, h, samples))
+  // Selective bloom: in the scene's own render where it can be, else the emitters again.
+  const bool selective = this->EmissionSource == EMISSION_EMITTERS;
+  const bool inScene = selective &&
+    in.Emission.Plan(this->Emitters, s->GetPropArray(), s->GetPropArrayCount(), this->DelegatePass,
+      this->EmitInSceneRender);
+  this->LastEmissionInSceneRender = inScene;
+  const auto target = !selective ? vtkBloomPassResources::NO_EMISSION
+    : inScene                    ? vtkBloomPassResources::EMISSION_ATTACHMENT
+                                 : vtkBloomPassResources::EMITTER_TARGET;
+  if (!in.Prepare(this, window, w, h, samples, target))
   {
     return;
   }
@@ -351,7 +447,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     res.Result.Allocate(window, w, h, GL_RGBA32F);
   }
 
-  // 1. The scene, and the emitters on their own, in float.
+  // 1. The scene (and, in one render, its emission), then any emitters on their own, in float.
   state->PushFramebufferBindings();
   // The delegate writes the float colour and a 32-bit depth once (the profile's lower bound).
   const double sceneBytes = (res.Format == GL_RGBA32F ? 20.0 : 12.0) * w * h;
@@ -359,31 +455,22 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   {
     in.Runner.BeginProfiledSpan();
   }
-  in.RenderDelegate(this, s, res.Scene, s->GetPropArray(), s->GetPropArrayCount(), false);
+  in.RenderDelegate(this, s, res.Scene, s->GetPropArray(), s->GetPropArrayCount(),
+    inScene ? vtkInternals::SCENE_AND_EMISSION : vtkInternals::SCENE);
   this->SceneRendered(s, res.Scene.Color);
   if (this->ProfilePasses)
   {
     in.Runner.EndProfiledSpan("scene", w, h, sceneBytes);
   }
-  const bool selective = this->EmissionSource == EMISSION_EMITTERS;
-  if (selective)
+  if (selective && !inScene)
   {
-    std::vector<vtkProp*> emitters;
-    vtkCollectionSimpleIterator it;
-    this->Emitters->InitTraversal(it);
-    while (vtkProp* prop = this->Emitters->GetNextProp(it))
-    {
-      if (prop->GetVisibility())
-      {
-        emitters.push_back(prop);
-      }
-    }
+    std::vector<vtkProp*>& emitters = in.Emission.SecondRender;
     if (this->ProfilePasses)
     {
       in.Runner.BeginProfiledSpan();
     }
-    in.RenderDelegate(
-      this, s, res.Emitter, emitters.data(), static_cast<int>(emitters.size()), true);
+    in.RenderDelegate(this, s, res.Emitter, emitters.data(), static_cast<int>(emitters.size()),
+      vtkInternals::EMITTERS);
     if (this->ProfilePasses)
     {
       in.Runner.EndProfiledSpan("emitters", w, h, sceneBytes);
@@ -393,7 +480,10 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // 2. The chain, then 3. the composite into the framebuffer the pass was called with.
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  const bool bloom = in.Runner.Run(selective ? res.Emitter.Color : res.Scene.Color, selective);
+  vtkTextureObject* source = !selective ? res.Scene.Color
+    : inScene                           ? res.Scene.Emission
+                                        : res.Emitter.Color;
+  const bool bloom = in.Runner.Run(source, selective && !inScene);
   this->LastBloomSkipped = !bloom;
   const int zero[2] = { 0, 0 };
   const int origin[2] = { x, y };
@@ -419,6 +509,35 @@ void vtkBloomPass::Render(const vtkRenderState* s)
 
 //------------------------------------------------------------------------------
 void vtkBloomPass::SceneRendered(const vtkRenderState*, vtkTextureObject*) {}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPass::PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  this->Superclass::PreReplaceShaderValues(
+    vertexShader, geometryShader, fragmentShader, mapper, prop);
+  vtkBloomPassEmission::PreReplace(fragmentShader, mapper);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPass::PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+  std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop)
+{
+  this->Superclass::PostReplaceShaderValues(
+    vertexShader, geometryShader, fragmentShader, mapper, prop);
+  vtkBloomPassEmission::PostReplace(fragmentShader, mapper);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper,
+  vtkProp* prop, vtkOpenGLVertexArrayObject* VAO)
+{
+  this->Superclass::SetShaderParameters(program, mapper, prop, VAO);
+  this->Internals->Emission.SetUniforms(program, mapper, prop);
+  return true;
+}
 
 //------------------------------------------------------------------------------
 double vtkBloomPass::GetRegionCost() const
@@ -475,7 +594,7 @@ bool vtkBloomPass::ApplyToImage(
   const vtkBloomPassSavedState saved(state);
   vtkInternals& in = *this->Internals;
   vtkBloomPassResources& res = in.Resources;
-  if (!in.Prepare(this, window, w, h, 0))
+  if (!in.Prepare(this, window, w, h, 0, vtkBloomPassResources::NO_EMISSION))
   {
     return false;
   }
@@ -534,6 +653,22 @@ bool vtkBloomPass::ReadSceneImage(vtkImageData* image)
     return false;
   }
   return res.Scene.Read(res.Context, image);
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPass::ReadEmissionImage(vtkImageData* image)
+{
+  vtkBloomPassResources& res = this->Internals->Resources;
+  if (!image || !res.Context || !(res.Scene.Emission || res.Emitter.FBO))
+  {
+    vtkErrorMacro(<< "There is no emission to read; render with EMISSION_EMITTERS first.");
+    return false;
+  }
+  if (res.Emitter.FBO)
+  {
+    return res.Emitter.Read(res.Context, image);
+  }
+  return res.Scene.Read(res.Context, image, 1); // the scene target's second attachment
 }
 
 //------------------------------------------------------------------------------
@@ -600,6 +735,9 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
      << "EmissionSource: " << (this->EmissionSource == EMISSION_EMITTERS ? "Emitters" : "Scene")
      << "\n";
   os << indent << "Emitters: " << this->Emitters->GetNumberOfItems() << "\n";
+  os << indent << "EmitInSceneRender: " << (this->EmitInSceneRender ? "On" : "Off") << "\n";
+  os << indent << "LastEmissionInSceneRender: " << (this->LastEmissionInSceneRender ? "On" : "Off")
+     << "\n";
   os << indent << "Quality: " << (this->Quality == QUALITY_FAST ? "Fast" : "Exact") << "\n";
   os << indent << "UseComputeShaders: " << (this->UseComputeShaders ? "On" : "Off") << "\n";
   os << indent

@@ -35,12 +35,20 @@
  * alpha.
  *
  * Selective bloom. By default every pixel of the scene can bloom (EMISSION_SCENE). With
- * SetEmissionSourceToEmitters() only the props given with AddEmitter() bloom: they are rendered
- * a second time, alone, into an emission buffer, and a sample counts only where the emitter is
- * the visible surface (its depth is not behind the scene's), so occluded emitters do not shine
- * through. An emitter need not be in the renderer: a copy of an actor with a lookup table that
- * is black outside a scalar range (CreateScalarRangeEmitter) makes only that range glow, for
- * example the hot spots of a temperature field.
+ * SetEmissionSourceToEmitters() only the props given with AddEmitter() bloom, and occluded
+ * emitters do not shine through. Where it can, the pass writes the emission in the scene's own
+ * render: its shader replacement (vtkOpenGLRenderPass's, as vtkSSAOPass writes its extra
+ * attachments) makes every polydata mapper's fragment shader write a second output, the
+ * fragment's colour for an emitter and zero for any other prop, into a second colour
+ * attachment. A copy of an actor made by CreateScalarRangeEmitter makes only a scalar range of
+ * that actor glow, for example the hot spots of a temperature field; where the actor colours
+ * through a texture (InterpolateScalarsBeforeMapping), the emission is the actor's own colour
+ * where its interpolated scalar lies in the range, in the same render. Where a prop of the
+ * scene cannot write the second output (2D actors, volumes, translucent geometry, glyph
+ * mappers), or an emitter is not drawn by the scene, or EmitInSceneRender is off, the emitters
+ * are rendered a second time, alone, into an emission buffer, and a sample counts only where
+ * the emitter is the visible surface (its depth is not behind the scene's). Both ways give the
+ * same image to float rounding (tested); GetLastEmissionInSceneRender() says which ran.
  *
  * Chain it before vtkToneMappingPass (tone mapping's delegate is this pass) to bloom in linear
  * HDR and tone-map afterwards. Resources are made on first use and remade when the viewport
@@ -95,6 +103,8 @@
 class vtkActor;
 class vtkImageData;
 class vtkImageBloom;
+class vtkInformationDoubleVectorKey;
+class vtkInformationObjectBaseKey;
 class vtkOpenGLRenderWindow;
 class vtkProp;
 class vtkPropCollection;
@@ -217,11 +227,51 @@ public:
    * A new actor that draws `actor`'s geometry with its colours only where the mapped scalar
    * lies in [range[0], range[1]] (both ends included), and black elsewhere: use it as an
    * emitter to make a scalar range glow. It shares the mapper's input and the actor's transform
-   * and property; the lookup table samples the actor's own table over the range and maps
-   * vectors as it does (magnitude or component). Returns null when the actor has no mapper
-   * with a lookup table.
+   * and property, and maps vectors as the actor does (magnitude or component).
+   * - Where the actor colours through a texture (InterpolateScalarsBeforeMapping on, a linear
+   *   table), the emitter has a copy of the actor's table, and the range is tested per
+   *   fragment on the interpolated scalar. It records the actor and the range
+   *   (EMITTER_SOURCE, EMITTER_SCALAR_RANGE): while the actor is in the scene, the pass
+   *   writes the range's emission in the actor's own render and does not render the emitter.
+   * - Otherwise its table samples the actor's own table over the range, black outside it, and
+   *   it is rendered a second time.
+   * Returns null when the actor has no mapper with a lookup table or the range is not ordered.
    */
   static vtkSmartPointer<vtkActor> CreateScalarRangeEmitter(vtkActor* actor, const double range[2]);
+
+  ///@{
+  /**
+   * What CreateScalarRangeEmitter records in a texture-coloured emitter's property keys: the
+   * actor it was made from and the scalar range. Where that actor is in the scene, its own
+   * render writes the range's emission and the emitter is not rendered.
+   */
+  static vtkInformationObjectBaseKey* EMITTER_SOURCE();
+  static vtkInformationDoubleVectorKey* EMITTER_SCALAR_RANGE();
+  ///@}
+
+  ///@{
+  /**
+   * With EMISSION_EMITTERS, write the emission in the scene's own render where the scene
+   * allows it (see the class comment; default on). Off, the emitters are always rendered a
+   * second time, alone.
+   */
+  vtkSetMacro(EmitInSceneRender, bool);
+  vtkGetMacro(EmitInSceneRender, bool);
+  vtkBooleanMacro(EmitInSceneRender, bool);
+  ///@}
+
+  /// Whether the last render with EMISSION_EMITTERS wrote the emission in the scene's render.
+  vtkGetMacro(LastEmissionInSceneRender, bool);
+
+  ///@{
+  /// The shader replacement that writes the emission (vtkOpenGLRenderPass's API).
+  bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool PostReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
+    std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
+  bool SetShaderParameters(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop,
+    vtkOpenGLVertexArrayObject* VAO = nullptr) override;
+  ///@}
 
   ///@{
   /**
@@ -241,6 +291,14 @@ public:
    */
   bool ReadSceneImage(vtkImageData* image);
   bool ReadResultImage(vtkImageData* image);
+
+  /**
+   * Read back, as float RGBA, the emission of the last render with EMISSION_EMITTERS: what
+   * the scene's render wrote into its second attachment, or the emitters' own render (where
+   * their occluded parts are masked later, in the bright pass). Return false, with an error,
+   * when the last render was not selective.
+   */
+  bool ReadEmissionImage(vtkImageData* image);
   ///@}
 
   /**
@@ -349,6 +407,8 @@ protected:
   vtkPropCollection* Emitters;
   int FloatPrecision;
   int EmissionSource;
+  bool EmitInSceneRender = true;
+  bool LastEmissionInSceneRender = false;
   int Quality;
   bool UseComputeShaders;
   bool SimulateComputeShaderFailure = false;

@@ -1,0 +1,95 @@
+/**
+ * @file   vtkBloomPassEmission.h
+ * @brief  (private to vtkBloomPass) selective bloom: what each prop emits, and where the
+ *         emission is written.
+ *
+ * With vtkBloomPass::EMISSION_EMITTERS only the emitter props bloom. Where it can, the pass
+ * writes their emission in the scene's own render: the pass joins the render passes of every
+ * prop (vtkOpenGLRenderPass::PreRender), and its shader replacement makes each polydata
+ * mapper's fragment shader write a second output, the fragment's final colour for an emitter
+ * and zero for any other prop, into a second colour attachment of the scene's target. The
+ * depth test that decides the scene's visible surface decides the emission's, so an occluded
+ * emitter stays dark; there is no second render and no depth comparison.
+ *
+ * An emitter made by vtkBloomPass::CreateScalarRangeEmitter from a texture-coloured actor
+ * (InterpolateScalarsBeforeMapping on, a linear lookup table) names its source actor and its
+ * range (the keys EMITTER_SOURCE and EMITTER_SCALAR_RANGE): its emission is the source's own
+ * fragment colour where the interpolated scalar lies in the range, tested on the colour
+ * texture coordinate, and zero elsewhere.
+ *
+ * Where the emission cannot be written in the scene's render, the emitters are rendered a
+ * second time, alone, as before (vtkBloomPass's class comment): when a visible prop is not an
+ * opaque vtkActor drawn by a vtkOpenGLPolyDataMapper (its shader would not write the second
+ * output: 2D actors, volumes, translucent geometry, glyph mappers), when an emitter is neither
+ * in the scene nor made from an actor that is, when the delegate is not a vtkRenderStepsPass or
+ * vtkCameraPass, or when vtkBloomPass::EmitInSceneRender is off. The emitters' own render uses
+ * the same shader code, with the masked colour as their colour, so both paths give the same
+ * image to float rounding (tested).
+ */
+
+#ifndef vtkBloomPassEmission_h
+#define vtkBloomPassEmission_h
+
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+class vtkAbstractMapper;
+class vtkProp;
+class vtkPropCollection;
+class vtkRenderPass;
+class vtkShaderProgram;
+
+class vtkBloomPassEmission
+{
+public:
+  /// What a prop emits; the values are the shader's `bloomEmission`.
+  enum Kind
+  {
+    NONE = 0,  ///< nothing: a prop of the scene that is not an emitter
+    WHOLE = 1, ///< its whole colour: an emitter prop
+    RANGE = 2  ///< its colour where the scalar lies in a range: a scalar-range emitter's source
+  };
+
+  /**
+   * Plan a frame: which of `props` (the scene's) emit and how, and which emitters must be
+   * rendered again. Returns true when the emission can be written in the scene's own render
+   * (`inScene`, vtkBloomPass::EmitInSceneRender, allows it).
+   */
+  bool Plan(
+    vtkPropCollection* emitters, vtkProp** props, int count, vtkRenderPass* delegate, bool inScene);
+
+  /// The last plan: emission in the scene's render, else SecondRender holds the emitters.
+  bool InSceneRender = false;
+  std::vector<vtkProp*> SecondRender;
+
+  /**
+   * Whether the shaders now render the emitters alone (their masked colour replaces their
+   * colour) rather than the scene (the emission goes to the second output).
+   */
+  bool EmittersAlone = false;
+
+  ///@{
+  /// The shader replacement, the same for every prop (what differs is a uniform).
+  static void PreReplace(std::string& fragmentShader, vtkAbstractMapper* mapper);
+  static void PostReplace(std::string& fragmentShader, vtkAbstractMapper* mapper);
+  ///@}
+
+  /// Set the uniforms of `prop`'s draw.
+  void SetUniforms(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop) const;
+
+private:
+  struct Emission
+  {
+    Kind What = NONE;
+    double Range[2] = { 0.0, 0.0 }; // the scalar range, RANGE only
+  };
+  std::unordered_map<vtkProp*, Emission> Props;
+
+  // The colour texture coordinates' [lower, upper] bounds of a RANGE emission drawn by
+  // `mapper`.
+  static void TextureRange(vtkAbstractMapper* mapper, const double range[2], float bounds[2]);
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkBloomPassEmission.h
