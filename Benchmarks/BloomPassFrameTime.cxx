@@ -15,6 +15,7 @@
 //   BloomPassFrameTime --sparse WIDTH HEIGHT FRAMES [fast]
 //   BloomPassFrameTime --sync SCENE WIDTH HEIGHT FRAMES
 //   BloomPassFrameTime --orbit SCENE WIDTH HEIGHT FRAMES
+//   BloomPassFrameTime --selective SCENE WIDTH HEIGHT FRAMES
 //
 // SCENE is a name of vtkBloomExampleSceneNames() or "all" (default lit-spheres); PRESET is
 // "scene" (the scene's own parameters, the default), "default" (vtkBloomParameters' defaults),
@@ -36,6 +37,11 @@
 //
 // --orbit: stutter. The bloom's own GPU time, frame by frame, over FRAMES frames of an orbiting
 // camera: median, mean, p99, maximum, and the frames above 1.5 x the median.
+//
+// --selective: on a scene whose emitters alone bloom (scalar-field), the bloom of the whole
+// scene against the emitters' bloom written in the scene's own render and in a second render
+// of the emitters (vtkBloomPass::EmitInSceneRender off), each interleaved with the whole-scene
+// bloom frame by frame: means, the selective frames' p99, and each over the whole scene's.
 //
 // --sync: the cost of the pass's one wait for the GPU (the bright region's read-back, or
 // SkipEmptyBloom's occlusion query): vtkImageBloom's defaults with the content-aware chain, with
@@ -451,8 +457,59 @@ bool OrbitTable(const std::string& scene, int width, int height, int frames)
 }
 }
 
+// Selective bloom's cost over the whole scene's on `scene`, with the emission in the scene's
+// render and in a second render; false for an unknown scene or one without emitters.
+bool SelectiveTable(const std::string& scene, int width, int height, int frames)
+{
+  vtkBloomFrameTimer timer;
+  if (!SetUp(timer, scene, "scene", width, height) ||
+    timer.Bloom->GetEmissionSource() != vtkBloomPass::EMISSION_EMITTERS)
+  {
+    std::fprintf(stderr, "scene %s has no emitters\n", scene.c_str());
+    return false;
+  }
+  // The alternative pass shares the parameters and blooms the whole scene.
+  timer.Alternative->SetEmissionSourceToScene();
+  std::printf("GPU time per frame (GL_TIME_ELAPSED), ms, %s at %dx%d; %d frames of each kind, "
+              "interleaved with the whole-scene bloom\n"
+              "| selective bloom | renders | plain, mean | whole-scene bloom, mean | selective: "
+              "median | mean | p99 | max | selective over whole scene, mean |\n"
+              "|---|---|---|---|---|---|---|---|---|\n",
+    scene.c_str(), width, height, frames);
+  for (const bool inScene : { true, false })
+  {
+    timer.Bloom->SetEmitInSceneRender(inScene);
+    const vtkBloomFrameTimer::Kind kinds[] = { vtkBloomFrameTimer::PLAIN,
+      vtkBloomFrameTimer::ALTERNATIVE, vtkBloomFrameTimer::BLOOM };
+    std::vector<double> gpu[3];
+    for (int f = -2; f < frames; ++f)
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        timer.Frame(kinds[k]);
+        if (f >= 0)
+        {
+          gpu[k].push_back(1e3 * timer.LastGPUSeconds);
+        }
+      }
+    }
+    const vtkBloomFrameStatistics plain(gpu[0]), whole(gpu[1]), selective(gpu[2]);
+    std::printf("| %s | %d | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %+.3f |\n",
+      inScene ? "in the scene's render" : "emitters rendered again",
+      timer.Bloom->GetLastEmissionInSceneRender() ? 1 : 2, plain.Mean, whole.Mean, selective.Median,
+      selective.Mean, selective.P99, selective.Max, selective.Mean - whole.Mean);
+  }
+  std::fflush(stdout);
+  return true;
+}
+
 int main(int argc, char* argv[])
 {
+  if (argc > 5 && std::strcmp(argv[1], "--selective") == 0)
+  {
+    return SelectiveTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0
+                                                                                               : 1;
+  }
   if (argc > 5 && std::strcmp(argv[1], "--orbit") == 0)
   {
     return OrbitTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0 : 1;

@@ -25,13 +25,16 @@
 #   sync.md          the cost of the pass's one wait for the GPU (BloomPassFrameTime --sync)
 #   orbit.md         stutter: the bloom's own GPU time, frame by frame, over 1000
 #                    frames of an orbiting camera at 3840x2160 (BloomPassFrameTime --orbit)
+#   selective.md     selective bloom (scalar-field) against the whole scene's, the emission in
+#                    the scene's render and in a second render, at 1920x1080 and 3840x2160
+#                    (BloomPassFrameTime --selective), 4 x $FRAMES frames of each kind
 #   stages.md        ShaderStageThroughput: one full-screen pass as a fragment and as a compute
 #                    shader at 3840x2160
 #   render.png       `vtk-bloom render` of lit-spheres at 3840x2160
 #   run.log          everything printed
 #
-# STEPS (default "tests frametime profile quality sparse sync orbit stages render") picks the
-# steps. At most 8 files come back from the device tool: pick fewer steps there.
+# STEPS (default "tests frametime profile quality sparse sync orbit selective stages render")
+# picks the steps. At most 8 files come back from the device tool: pick fewer steps there.
 # The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
 # CUDA image) and the pack at the absolute paths it was built with.
 set -uo pipefail
@@ -39,7 +42,7 @@ cd "${VTKBLOOM_GPU_ROOT:-$PWD}" || exit 1
 OUT=${OUT:-$(mktemp -d)}
 mkdir -p "$OUT"
 FRAMES=${FRAMES:-50}
-STEPS=${STEPS:-tests frametime profile quality sparse sync orbit stages render}
+STEPS=${STEPS:-tests frametime profile quality sparse sync orbit selective stages render}
 PRESETS=${PRESETS:-all}
 step() { [[ " $STEPS " == *" $1 "* ]]; }
 exec > >(tee "$OUT/run.log") 2>&1
@@ -144,6 +147,17 @@ echo "== stutter over an orbiting camera"
     echo
   done
 } | tee "$OUT/orbit.md"
+fi
+
+if step selective; then
+echo "== selective bloom in one render"
+{
+  for size in "1920 1080" "3840 2160"; do
+    # shellcheck disable=SC2086
+    timeout 200 "$bin/BloomPassFrameTime" --selective scalar-field $size "$((4 * FRAMES))"
+    echo
+  done
+} | tee "$OUT/selective.md"
 fi
 
 if step stages; then
