@@ -221,7 +221,7 @@ TEST(RenderingBloomPassSelective, FallsBackToASecondRenderWhereItMust)
     overlay->SetMapper(squareMapper);
     if (obstacle == 0)
     {
-      w.Renderer->AddActor2D(overlay);
+      w.Renderer->AddViewProp(overlay);
     }
     else
     {
