@@ -36,6 +36,23 @@ vtkInformationKeyRestrictedMacro(vtkBloomPass, EMITTER_SCALAR_RANGE, DoubleVecto
 
 namespace
 {
+// A scene read back from a render that wrote its emission in the alpha (an emitting fragment
+// has alpha 1 + weight, vtkBloomPassEmission): the scene, with its alpha at most 1, or
+// (`emission`) the emission, the colour times the weight.
+void vtkBloomPassDecodeEmission(vtkImageData* image, bool emission)
+{
+  float* rgba = static_cast<float*>(image->GetScalarPointer());
+  for (vtkIdType p = 0; p < image->GetNumberOfPoints(); ++p, rgba += 4)
+  {
+    const float weight = std::min(std::max(rgba[3] - 1.0f, 0.0f), 1.0f);
+    for (int c = 0; emission && c < 3; ++c)
+    {
+      rgba[c] *= weight;
+    }
+    rgba[3] = emission ? weight : std::min(rgba[3], 1.0f);
+  }
+}
+
 // The table of a scalar-range emitter drawn with vertex colours: `colours` sampled over the
 // range, black outside it. The mapper may still colour by texture, where a value exactly at an
 // end of the table's range samples the edge between the range and the black outside it: the
@@ -83,8 +100,8 @@ public:
   vtkBloomPassChainRunner Runner;
   vtkBloomPassEmission Emission;
 
-  bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples,
-    vtkBloomPassResources::EmissionTarget emission);
+  bool Prepare(
+    vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples, bool emitters);
 
   /// What the delegate renders: the scene, the scene and its emission, or the emitters alone.
   enum Content
@@ -95,9 +112,6 @@ public:
   };
   void RenderDelegate(vtkBloomPass* self, const vtkRenderState* s, vtkBloomPassSceneTarget& target,
     vtkProp** props, int count, Content content);
-  // Clear the target the delegate renders into: its emission to zero, and its colour and depth
-  // as the renderer would (black where the emitters render alone).
-  void ClearTarget(vtkRenderer* r, vtkOpenGLFramebufferObject* fbo, Content content);
 
   // The last evaluation's content-aware figures.
   void Report(vtkBloomPass* self)
@@ -115,8 +129,8 @@ public:
 };
 
 //------------------------------------------------------------------------------
-bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w,
-  int h, int samples, vtkBloomPassResources::EmissionTarget emission)
+bool vtkBloomPass::vtkInternals::Prepare(
+  vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples, bool emitters)
 {
   vtkBloomPassResources& res = this->Resources;
   if (res.Context && res.Context != window)
@@ -140,7 +154,8 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
   this->Runner.Profiling = self->ProfilePasses;
   this->Runner.Profile.clear();
-  res.AllocateScene(w, h, emission, samples);
+  this->Runner.EmissionInAlpha = false;
+  res.AllocateScene(w, h, emitters, samples);
   const bool fast = self->Quality == QUALITY_FAST;
   if (res.ChainIsStale(self->Parameters, w, h, fast))
   {
@@ -168,16 +183,13 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
   state->vtkglViewport(0, 0, target.Size[0], target.Size[1]);
   state->vtkglScissor(0, 0, target.Size[0], target.Size[1]);
 
-  // Emitters shine on black: the renderer's background must not bloom with them. With the
-  // emission, the renderer's clear must not reach the emission attachment: the pass clears
-  // and the renderer does not.
+  // Emitters shine on black: the renderer's background must not bloom with them.
   double background[3], background2[3];
   r->GetBackground(background);
   r->GetBackground2(background2);
   const double backgroundAlpha = r->GetBackgroundAlpha();
   const bool gradient = r->GetGradientBackground();
   const bool textured = r->GetTexturedBackground();
-  const vtkTypeBool erase = r->GetErase();
   if (content == EMITTERS)
   {
     r->SetBackground(0.0, 0.0, 0.0);
@@ -185,49 +197,6 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
     r->SetGradientBackground(false);
     r->SetTexturedBackground(false);
   }
-  this->ClearTarget(r, fbo, content);
-  if (content == SCENE_AND_EMISSION)
-  {
-    r->SetErase(false);
-    fbo->ActivateDrawBuffers(2);
-  }
-  state->vtkglEnable(GL_DEPTH_TEST);
-  const bool emission = content != SCENE;
-  this->Emission.EmittersAlone = content == EMITTERS;
-  if (emission)
-  {
-    self->PreRender(&s2); // the emission's shader replacement
-  }
-  self->DelegatePass->Render(&s2);
-  if (emission)
-  {
-    self->PostRender(&s2);
-  }
-  fbo->ActivateDrawBuffer(0);
-  if (this->Resources.Samples)
-  {
-    multisample.Resolve(this->Resources.Context, target);
-  }
-  if (content != EMITTERS)
-  {
-    self->NumberOfRenderedProps += self->DelegatePass->GetNumberOfRenderedProps();
-  }
-  r->SetErase(erase);
-  if (content == EMITTERS)
-  {
-    r->SetBackground(background);
-    r->SetBackground2(background2);
-    r->SetBackgroundAlpha(backgroundAlpha);
-    r->SetGradientBackground(gradient);
-    r->SetTexturedBackground(textured);
-  }
-}
-
-//------------------------------------------------------------------------------
-void vtkBloomPass::vtkInternals::ClearTarget(
-  vtkRenderer* r, vtkOpenGLFramebufferObject* fbo, Content content)
-{
-  vtkOpenGLState* state = this->Resources.Context->GetState();
   if (r->Transparent() || content == EMITTERS)
   {
     // The camera pass does not clear layered renderers; an offscreen target must start empty.
@@ -236,17 +205,40 @@ void vtkBloomPass::vtkInternals::ClearTarget(
     state->vtkglDepthMask(GL_TRUE);
     state->vtkglClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   }
-  else if (content == SCENE_AND_EMISSION && r->GetErase() && r->GetRenderWindow()->GetErase())
+  state->vtkglEnable(GL_DEPTH_TEST);
+  // The emission's shader replacement. In the scene's render it raises the alpha of an
+  // emitting fragment above 1, which blending would mix into the colour: every prop is opaque
+  // there (vtkBloomPassEmission::Plan), so blending changes nothing else and is off.
+  const bool emission = content != SCENE;
+  this->Emission.EmittersAlone = content == EMITTERS;
+  if (emission)
   {
-    r->Clear(); // the background, gradient or textured included, into the colour only
+    self->PreRender(&s2);
   }
   if (content == SCENE_AND_EMISSION)
   {
-    fbo->ActivateDrawBuffers(2);
-    const float zero[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
-    state->vtkglColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-    glClearBufferfv(GL_COLOR, 1, zero);
-    fbo->ActivateDrawBuffer(0);
+    state->vtkglDisable(GL_BLEND);
+  }
+  self->DelegatePass->Render(&s2);
+  if (emission)
+  {
+    self->PostRender(&s2);
+  }
+  if (this->Resources.Samples)
+  {
+    multisample.Resolve(this->Resources.Context, target);
+  }
+  if (content != EMITTERS)
+  {
+    self->NumberOfRenderedProps += self->DelegatePass->GetNumberOfRenderedProps();
+  }
+  else
+  {
+    r->SetBackground(background);
+    r->SetBackground2(background2);
+    r->SetBackgroundAlpha(backgroundAlpha);
+    r->SetGradientBackground(gradient);
+    r->SetTexturedBackground(textured);
   }
 }
 
@@ -434,10 +426,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     in.Emission.Plan(this->Emitters, s->GetPropArray(), s->GetPropArrayCount(), this->DelegatePass,
       this->EmitInSceneRender);
   this->LastEmissionInSceneRender = inScene;
-  const auto target = !selective ? vtkBloomPassResources::NO_EMISSION
-    : inScene                    ? vtkBloomPassResources::EMISSION_ATTACHMENT
-                                 : vtkBloomPassResources::EMITTER_TARGET;
-  if (!in.Prepare(this, window, w, h, samples, target))
+  if (!in.Prepare(this, window, w, h, samples, selective && !inScene))
   {
     return;
   }
@@ -480,10 +469,10 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // 2. The chain, then 3. the composite into the framebuffer the pass was called with.
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  vtkTextureObject* source = !selective ? res.Scene.Color
-    : inScene                           ? res.Scene.Emission
-                                        : res.Emitter.Color;
-  const bool bloom = in.Runner.Run(source, selective && !inScene);
+  // In one render the emission is the scene's colour where its alpha says so.
+  in.Runner.EmissionInAlpha = inScene;
+  const bool twoRenders = selective && !inScene;
+  const bool bloom = in.Runner.Run(twoRenders ? res.Emitter.Color : res.Scene.Color, twoRenders);
   this->LastBloomSkipped = !bloom;
   const int zero[2] = { 0, 0 };
   const int origin[2] = { x, y };
@@ -594,7 +583,7 @@ bool vtkBloomPass::ApplyToImage(
   const vtkBloomPassSavedState saved(state);
   vtkInternals& in = *this->Internals;
   vtkBloomPassResources& res = in.Resources;
-  if (!in.Prepare(this, window, w, h, 0, vtkBloomPassResources::NO_EMISSION))
+  if (!in.Prepare(this, window, w, h, 0, false))
   {
     return false;
   }
@@ -652,23 +641,38 @@ bool vtkBloomPass::ReadSceneImage(vtkImageData* image)
     vtkErrorMacro(<< "There is no rendered scene to read; render first.");
     return false;
   }
-  return res.Scene.Read(res.Context, image);
+  if (!res.Scene.Read(res.Context, image))
+  {
+    return false;
+  }
+  if (this->Internals->Runner.EmissionInAlpha)
+  {
+    // The emission rode on the alpha (1 + weight); the scene's own alpha is at most 1.
+    vtkBloomPassDecodeEmission(image, false);
+  }
+  return true;
 }
 
 //------------------------------------------------------------------------------
 bool vtkBloomPass::ReadEmissionImage(vtkImageData* image)
 {
   vtkBloomPassResources& res = this->Internals->Resources;
-  if (!image || !res.Context || !(res.Scene.Emission || res.Emitter.FBO))
+  const bool inScene = this->Internals->Runner.EmissionInAlpha;
+  if (!image || !res.Context || !(inScene || res.Emitter.FBO))
   {
     vtkErrorMacro(<< "There is no emission to read; render with EMISSION_EMITTERS first.");
     return false;
   }
-  if (res.Emitter.FBO)
+  if (!inScene)
   {
     return res.Emitter.Read(res.Context, image);
   }
-  return res.Scene.Read(res.Context, image, 1); // the scene target's second attachment
+  if (!res.Scene.Read(res.Context, image))
+  {
+    return false;
+  }
+  vtkBloomPassDecodeEmission(image, true);
+  return true;
 }
 
 //------------------------------------------------------------------------------

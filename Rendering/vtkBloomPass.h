@@ -37,18 +37,19 @@
  * Selective bloom. By default every pixel of the scene can bloom (EMISSION_SCENE). With
  * SetEmissionSourceToEmitters() only the props given with AddEmitter() bloom, and occluded
  * emitters do not shine through. Where it can, the pass writes the emission in the scene's own
- * render: its shader replacement (vtkOpenGLRenderPass's, as vtkSSAOPass writes its extra
- * attachments) makes every polydata mapper's fragment shader write a second output, the
- * fragment's colour for an emitter and zero for any other prop, into a second colour
- * attachment. A copy of an actor made by CreateScalarRangeEmitter makes only a scalar range of
- * that actor glow, for example the hot spots of a temperature field; where the actor colours
- * through a texture (InterpolateScalarsBeforeMapping), the emission is the actor's own colour
- * where its interpolated scalar lies in the range, in the same render. Where a prop of the
- * scene cannot write the second output (2D actors, volumes, translucent geometry, glyph
- * mappers), or an emitter is not drawn by the scene, or EmitInSceneRender is off, the emitters
- * are rendered a second time, alone, into an emission buffer, and a sample counts only where
- * the emitter is the visible surface (its depth is not behind the scene's). Both ways give the
- * same image to float rounding (tested); GetLastEmissionInSceneRender() says which ran.
+ * render: its shader replacement (vtkOpenGLRenderPass's, as vtkSSAOPass extends the mappers'
+ * shaders) makes every polydata mapper's fragment shader add its emission weight (1 for an
+ * emitter, 0 for any other prop) to the alpha of its opaque fragment, and the bright pass reads
+ * the scene's colour where that alpha is above 1. A copy of an actor made by
+ * CreateScalarRangeEmitter makes only a scalar range of that actor glow, for example the hot
+ * spots of a temperature field; where the actor colours through a texture
+ * (InterpolateScalarsBeforeMapping), the weight is 1 where the actor's interpolated scalar lies
+ * in the range, in the same render. Where a prop of the scene cannot carry the weight (2D
+ * actors, volumes, translucent geometry, glyph mappers), or an emitter is not drawn by the
+ * scene, or EmitInSceneRender is off, the emitters are rendered a second time, alone, into an
+ * emission buffer, and a sample counts only where the emitter is the visible surface (its depth
+ * is not behind the scene's). Both ways give the same image to float rounding without
+ * multisampling (tested); GetLastEmissionInSceneRender() says which ran.
  *
  * Chain it before vtkToneMappingPass (tone mapping's delegate is this pass) to bloom in linear
  * HDR and tone-map afterwards. Resources are made on first use and remade when the viewport
@@ -293,9 +294,10 @@ public:
   bool ReadResultImage(vtkImageData* image);
 
   /**
-   * Read back, as float RGBA, the emission of the last render with EMISSION_EMITTERS: what
-   * the scene's render wrote into its second attachment, or the emitters' own render (where
-   * their occluded parts are masked later, in the bright pass). Return false, with an error,
+   * Read back, as float RGBA, the emission of the last render with EMISSION_EMITTERS: the
+   * scene's colour times the weight its render wrote in the alpha (the alpha is the weight),
+   * or the emitters' own render (where their occluded parts are masked later, in the bright
+   * pass). ReadSceneImage returns the scene with its own alpha. Return false, with an error,
    * when the last render was not selective.
    */
   bool ReadEmissionImage(vtkImageData* image);

@@ -67,6 +67,12 @@ public:
   /// The composite raises a transparent scene's alpha by the glow (a rendered frame), or
   /// keeps the scene's alpha (an image, as vtkImageBloom does).
   bool GlowAlpha = true;
+  /**
+   * The scene's render wrote selective bloom's emission in its alpha (vtkBloomPassEmission):
+   * the bright pass reads the colour times min(1, max(0, alpha - 1)), the composite the alpha
+   * as min(alpha, 1). Set before Run().
+   */
+  bool EmissionInAlpha = false;
   bool Restrict = false;
 
   /**

@@ -144,15 +144,17 @@ void vtkBloomPassEmission::PostReplace(std::string& fragmentShader, vtkAbstractM
   vtkShaderProgram::Substitute(fragmentShader, "//VTK::BloomEmission::Impl",
     "{\n"
     "    // vtkBloomPass: this fragment's emission (0 none, 1 its colour, 2 its colour where\n"
-    "    // the scalar lies in the range).\n"
+    "    // the scalar lies in the range), as a weight of its colour.\n"
     "    float bloomWeight = bloomEmission == 0 ? 0.0 : 1.0;\n" +
       range +
-      "    vec4 bloomColor = bloomEmission == 0\n"
-      "      ? vec4(0.0) : vec4(gl_FragData[0].rgb * bloomWeight, gl_FragData[0].a);\n"
-      "    gl_FragData[1] = bloomColor;\n"
       "    if (bloomEmittersAlone != 0)\n"
       "    {\n"
-      "      gl_FragData[0] = bloomColor;\n"
+      "      gl_FragData[0].rgb *= bloomWeight;\n"
+      "    }\n"
+      "    else\n"
+      "    {\n"
+      "      // In the scene's render, the weight rides on the alpha of an opaque fragment.\n"
+      "      gl_FragData[0].a += bloomWeight;\n"
       "    }\n"
       "  }\n",
     false);

@@ -75,14 +75,13 @@ void vtkBloomPassTarget::Release(vtkWindow* window)
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassTarget::Read(
-  vtkOpenGLRenderWindow* context, vtkImageData* image, unsigned int attachment)
+bool vtkBloomPassTarget::Read(vtkOpenGLRenderWindow* context, vtkImageData* image)
 {
   context->MakeCurrent();
   vtkOpenGLState* state = context->GetState();
   state->PushFramebufferBindings();
   this->FBO->Bind(GL_READ_FRAMEBUFFER);
-  this->FBO->ActivateReadBuffer(attachment);
+  this->FBO->ActivateReadBuffer(0);
   image->Initialize();
   image->SetExtent(0, this->Size[0] - 1, 0, this->Size[1] - 1, 0, 0);
   image->SetOrigin(0.0, 0.0, 0.0);
@@ -114,56 +113,22 @@ void vtkBloomPassSceneTarget::AllocateWithDepth(
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassSceneTarget::SetEmission(vtkOpenGLRenderWindow* context, bool emission)
-{
-  if (emission == (this->Emission != nullptr))
-  {
-    return;
-  }
-  context->GetState()->PushFramebufferBindings();
-  this->FBO->Bind();
-  if (emission)
-  {
-    this->Emission = vtkSmartPointer<vtkTextureObject>::New();
-    this->Emission->SetContext(context);
-    this->Emission->SetInternalFormat(this->Color->GetInternalFormat(VTK_FLOAT, 4, false));
-    this->Emission->SetMinificationFilter(vtkTextureObject::Nearest);
-    this->Emission->SetMagnificationFilter(vtkTextureObject::Nearest);
-    this->Emission->SetWrapS(vtkTextureObject::ClampToEdge);
-    this->Emission->SetWrapT(vtkTextureObject::ClampToEdge);
-    this->Emission->Allocate2D(this->Size[0], this->Size[1], 4, VTK_FLOAT);
-    this->FBO->AddColorAttachment(1, this->Emission);
-  }
-  else
-  {
-    this->FBO->RemoveColorAttachment(1);
-    this->Emission->ReleaseGraphicsResources(context);
-    this->Emission = nullptr;
-  }
-  this->FBO->ActivateDrawBuffer(0);
-  context->GetState()->PopFramebufferBindings();
-}
-
-//------------------------------------------------------------------------------
 void vtkBloomPassSceneTarget::ReleaseAll(vtkWindow* window)
 {
   this->Release(window);
-  for (vtkTextureObject* texture : { this->Depth.Get(), this->Emission.Get() })
+  if (this->Depth)
   {
-    if (texture)
-    {
-      texture->ReleaseGraphicsResources(window);
-    }
+    this->Depth->ReleaseGraphicsResources(window);
   }
-  this->Depth = this->Emission = nullptr;
+  this->Depth = nullptr;
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassMultisampleTarget::Allocate(vtkOpenGLRenderWindow* context, int width, int height,
-  unsigned int format, int samples, bool emission)
+void vtkBloomPassMultisampleTarget::Allocate(
+  vtkOpenGLRenderWindow* context, int width, int height, unsigned int format, int samples)
 {
   if (this->FBO && this->Size[0] == width && this->Size[1] == height && this->Samples == samples &&
-    this->Format == format && emission == (this->Emission != nullptr))
+    this->Format == format)
   {
     return;
   }
@@ -180,13 +145,6 @@ void vtkBloomPassMultisampleTarget::Allocate(vtkOpenGLRenderWindow* context, int
   context->GetState()->PushFramebufferBindings();
   this->FBO->Bind();
   this->FBO->AddColorAttachment(0, this->Color);
-  if (emission)
-  {
-    this->Emission = vtkSmartPointer<vtkRenderbuffer>::New();
-    this->Emission->SetContext(context);
-    this->Emission->Create(format, width, height, samples);
-    this->FBO->AddColorAttachment(1, this->Emission);
-  }
   this->FBO->AddDepthAttachment(this->Depth);
   this->FBO->ActivateDrawBuffer(0);
   context->GetState()->PopFramebufferBindings();
@@ -203,7 +161,7 @@ void vtkBloomPassMultisampleTarget::Release(vtkWindow* window)
   {
     this->FBO->ReleaseGraphicsResources(window);
   }
-  for (vtkRenderbuffer* buffer : { this->Color.Get(), this->Depth.Get(), this->Emission.Get() })
+  for (vtkRenderbuffer* buffer : { this->Color.Get(), this->Depth.Get() })
   {
     if (buffer)
     {
@@ -211,7 +169,7 @@ void vtkBloomPassMultisampleTarget::Release(vtkWindow* window)
     }
   }
   this->FBO = nullptr;
-  this->Color = this->Depth = this->Emission = nullptr;
+  this->Color = this->Depth = nullptr;
   this->Size[0] = this->Size[1] = this->Samples = 0;
 }
 
@@ -228,39 +186,23 @@ void vtkBloomPassMultisampleTarget::Resolve(
   // A multisample resolve must cover the same rectangle; depth resolves by nearest.
   glBlitFramebuffer(0, 0, this->Size[0], this->Size[1], 0, 0, this->Size[0], this->Size[1],
     GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
-  if (this->Emission && target.Emission)
-  {
-    this->FBO->ActivateReadBuffer(1);
-    target.FBO->ActivateDrawBuffer(1);
-    glBlitFramebuffer(0, 0, this->Size[0], this->Size[1], 0, 0, this->Size[0], this->Size[1],
-      GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    target.FBO->ActivateDrawBuffer(0);
-  }
   state->PopFramebufferBindings();
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassResources::AllocateScene(
-  int width, int height, EmissionTarget emission, int samples)
+void vtkBloomPassResources::AllocateScene(int width, int height, bool emitters, int samples)
 {
-  const bool attachment = emission == EMISSION_ATTACHMENT;
   this->Samples = samples > 1 ? samples : 0;
   if (this->Samples)
   {
-    this->Multisample.Allocate(
-      this->Context, width, height, this->Format, this->Samples, attachment);
+    this->Multisample.Allocate(this->Context, width, height, this->Format, this->Samples);
   }
   else
   {
     this->Multisample.Release(this->Context);
   }
-  if (this->Scene.Size[0] != width || this->Scene.Size[1] != height)
-  {
-    this->Scene.ReleaseAll(this->Context); // the emission is remade at the new size
-  }
   this->Scene.AllocateWithDepth(this->Context, width, height, this->Format);
-  this->Scene.SetEmission(this->Context, attachment);
-  if (emission == EMITTER_TARGET)
+  if (emitters)
   {
     this->Emitter.AllocateWithDepth(this->Context, width, height, this->Format);
   }

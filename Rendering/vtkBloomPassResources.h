@@ -64,26 +64,20 @@ struct vtkBloomPassTarget
   void Release(vtkWindow* window);
 
   /**
-   * Read the colour (or another colour attachment of the framebuffer) back into `image` as
-   * float RGBA (origin 0, spacing 1, row 0 at the bottom) and return true. The framebuffer
-   * bindings are restored afterwards.
+   * Read the colour back into `image` as float RGBA (origin 0, spacing 1, row 0 at the
+   * bottom) and return true. The framebuffer bindings are restored afterwards.
    */
-  bool Read(vtkOpenGLRenderWindow* context, vtkImageData* image, unsigned int attachment = 0);
+  bool Read(vtkOpenGLRenderWindow* context, vtkImageData* image);
 };
 
 //------------------------------------------------------------------------------
-// A float colour target with a depth texture, for the delegate's render, and optionally a
-// second colour attachment where the scene's shaders write the emission (selective bloom in
-// one render, vtkBloomPassEmission.h).
+// A float colour target with a depth texture, for the delegate's render.
 struct vtkBloomPassSceneTarget : vtkBloomPassTarget
 {
   vtkSmartPointer<vtkTextureObject> Depth;
-  vtkSmartPointer<vtkTextureObject> Emission;
 
   void AllocateWithDepth(
     vtkOpenGLRenderWindow* context, int width, int height, unsigned int format);
-  /// Attach an emission texture of the colour's size and format (or detach and free it).
-  void SetEmission(vtkOpenGLRenderWindow* context, bool emission);
   void ReleaseAll(vtkWindow* window);
 };
 
@@ -95,23 +89,18 @@ struct vtkBloomPassMultisampleTarget
   vtkSmartPointer<vtkOpenGLFramebufferObject> FBO;
   vtkSmartPointer<vtkRenderbuffer> Color;
   vtkSmartPointer<vtkRenderbuffer> Depth;
-  vtkSmartPointer<vtkRenderbuffer> Emission; ///< colour attachment 1, where the emission is
   int Size[2] = { 0, 0 };
   int Samples = 0;
   unsigned int Format = 0;
 
-  /**
-   * Make it at width x height with `samples` samples of `format`, with an emission
-   * attachment when `emission`, unless it already is.
-   */
-  void Allocate(vtkOpenGLRenderWindow* context, int width, int height, unsigned int format,
-    int samples, bool emission);
+  /// Make it at width x height with `samples` samples of `format`, unless it already is.
+  void Allocate(
+    vtkOpenGLRenderWindow* context, int width, int height, unsigned int format, int samples);
   void Release(vtkWindow* window);
 
   /**
-   * Resolve the colour and the emission (the average of the samples, in float) and the depth
-   * (one sample) into `target`, of the same size and format. The framebuffer bindings are
-   * restored afterwards.
+   * Resolve the colour (the average of the samples, in float) and the depth (one sample) into
+   * `target`, of the same size and format. The framebuffer bindings are restored afterwards.
    */
   void Resolve(vtkOpenGLRenderWindow* context, vtkBloomPassSceneTarget& target);
 };
@@ -142,20 +131,12 @@ public:
   vtkBloomPassTarget Full;                // DIRECT: the full-size bloom
   std::vector<vtkBloomPassTarget> Reduce; // the bright region's reduction (RGBA32F boxes)
 
-  /// Where selective bloom's emission is rendered, if anywhere.
-  enum EmissionTarget
-  {
-    NO_EMISSION,         ///< the whole scene blooms
-    EMITTER_TARGET,      ///< the emitters render again, alone, into Emitter
-    EMISSION_ATTACHMENT, ///< the scene's shaders write it into Scene.Emission
-  };
-
   /**
-   * Make the scene target at width x height in Format, with the emission where `emission`
-   * says (the emitter target, or the scene's second attachment; the other is released); and
-   * the multisampled target with `samples` samples when `samples` > 1 (else release it).
+   * Make the scene target at width x height in Format, and the emitters' when `emitters`
+   * (else release it); and the multisampled target with `samples` samples when `samples` > 1
+   * (else release it).
    */
-  void AllocateScene(int width, int height, EmissionTarget emission, int samples);
+  void AllocateScene(int width, int height, bool emitters, int samples);
 
   /// Whether the chain was built for other or older parameters or for another size.
   bool ChainIsStale(vtkBloomParameters* parameters, int width, int height, bool fast) const;
