@@ -453,6 +453,21 @@ bool OrbitTable(const std::string& scene, int width, int height, int frames)
               "| %s | %dx%d | %.3f ms | %.3f ms | %.3f ms | %.3f ms | %.2f | %ld |\n",
     cost.size(), scene.c_str(), width, height, stats.Median, stats.Mean, stats.P99, stats.Max,
     stats.Median > 0.0 ? stats.Max / stats.Median : 0.0, over);
+  // Which frames: a period points at the pass's own schedule, isolated ones at the machine.
+  if (over > 0)
+  {
+    std::printf("\nframes over 1.5 x the median (index: ms):");
+    int shown = 0;
+    for (size_t f = 0; f < cost.size() && shown < 12; ++f)
+    {
+      if (cost[f] > 1.5 * stats.Median)
+      {
+        std::printf(" %zu: %.3f", f, cost[f]);
+        ++shown;
+      }
+    }
+    std::printf("\n");
+  }
   std::fflush(stdout);
   return true;
 }

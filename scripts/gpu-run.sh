@@ -10,6 +10,8 @@
 #
 #   gpu.txt          the GPU, its driver and the OpenGL renderer the pass ran on
 #   ctest.log        ctest -R '^Rendering' (every rendering test), and ctest.xml (JUnit)
+#   motion.md        the flicker sweep's figures (TestBloomPassMotion: the bloom's and the
+#                    scene's coefficient of variation under sub-pixel camera steps)
 #   frametime.md     BloomPassFrameTime: every scene and preset (or $PRESETS) at 1920x1080 and
 #                    3840x2160, GPU timer, $FRAMES (default 50) frames of each kind: the bloom
 #                    over the plain frame and over the cheapest float copy by the mean, and the
@@ -89,6 +91,9 @@ else
     [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
   done
 fi
+# The flicker sweep's figures (issue 30, part 2), which the test prints.
+(cd "$VTKBLOOM_GPU_BUILD/Testing" && timeout 300 "$bin/TestBloomPassMotion") 2>&1 |
+  grep '^\[ flicker \]' | tee "$OUT/motion.md"
 fi
 
 if step frametime; then
