@@ -3,11 +3,13 @@
 #include "vtkActor.h"
 #include "vtkBloomPassChainRunner.h"
 #include "vtkBloomPassEmission.h"
+#include "vtkBloomPassFFT.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkDataArray.h"
 #include "vtkImageBloom.h"
 #include "vtkImageData.h"
+#include "vtkImageSeparableGaussian.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationObjectBaseKey.h"
@@ -82,6 +84,16 @@ public:
   vtkBloomPassResources Resources;
   vtkBloomPassChainRunner Runner;
   vtkBloomPassEmission Emission;
+  vtkBloomPassFFT FFT; ///< PSF mode's convolution
+
+  /// The bloom term of `source` (masked by the emitters' depth with `mask`): the chain, or in
+  /// PSF mode the bright pass and its convolution; false when the bloom is skipped.
+  bool RunBloom(vtkBloomPass* self, vtkTextureObject* source, bool mask);
+  bool RunPSF(vtkBloomPass* self, vtkTextureObject* source, bool mask);
+  /// PSF mode: the PSFs of the parameters, made again only when they changed.
+  bool UpdateKernels(vtkBloomParameters* parameters);
+  vtkMTimeType FailedKernelsTime = 0; ///< the parameters' time their PSFs failed at
+  std::string PSFError;               ///< the last reason PSF mode could not run, said once
 
   bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples,
     vtkBloomPassResources::EmissionTarget emission);
@@ -109,6 +121,7 @@ public:
 
   void ReleaseAll(vtkWindow* w)
   {
+    this->FFT.ReleaseGraphicsResources(w);
     this->Runner.ReleaseGraphicsResources(w);
     this->Resources.ReleaseAll(w);
   }
@@ -141,6 +154,21 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   this->Runner.Profiling = self->ProfilePasses;
   this->Runner.Profile.clear();
   res.AllocateScene(w, h, emission, samples);
+  this->Runner.PSFBloom = nullptr;
+  if (self->Parameters->GetBloomMode() == vtkBloomParameters::BLOOM_PSF)
+  {
+    // PSF mode builds no chain: its bright pass and bloom are full-size targets.
+    if (res.ChainTime != 0)
+    {
+      this->Runner.ReleaseOperators(window);
+      res.ReleaseChain(window);
+    }
+    res.PSFBright.Allocate(window, w, h, GL_RGBA32F);
+    res.PSFBloom.Allocate(window, w, h, GL_RGBA32F);
+    return true;
+  }
+  res.PSFBright.Release(window);
+  res.PSFBloom.Release(window);
   const bool fast = self->Quality == QUALITY_FAST;
   if (res.ChainIsStale(self->Parameters, w, h, fast))
   {
@@ -148,6 +176,76 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
     this->Runner.ReleaseOperators(window);
     res.BuildChain(self->Parameters, w, h, fast);
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPass::vtkInternals::RunBloom(vtkBloomPass* self, vtkTextureObject* source, bool mask)
+{
+  if (self->Parameters->GetBloomMode() == vtkBloomParameters::BLOOM_PSF)
+  {
+    return this->RunPSF(self, source, mask);
+  }
+  return this->Runner.Run(source, mask);
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPass::vtkInternals::UpdateKernels(vtkBloomParameters* parameters)
+{
+  const vtkMTimeType time = parameters->GetMTime();
+  if (time == this->FFT.GetKernelsTime())
+  {
+    return true;
+  }
+  if (time == this->FailedKernelsTime)
+  {
+    return false; // the filter already said why
+  }
+  // The CPU filter's own PSFs (vtkImageBloom::ComputePSF), which report invalid parameters.
+  vtkNew<vtkImageBloom> filter;
+  filter->SetParameters(parameters);
+  vtkBloomPassFFT::Kernel kernels[3];
+  for (int c = 0; c < 3; ++c)
+  {
+    kernels[c].Values = filter->ComputePSF(c, kernels[c].Radius);
+    if (kernels[c].Values.empty())
+    {
+      this->FailedKernelsTime = time;
+      return false;
+    }
+  }
+  this->FFT.SetKernels(kernels, time);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self, vtkTextureObject* source, bool mask)
+{
+  // Where PSF mode cannot run (no compute shaders, a grid too large, invalid PSFs) the scene
+  // renders without bloom, and the reason is reported once.
+  vtkBloomPassResources& res = this->Resources;
+  if (!this->UpdateKernels(self->Parameters))
+  {
+    return false;
+  }
+  std::string why;
+  if (!this->FFT.Prepare(res.Context, res.PSFBright.Size[0], res.PSFBright.Size[1], why))
+  {
+    if (why != this->PSFError)
+    {
+      vtkErrorWithObjectMacro(self, << why << " The scene renders without bloom.");
+      this->PSFError = why;
+    }
+    return false;
+  }
+  this->PSFError.clear();
+  if (!this->Runner.BrightPassPSF(source, mask, res.PSFBright))
+  {
+    return false;
+  }
+  this->FFT.Convolve(res.PSFBright.Color, res.PSFBloom.Color,
+    self->Parameters->GetPSFBorderMode() == vtkImageSeparableGaussian::REFLECT);
+  this->Runner.PSFBloom = &res.PSFBloom;
   return true;
 }
 
@@ -483,7 +581,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   vtkTextureObject* source = !selective ? res.Scene.Color
     : inScene                           ? res.Scene.Emission
                                         : res.Emitter.Color;
-  const bool bloom = in.Runner.Run(source, selective && !inScene);
+  const bool bloom = in.RunBloom(this, source, selective && !inScene);
   this->LastBloomSkipped = !bloom;
   const int zero[2] = { 0, 0 };
   const int origin[2] = { x, y };
@@ -618,7 +716,7 @@ bool vtkBloomPass::ApplyToImage(
   state->PushFramebufferBindings();
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  const bool bloom = in.Runner.Run(res.Scene.Color, false);
+  const bool bloom = in.RunBloom(this, res.Scene.Color, false);
   this->LastBloomSkipped = !bloom;
   const int zero[2] = { 0, 0 };
   in.Runner.Composite(&res.Result, zero, bloom);

@@ -142,6 +142,11 @@ public:
   vtkBloomPassTarget Full;                // DIRECT: the full-size bloom
   std::vector<vtkBloomPassTarget> Reduce; // the bright region's reduction (RGBA32F boxes)
 
+  /// PSF mode (vtkBloomParameters::BLOOM_PSF): the full-size bright pass and its convolution
+  /// with the PSFs (vtkBloomPassFFT), RGBA32F; no chain is built then.
+  vtkBloomPassTarget PSFBright;
+  vtkBloomPassTarget PSFBloom;
+
   /// Where selective bloom's emission is rendered, if anywhere.
   enum EmissionTarget
   {
