@@ -165,6 +165,7 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
     }
     res.PSFBright.Allocate(window, w, h, GL_RGBA32F);
     res.PSFBloom.Allocate(window, w, h, GL_RGBA32F);
+    this->Runner.PSFBloom = &res.PSFBloom;
     return true;
   }
   res.PSFBright.Release(window);
@@ -229,7 +230,12 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self, vtkTextureObject* so
     return false;
   }
   std::string why;
-  if (!this->FFT.Prepare(res.Context, res.PSFBright.Size[0], res.PSFBright.Size[1], why))
+  if (self->SimulateComputeShaderFailure)
+  {
+    why = "PSF bloom's compute programs did not build (simulated for a test).";
+  }
+  if (!why.empty() ||
+    !this->FFT.Prepare(res.Context, res.PSFBright.Size[0], res.PSFBright.Size[1], why))
   {
     if (why != this->PSFError)
     {
@@ -245,7 +251,6 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self, vtkTextureObject* so
   }
   this->FFT.Convolve(res.PSFBright.Color, res.PSFBloom.Color,
     self->Parameters->GetPSFBorderMode() == vtkImageSeparableGaussian::REFLECT);
-  this->Runner.PSFBloom = &res.PSFBloom;
   return true;
 }
 

@@ -122,7 +122,7 @@ public:
    */
   bool BrightPassPSF(vtkTextureObject* emission, bool mask, vtkBloomPassTarget& bright);
 
-  /// PSF mode: the full-size bloom term the composite adds (null: the chain's).
+  /// PSF mode: the full-size bloom term the composite adds, and its size (null: the chain's).
   vtkBloomPassTarget* PSFBloom = nullptr;
 
   /**

@@ -8,6 +8,7 @@
 #include "vtkBloomPassTestWindow.h"
 
 #include "vtkBloomVTKCompat.h"
+#include "vtkCommand.h"
 #include "vtkFloatArray.h"
 #include "vtkImageBloom.h"
 #include "vtkImageBloomThreshold.h"
@@ -171,6 +172,15 @@ void PassEverything(vtkBloomParameters* parameters)
   parameters->SetTint(1.0, 1.0, 1.0);
 }
 
+// Counts the error events of the object it observes.
+class ErrorCount : public vtkCommand
+{
+public:
+  static ErrorCount* New() { return new ErrorCount; }
+  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
+  int Count = 0;
+};
+
 const char* BorderName(int border)
 {
   return border == vtkImageSeparableGaussian::REFLECT ? "REFLECT" : "ZERO";
@@ -299,6 +309,31 @@ TEST(RenderingBloomPassPSF, ADeltaBloomsIntoThePSFItself)
             << "; at the delta " << centre << "\n";
   EXPECT_LE(worst, 1e-5 * largest);
   EXPECT_LE(centre, 2e-7);
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, WithoutComputeShadersTheSceneRendersUnbloomedWithOneError)
+{
+  // vtkBloomPass::SimulateComputeShaderFailure stands for a context without OpenGL 4.3.
+  BloomWindow w(120, 90);
+  ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
+  w.Bloom->SetEmissionSourceToScene();
+  w.Bloom->SetFloatPrecisionTo32Bit();
+  w.Bloom->GetParameters()->SetBloomModeToPSF();
+  w.Bloom->SetSimulateComputeShaderFailure(true);
+  w.Bloom->CaptureResultOn();
+  vtkNew<ErrorCount> errors;
+  w.Bloom->AddObserver(vtkCommand::ErrorEvent, errors);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    w.Window->Render();
+  }
+  EXPECT_EQ(errors->Count, 1);
+  EXPECT_TRUE(w.Bloom->GetLastBloomSkipped());
+  vtkNew<vtkImageData> scene, result;
+  ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
+  ASSERT_TRUE(w.Bloom->ReadResultImage(result));
+  EXPECT_EQ(ColourRelativeL2(result, scene), 0.0);
 }
 
 //------------------------------------------------------------------------------
