@@ -92,8 +92,10 @@ public:
   bool RunPSF(vtkBloomPass* self, vtkTextureObject* source, bool mask);
   /// PSF mode: the PSFs of the parameters, made again only when they changed.
   bool UpdateKernels(vtkBloomParameters* parameters);
-  vtkMTimeType FailedKernelsTime = 0; ///< the parameters' time their PSFs failed at
-  std::string PSFError;               ///< the last reason PSF mode could not run, said once
+  std::vector<double> KernelsSignature; ///< what the current PSFs were made from
+  bool KernelsFailed = false;           ///< they could not be made (the filter said why)
+  vtkMTimeType KernelsVersion = 0;
+  std::string PSFError; ///< the last reason PSF mode could not run, said once
 
   bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples,
     vtkBloomPassResources::EmissionTarget emission);
@@ -193,29 +195,40 @@ bool vtkBloomPass::vtkInternals::RunBloom(vtkBloomPass* self, vtkTextureObject* 
 //------------------------------------------------------------------------------
 bool vtkBloomPass::vtkInternals::UpdateKernels(vtkBloomParameters* parameters)
 {
-  const vtkMTimeType time = parameters->GetMTime();
-  if (time == this->FFT.GetKernelsTime())
+  // Only the parameters the PSFs depend on: a strength or threshold slider must not remake an
+  // Airy pattern (seconds for a wide one) and its spectra every frame.
+  vtkImageData* image = parameters->GetPSFImage();
+  const double* wavelengths = parameters->GetWavelengths();
+  std::vector<double> signature = { static_cast<double>(parameters->GetPSFType()),
+    static_cast<double>(parameters->GetPSFRadius()), parameters->GetAiryRadius(), wavelengths[0],
+    wavelengths[1], wavelengths[2], image ? static_cast<double>(image->GetMTime()) : -1.0 };
+  for (const auto* values :
+    { &parameters->GetPSFGaussianSigmas(), &parameters->GetPSFGaussianWeights() })
   {
-    return true;
+    signature.push_back(static_cast<double>(values->size()));
+    signature.insert(signature.end(), values->begin(), values->end());
   }
-  if (time == this->FailedKernelsTime)
+  if (signature == this->KernelsSignature && this->KernelsVersion != 0)
   {
-    return false; // the filter already said why
+    return !this->KernelsFailed;
   }
+  this->KernelsSignature = signature;
   // The CPU filter's own PSFs (vtkImageBloom::ComputePSF), which report invalid parameters.
   vtkNew<vtkImageBloom> filter;
   filter->SetParameters(parameters);
   vtkBloomPassFFT::Kernel kernels[3];
+  ++this->KernelsVersion;
+  this->KernelsFailed = false;
   for (int c = 0; c < 3; ++c)
   {
     kernels[c].Values = filter->ComputePSF(c, kernels[c].Radius);
     if (kernels[c].Values.empty())
     {
-      this->FailedKernelsTime = time;
+      this->KernelsFailed = true;
       return false;
     }
   }
-  this->FFT.SetKernels(kernels, time);
+  this->FFT.SetKernels(kernels, this->KernelsVersion);
   return true;
 }
 

@@ -118,7 +118,7 @@ int vtkBloomPassFFT::Uniform(unsigned int program, const char* name)
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassFFT::SetKernels(const Kernel kernels[3], vtkMTimeType time)
+void vtkBloomPassFFT::SetKernels(const Kernel kernels[3], vtkMTimeType version)
 {
   this->Radius = 0;
   for (int c = 0; c < 3; ++c)
@@ -126,7 +126,7 @@ void vtkBloomPassFFT::SetKernels(const Kernel kernels[3], vtkMTimeType time)
     this->Kernels[c] = kernels[c];
     this->Radius = std::max(this->Radius, kernels[c].Radius);
   }
-  this->KernelsTime = time;
+  this->KernelsVersion = version;
 }
 
 //------------------------------------------------------------------------------
@@ -161,7 +161,7 @@ bool vtkBloomPassFFT::Prepare(
     this->Grid[0] = grid[0];
     this->Grid[1] = grid[1];
     this->AllocateBuffers();
-    this->SpectraTime = 0;
+    this->SpectraVersion = 0;
   }
   this->Size[0] = width;
   this->Size[1] = height;
@@ -178,10 +178,10 @@ bool vtkBloomPassFFT::Prepare(
       return false;
     }
   }
-  if (this->SpectraTime != this->KernelsTime)
+  if (this->SpectraVersion != this->KernelsVersion)
   {
     this->MakeSpectra();
-    this->SpectraTime = this->KernelsTime;
+    this->SpectraVersion = this->KernelsVersion;
   }
   return true;
 }
@@ -355,6 +355,6 @@ void vtkBloomPassFFT::ReleaseGraphicsResources(vtkWindow* w)
   this->SignalBuffer = this->SpectraBuffer = 0;
   this->TwiddleBuffers[0] = this->TwiddleBuffers[1] = 0;
   this->Grid[0] = this->Grid[1] = 0;
-  this->SpectraTime = 0;
+  this->SpectraVersion = 0;
   this->Context = nullptr;
 }

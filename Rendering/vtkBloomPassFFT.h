@@ -69,11 +69,11 @@ public:
   static std::vector<int> Radices(int n);
 
   /**
-   * Use `kernels` (red, green, blue) from now on, identified by `time`: the spectra are made
-   * again only when the time, or the grid, changes.
+   * Use `kernels` (red, green, blue) from now on, identified by `version` (not 0): the spectra are
+   * made again only when the version, or the grid, changes.
    */
-  void SetKernels(const Kernel kernels[3], vtkMTimeType time);
-  vtkMTimeType GetKernelsTime() const { return this->KernelsTime; }
+  void SetKernels(const Kernel kernels[3], vtkMTimeType version);
+  vtkMTimeType GetKernelsVersion() const { return this->KernelsVersion; }
 
   /**
    * Make the grid, the buffers, the programs and (where stale) the kernels' spectra for
@@ -111,10 +111,10 @@ private:
   vtkOpenGLRenderWindow* Context = nullptr;
   Kernel Kernels[3];
   int Radius = 0;
-  vtkMTimeType KernelsTime = 0;
-  vtkMTimeType SpectraTime = 0; ///< the kernels' time the spectra were made for; 0: none
-  int Size[2] = { 0, 0 };       ///< the image
-  int Grid[2] = { 0, 0 };       ///< NX, NY
+  vtkMTimeType KernelsVersion = 0;
+  vtkMTimeType SpectraVersion = 0; ///< the kernels' version the spectra were made for; 0: none
+  int Size[2] = { 0, 0 };          ///< the image
+  int Grid[2] = { 0, 0 };          ///< NX, NY
   unsigned int SignalBuffer = 0;
   unsigned int SpectraBuffer = 0;
   unsigned int TwiddleBuffers[2] = { 0, 0 }; ///< per axis

@@ -245,6 +245,42 @@ TEST(RenderingBloomPassPSF, AgreesWithTheCPUFilterForAnAiryPatternWiderThanTheFr
 }
 
 //------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, FollowsAChangeOfPSFOrStrengthBetweenFrames)
+{
+  // The PSFs and their spectra are kept between frames: a new PSF must replace them, a new
+  // strength must not need them remade. Each frame is checked against the filter.
+  BloomWindow w(150, 100);
+  ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
+  w.Bloom->SetEmissionSourceToScene();
+  w.Bloom->SetFloatPrecisionTo32Bit();
+  w.Bloom->CaptureResultOn();
+  vtkBloomParameters* parameters = w.Bloom->GetParameters();
+  SetPSF(parameters, GAUSSIANS, 30, vtkImageSeparableGaussian::REFLECT);
+  vtkNew<vtkImageBloom> cpu;
+  cpu->SetParameters(parameters);
+  auto check = [&](const char* what)
+  {
+    w.Window->Render();
+    vtkNew<vtkImageData> scene, gpu;
+    ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
+    ASSERT_TRUE(w.Bloom->ReadResultImage(gpu));
+    cpu->SetInputData(scene);
+    cpu->Update();
+    EXPECT_LE(ColourRelativeL2(gpu, cpu->GetOutput()), 1e-5) << what;
+  };
+  check("first PSF");
+  parameters->SetPSFGaussians({ 1.0, 6.0 }, { 1.0, 0.5 });
+  check("new Gaussians");
+  parameters->SetStrength(0.25);
+  check("new strength");
+  parameters->SetPSFType(vtkBloomParameters::PSF_IMAGE);
+  parameters->SetPSFImage(LopsidedPSF(12));
+  check("an image PSF");
+  parameters->SetPSFBorderMode(vtkImageSeparableGaussian::ZERO);
+  check("ZERO borders");
+}
+
+//------------------------------------------------------------------------------
 TEST(RenderingBloomPassPSF, ReflectConservesTheBrightPassEnergy)
 {
   for (PSFKind kind : { GAUSSIANS, IMAGE })
