@@ -45,7 +45,8 @@
  * PSFRadius (automatic by default: 12 first-ring radii of the reddest channel for Airy, 4 of the
  * widest sigma for Gaussians) and normalized to sum 1. What leaves the image is folded back in
  * by half-sample reflection (PSFBorderMode REFLECT, the default: energy-conserving) or dropped
- * (ZERO). vtkImageBloom runs PSF mode; vtkBloomPass does not yet.
+ * (ZERO). vtkImageBloom runs PSF mode on the CPU, vtkBloomPass on the GPU (an FFT in compute
+ * shaders: OpenGL 4.3).
  *
  * Work-skipping options (SkipEmptyBloom, SkipDisabledEffects, TrimPyramid,
  * RestrictToBrightRegion) change what is computed, never the result: each is exact.

@@ -3,11 +3,13 @@
 #include "vtkActor.h"
 #include "vtkBloomPassChainRunner.h"
 #include "vtkBloomPassEmission.h"
+#include "vtkBloomPassFFT.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkDataArray.h"
 #include "vtkImageBloom.h"
 #include "vtkImageData.h"
+#include "vtkImageSeparableGaussian.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationObjectBaseKey.h"
@@ -99,6 +101,18 @@ public:
   vtkBloomPassResources Resources;
   vtkBloomPassChainRunner Runner;
   vtkBloomPassEmission Emission;
+  vtkBloomPassFFT FFT; ///< PSF mode's convolution
+
+  /// The bloom term of `source` (masked by the emitters' depth with `mask`): the chain, or in
+  /// PSF mode the bright pass and its convolution; false when the bloom is skipped.
+  bool RunBloom(vtkBloomPass* self, vtkTextureObject* source, bool mask);
+  bool RunPSF(vtkBloomPass* self, vtkTextureObject* source, bool mask);
+  /// PSF mode: the PSFs of the parameters, made again only when they changed.
+  bool UpdateKernels(vtkBloomParameters* parameters);
+  std::vector<double> KernelsSignature; ///< what the current PSFs were made from
+  bool KernelsFailed = false;           ///< they could not be made (the filter said why)
+  vtkMTimeType KernelsVersion = 0;
+  std::string PSFError; ///< the last reason PSF mode could not run, said once
 
   bool Prepare(
     vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples, bool emitters);
@@ -123,6 +137,7 @@ public:
 
   void ReleaseAll(vtkWindow* w)
   {
+    this->FFT.ReleaseGraphicsResources(w);
     this->Runner.ReleaseGraphicsResources(w);
     this->Resources.ReleaseAll(w);
   }
@@ -156,6 +171,22 @@ bool vtkBloomPass::vtkInternals::Prepare(
   this->Runner.Profile.clear();
   this->Runner.EmissionInAlpha = false;
   res.AllocateScene(w, h, emitters, samples);
+  this->Runner.PSFBloom = nullptr;
+  if (self->Parameters->GetBloomMode() == vtkBloomParameters::BLOOM_PSF)
+  {
+    // PSF mode builds no chain: its bright pass and bloom are full-size targets.
+    if (res.ChainTime != 0)
+    {
+      this->Runner.ReleaseOperators(window);
+      res.ReleaseChain(window);
+    }
+    res.PSFBright.Allocate(window, w, h, GL_RGBA32F);
+    res.PSFBloom.Allocate(window, w, h, GL_RGBA32F);
+    this->Runner.PSFBloom = &res.PSFBloom;
+    return true;
+  }
+  res.PSFBright.Release(window);
+  res.PSFBloom.Release(window);
   const bool fast = self->Quality == QUALITY_FAST;
   if (res.ChainIsStale(self->Parameters, w, h, fast))
   {
@@ -163,6 +194,91 @@ bool vtkBloomPass::vtkInternals::Prepare(
     this->Runner.ReleaseOperators(window);
     res.BuildChain(self->Parameters, w, h, fast);
   }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPass::vtkInternals::RunBloom(vtkBloomPass* self, vtkTextureObject* source, bool mask)
+{
+  if (self->Parameters->GetBloomMode() == vtkBloomParameters::BLOOM_PSF)
+  {
+    return this->RunPSF(self, source, mask);
+  }
+  return this->Runner.Run(source, mask);
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPass::vtkInternals::UpdateKernels(vtkBloomParameters* parameters)
+{
+  // Only the parameters the PSFs depend on: a strength or threshold slider must not remake an
+  // Airy pattern (seconds for a wide one) and its spectra every frame.
+  vtkImageData* image = parameters->GetPSFImage();
+  const double* wavelengths = parameters->GetWavelengths();
+  std::vector<double> signature = { static_cast<double>(parameters->GetPSFType()),
+    static_cast<double>(parameters->GetPSFRadius()), parameters->GetAiryRadius(), wavelengths[0],
+    wavelengths[1], wavelengths[2], image ? static_cast<double>(image->GetMTime()) : -1.0 };
+  for (const auto* values :
+    { &parameters->GetPSFGaussianSigmas(), &parameters->GetPSFGaussianWeights() })
+  {
+    signature.push_back(static_cast<double>(values->size()));
+    signature.insert(signature.end(), values->begin(), values->end());
+  }
+  if (signature == this->KernelsSignature && this->KernelsVersion != 0)
+  {
+    return !this->KernelsFailed;
+  }
+  this->KernelsSignature = signature;
+  // The CPU filter's own PSFs (vtkImageBloom::ComputePSF), which report invalid parameters.
+  vtkNew<vtkImageBloom> filter;
+  filter->SetParameters(parameters);
+  vtkBloomPassFFT::Kernel kernels[3];
+  ++this->KernelsVersion;
+  this->KernelsFailed = false;
+  for (int c = 0; c < 3; ++c)
+  {
+    kernels[c].Values = filter->ComputePSF(c, kernels[c].Radius);
+    if (kernels[c].Values.empty())
+    {
+      this->KernelsFailed = true;
+      return false;
+    }
+  }
+  this->FFT.SetKernels(kernels, this->KernelsVersion);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self, vtkTextureObject* source, bool mask)
+{
+  // Where PSF mode cannot run (no compute shaders, a grid too large, invalid PSFs) the scene
+  // renders without bloom, and the reason is reported once.
+  vtkBloomPassResources& res = this->Resources;
+  if (!this->UpdateKernels(self->Parameters))
+  {
+    return false;
+  }
+  std::string why;
+  if (self->SimulateComputeShaderFailure)
+  {
+    why = "PSF bloom's compute programs did not build (simulated for a test).";
+  }
+  if (!why.empty() ||
+    !this->FFT.Prepare(res.Context, res.PSFBright.Size[0], res.PSFBright.Size[1], why))
+  {
+    if (why != this->PSFError)
+    {
+      vtkErrorWithObjectMacro(self, << why << " The scene renders without bloom.");
+      this->PSFError = why;
+    }
+    return false;
+  }
+  this->PSFError.clear();
+  if (!this->Runner.BrightPassPSF(source, mask, res.PSFBright))
+  {
+    return false;
+  }
+  this->FFT.Convolve(res.PSFBright.Color, res.PSFBloom.Color,
+    self->Parameters->GetPSFBorderMode() == vtkImageSeparableGaussian::REFLECT);
   return true;
 }
 
@@ -472,7 +588,8 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // In one render the emission is the scene's colour where its alpha says so.
   in.Runner.EmissionInAlpha = inScene;
   const bool twoRenders = selective && !inScene;
-  const bool bloom = in.Runner.Run(twoRenders ? res.Emitter.Color : res.Scene.Color, twoRenders);
+  const bool bloom =
+    in.RunBloom(this, twoRenders ? res.Emitter.Color : res.Scene.Color, twoRenders);
   this->LastBloomSkipped = !bloom;
   const int zero[2] = { 0, 0 };
   const int origin[2] = { x, y };
@@ -607,7 +724,7 @@ bool vtkBloomPass::ApplyToImage(
   state->PushFramebufferBindings();
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  const bool bloom = in.Runner.Run(res.Scene.Color, false);
+  const bool bloom = in.RunBloom(this, res.Scene.Color, false);
   this->LastBloomSkipped = !bloom;
   const int zero[2] = { 0, 0 };
   in.Runner.Composite(&res.Result, zero, bloom);

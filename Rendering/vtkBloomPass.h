@@ -84,6 +84,16 @@
  * render framebuffer without multisampling, vtkToneMappingPass's and vtkFramebufferPass's
  * targets) and the context has OpenGL 4.5; else it is a fragment pass.
  *
+ * PSF mode. With the parameters' BloomMode BLOOM_PSF the pass runs vtkImageBloom's PSF mode:
+ * the bright pass at full resolution (the chain's threshold, no resample), its convolution
+ * with one PSF per colour channel (built by vtkImageBloom::ComputePSF, the filter's own code)
+ * through a 2-D FFT in compute shaders (vtkBloomPassFFT: zero padded so nothing wraps, then
+ * folded back by REFLECT or dropped by ZERO borders), and the same composite. It needs OpenGL
+ * 4.3 compute shaders whatever UseComputeShaders says; without them, or for a padded grid with
+ * a line longer than 4096 samples (the image plus twice the PSF radius), the pass reports an
+ * error once and renders the scene without bloom. The PSFs' spectra are made again only when
+ * the parameters or the size change. No chain is built in PSF mode.
+ *
  * With CaptureResult on, the bloomed image is also kept in a float texture after each render,
  * and ReadSceneImage() / ReadResultImage() return the un-bloomed float render and the bloomed
  * result as float RGBA vtkImageData (origin 0, spacing 1, row 0 at the bottom) for tests,

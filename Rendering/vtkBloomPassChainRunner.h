@@ -121,6 +121,23 @@ public:
   /// Copy `source` into `target`, or into the bound framebuffer at `origin` when it is null.
   void Copy(vtkBloomPassTarget* target, const int origin[2], vtkBloomPassTarget& source);
 
+  /**
+   * PSF mode (vtkBloomParameters::BLOOM_PSF): the bright pass of `emission` at full size, with
+   * no resample, into `bright` (as vtkImageBloom's PSF mode thresholds its input). False when
+   * the bloom is skipped (a disabled effect, or nothing bright with SkipEmptyBloom).
+   */
+  bool BrightPassPSF(vtkTextureObject* emission, bool mask, vtkBloomPassTarget& bright);
+
+  /// PSF mode: the full-size bloom term the composite adds, and its size (null: the chain's).
+  vtkBloomPassTarget* PSFBloom = nullptr;
+
+  /**
+   * Compile and link one compute shader; 0 when either fails, with the compiler's log in
+   * `log` (when given). Shared by the chain's compute passes, the region's reduction and
+   * PSF bloom's FFT (vtkBloomPassFFT).
+   */
+  static unsigned int BuildComputeProgram(const char* source, std::string* log);
+
   /// Free the operator textures; call it before the chain is rebuilt.
   void ReleaseOperators(vtkWindow* w);
 
@@ -447,11 +464,6 @@ private:
    * image of `format`, made on first use.
    */
   ComputeProgram* Compute(const std::string& variant, bool blend, unsigned int format);
-  /**
-   * Compile and link one compute shader; 0 when either fails, with the compiler's log in
-   * `log` (when given). Shared by the chain's compute passes and the region's reduction.
-   */
-  static unsigned int BuildComputeProgram(const char* source, std::string* log);
 
   /// Bind `image` as image unit 0 and dispatch one invocation per sample of `rect`.
   void Dispatch(const ImageTarget& image, bool blend, const Box& rect);

@@ -195,6 +195,57 @@ bool vtkBloomPassChainRunner::BrightPass(vtkTextureObject* emission, ChainRegion
 }
 
 //------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::BrightPassPSF(
+  vtkTextureObject* emission, bool mask, vtkBloomPassTarget& bright)
+{
+  // BrightPass's threshold with no resample and no region; SkipEmptyBloom counts the non-zero
+  // samples with the same occlusion query.
+  vtkBloomParameters* parameters = this->Parameters;
+  this->MaskSource = mask;
+  this->SanitizeSource = parameters->GetSanitizeNonFinite();
+  this->SanitizeOutput = parameters->GetSanitizeNonFinite();
+  this->CompositeRestricted = false;
+  this->ComputedSamples = this->FullSamples = 0.0;
+  this->Coverage = 1.0;
+  std::fill(this->BrightRegion, this->BrightRegion + 4, 0);
+  // Strength and tint only: PSF mode has no level weights.
+  if (parameters->GetSkipDisabledEffects() && parameters->IsBloomDisabled(3, 0))
+  {
+    return false;
+  }
+  const int zero[2] = { 0, 0 };
+  const bool query = parameters->GetSkipEmptyBloom();
+  PassSpec spec;
+  spec.Source = emission;
+  spec.SourceSize = bright.Size;
+  spec.Step = STEP_THRESHOLD;
+  spec.ReadsSource = true;
+  spec.DiscardZero = query;
+  spec.Name = "bright";
+  spec.Level = 0;
+  if (query)
+  {
+    this->Clear(bright);
+    if (!this->Query)
+    {
+      glGenQueries(1, &this->Query);
+    }
+    glBeginQuery(GL_SAMPLES_PASSED, this->Query);
+  }
+  this->CountingSamples = query;
+  this->Pass(&bright, zero, spec);
+  this->CountingSamples = false;
+  if (query)
+  {
+    glEndQuery(GL_SAMPLES_PASSED);
+    GLuint samples = 0;
+    glGetQueryObjectuiv(this->Query, GL_QUERY_RESULT, &samples);
+    return samples != 0;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::DownsampleLevels(ChainRegions& regions)
 {
   // Each level from the unblurred level above it; each term is one two-dimensional pass, added
@@ -432,7 +483,9 @@ void vtkBloomPassChainRunner::Composite(vtkBloomPassTarget* target, const int or
   // out = keep * scene + Strength * Tint * bloom, the final resample of CASCADE included.
   vtkBloomPassResources& res = this->Resources;
   const vtkBloomChain& c = res.Chain;
-  const int full[2] = { c.Width, c.Height };
+  // PSF mode builds no chain: the size is its bloom term's.
+  const int full[2] = { this->PSFBloom ? this->PSFBloom->Size[0] : c.Width,
+    this->PSFBloom ? this->PSFBloom->Size[1] : c.Height };
   PassSpec composite;
   composite.Step = STEP_COMPOSITE;
   composite.Source = res.Scene.Color;
@@ -440,7 +493,11 @@ void vtkBloomPassChainRunner::Composite(vtkBloomPassTarget* target, const int or
   composite.CompositeBloom = bloom;
   composite.Name = "composite";
   composite.Region = bloom && this->CompositeRestricted ? &this->CompositeRegion : nullptr;
-  if (bloom && c.AccumulateMode == vtkBloomParameters::DIRECT)
+  if (bloom && this->PSFBloom)
+  {
+    composite.Source = this->PSFBloom->Color;
+  }
+  else if (bloom && c.AccumulateMode == vtkBloomParameters::DIRECT)
   {
     composite.Source = res.Full.Color;
   }

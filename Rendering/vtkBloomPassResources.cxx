@@ -284,6 +284,8 @@ void vtkBloomPassResources::ReleaseChain(vtkWindow* w)
 void vtkBloomPassResources::ReleaseAll(vtkWindow* w)
 {
   this->ReleaseChain(w);
+  this->PSFBright.Release(w);
+  this->PSFBloom.Release(w);
   this->Scene.ReleaseAll(w);
   this->Emitter.ReleaseAll(w);
   this->Multisample.Release(w);

@@ -131,6 +131,11 @@ public:
   vtkBloomPassTarget Full;                // DIRECT: the full-size bloom
   std::vector<vtkBloomPassTarget> Reduce; // the bright region's reduction (RGBA32F boxes)
 
+  /// PSF mode (vtkBloomParameters::BLOOM_PSF): the full-size bright pass and its convolution
+  /// with the PSFs (vtkBloomPassFFT), RGBA32F; no chain is built then.
+  vtkBloomPassTarget PSFBright;
+  vtkBloomPassTarget PSFBloom;
+
   /**
    * Make the scene target at width x height in Format, and the emitters' when `emitters`
    * (else release it); and the multisampled target with `samples` samples when `samples` > 1

@@ -523,10 +523,6 @@ RenderOptions TakeRenderOptions(Arguments& args, const CommonOptions& common)
   // The bloom options are parsed now (usage errors before any rendering) and applied to the
   // pass after the scene has set its own parameters.
   const BloomOptions bloom(args);
-  if (bloom.GetPSF())
-  {
-    throw UsageError{ "--psf applies to image: the render pass has no PSF mode" };
-  }
   options.ConfigureBloom = [bloom](vtkBloomPass* pass) { bloom.Apply(pass->GetParameters()); };
   return options;
 }

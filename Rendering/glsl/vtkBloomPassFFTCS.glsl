@@ -1,0 +1,285 @@
+//VTK::System::Dec
+/*=========================================================================
+  vtkBloomPassFFTCS.glsl: vtkBloomPassFFT's compute shaders (OpenGL 4.3), the linear
+  convolution of a float RGBA image with one PSF per colour channel through a 2-D FFT of the
+  zero-padded NX x NY grid. One stage per program, chosen by a #define:
+
+  - FFT_TRANSFORM: the DFT of every line (a row or a column) of the two complex signals in
+    the buffer `signal` (signal s at s * signalStride; sample i of line l at
+    l * lineStride + i * sampleStride), X[q] = sum_n x[n] exp(direction 2 pi i n q / N),
+    unscaled. One work group per line and signal (gl_WorkGroupID.x, .y); the line is held in
+    shared memory (N <= 4096 complex samples: 32 KiB) and transformed in place by mixed-radix
+    Stockham stages (radices 4, 2, 3, 5, in the order FFT_RADICES lists them), so that the
+    result is in natural order with no bit reversal. Stage s of radix R, with Ns the product
+    of the radices before it, takes butterfly j (0 <= j < N / R, k = j mod Ns) from samples
+    j + r N / R, multiplies sample r by w^(k r N / (Ns R)), applies the R-point DFT and writes
+    it to (j / Ns) Ns R + k + q Ns (Govindaraju et al. 2008, "High performance discrete
+    Fourier transforms on graphics processors"). Each invocation keeps its butterflies'
+    results in registers between two barriers, so the stage needs one line of shared memory.
+    w^m = exp(direction 2 pi i m / N) comes from `twiddle`, cos and sin of 2 pi m / N computed
+    in double on the CPU: GLSL's float sin and cos are not accurate enough for large N.
+    FFT_FROM_TEXTURE: the first (row) transform reads row l of the RGBA texture `source`
+    instead, zero padded beyond sourceSize: signal 0 = R + i G, signal 1 = B + i 0.
+  - FFT_SEPARATE: the kernels' spectra from the transform of (kR + i kG, kB): with Z the
+    spectrum of z = r + i g (r, g real), R[k] = (Z[k] + conj Z[-k]) / 2 and
+    G[k] = (Z[k] - conj Z[-k]) / (2 i). Each is scaled by `scale` = 1 / (NX NY), the inverse
+    transform's normalization, and written to `spectra` (3 NX NY: red, green, blue).
+  - FFT_MULTIPLY: the image's spectrum times the kernels', in place: Y = R KR + i G KG for
+    signal 0 (with R, G separated as above; the inverse of Y is then r * kR + i g * kG, both
+    real), B KB for signal 1. One invocation per pair (k, -k): each reads both.
+  - FFT_FOLD: the output image from the inverse transform: the full convolution's sample
+    (u + radius, v + radius), centred on image pixel (u, v) for -radius <= u < W + radius,
+    folded back into the image by half-sample reflection (FFT_REFLECT: u and -1 - u are the
+    same pixel, period 2 W) or dropped (ZERO). Every pixel gathers the samples that fold onto
+    it, so the sum with REFLECT keeps the energy. Alpha is 0.
+=========================================================================*/
+
+#if defined(FFT_TRANSFORM)
+layout(local_size_x = FFT_THREADS) in;
+#else
+layout(local_size_x = 16, local_size_y = 16) in;
+#endif
+
+layout(std430, binding = 0) buffer Signal
+{
+  vec2 signal[];
+};
+
+vec2 ComplexMultiply(vec2 a, vec2 b)
+{
+  return vec2(a.x * b.x - a.y * b.y, a.x * b.y + a.y * b.x);
+}
+
+#if defined(FFT_TRANSFORM)
+
+layout(std430, binding = 1) readonly buffer Twiddles
+{
+  vec2 twiddle[]; // (cos, sin) of 2 pi m / N, m < N
+};
+
+uniform int sampleStride;
+uniform int lineStride;
+uniform int signalStride;
+uniform float direction; // -1: forward, +1: inverse
+
+#ifdef FFT_FROM_TEXTURE
+uniform sampler2D source;
+uniform ivec2 sourceSize;
+#endif
+
+shared vec2 line[FFT_N];
+
+const int radices[FFT_STAGES] = int[](FFT_RADICES);
+
+// w^m for 0 <= m < N.
+vec2 Twiddle(int m)
+{
+  vec2 w = twiddle[m];
+  return vec2(w.x, direction * w.y);
+}
+
+// One Stockham stage of radix R (at most 5) after stages whose radices multiply to ns.
+void Stage(int R, int ns)
+{
+  const int butterflies = FFT_N / R;
+  const int step = FFT_N / (ns * R);
+  vec2 results[FFT_BUTTERFLIES * 5];
+  int b = 0;
+  for (int j = int(gl_LocalInvocationID.x); j < butterflies; j += FFT_THREADS, ++b)
+  {
+    const int k = j % ns;
+    vec2 v[5];
+    v[0] = line[j];
+    for (int r = 1; r < R; ++r)
+    {
+      v[r] = ComplexMultiply(line[j + r * butterflies], Twiddle(k * r * step));
+    }
+    if (R == 2)
+    {
+      results[b * 5] = v[0] + v[1];
+      results[b * 5 + 1] = v[0] - v[1];
+    }
+    else if (R == 4)
+    {
+      // w^(N / 4) is direction * i: multiplying by it is a swap and a sign.
+      const vec2 a = v[0] + v[2], c = v[0] - v[2];
+      const vec2 e = v[1] + v[3], d = v[1] - v[3];
+      const vec2 id = direction * vec2(-d.y, d.x);
+      results[b * 5] = a + e;
+      results[b * 5 + 1] = c + id;
+      results[b * 5 + 2] = a - e;
+      results[b * 5 + 3] = c - id;
+    }
+    else
+    {
+      // The R-point DFT, its roots w^(N r q / R) from the same table.
+      for (int q = 0; q < R; ++q)
+      {
+        vec2 sum = v[0];
+        for (int r = 1; r < R; ++r)
+        {
+          sum += ComplexMultiply(v[r], Twiddle(((r * q) % R) * butterflies));
+        }
+        results[b * 5 + q] = sum;
+      }
+    }
+  }
+  barrier();
+  b = 0;
+  for (int j = int(gl_LocalInvocationID.x); j < butterflies; j += FFT_THREADS, ++b)
+  {
+    const int k = j % ns;
+    const int first = (j / ns) * ns * R + k;
+    for (int q = 0; q < R; ++q)
+    {
+      line[first + q * ns] = results[b * 5 + q];
+    }
+  }
+  barrier();
+}
+
+void main()
+{
+  const int index = int(gl_WorkGroupID.x);
+  const int s = int(gl_WorkGroupID.y);
+  const int base = s * signalStride + index * lineStride;
+  for (int i = int(gl_LocalInvocationID.x); i < FFT_N; i += FFT_THREADS)
+  {
+#ifdef FFT_FROM_TEXTURE
+    vec4 texel = vec4(0.0);
+    if (i < sourceSize.x && index < sourceSize.y)
+    {
+      texel = texelFetch(source, ivec2(i, index), 0);
+    }
+    line[i] = s == 0 ? texel.rg : vec2(texel.b, 0.0);
+#else
+    line[i] = signal[base + i * sampleStride];
+#endif
+  }
+  barrier();
+  int ns = 1;
+  for (int stage = 0; stage < FFT_STAGES; ++stage)
+  {
+    Stage(radices[stage], ns);
+    ns *= radices[stage];
+  }
+  for (int i = int(gl_LocalInvocationID.x); i < FFT_N; i += FFT_THREADS)
+  {
+    signal[base + i * sampleStride] = line[i];
+  }
+}
+
+#elif defined(FFT_SEPARATE) || defined(FFT_MULTIPLY)
+
+uniform ivec2 size; // NX, NY
+
+#ifdef FFT_SEPARATE
+layout(std430, binding = 1) writeonly buffer Spectra
+{
+  vec2 spectra[];
+};
+uniform float scale;
+#else
+layout(std430, binding = 1) readonly buffer Spectra
+{
+  vec2 spectra[];
+};
+#endif
+
+// The spectra of the real and imaginary parts of a signal whose spectrum is z at k and zm at -k.
+void Separate(vec2 z, vec2 zm, out vec2 re, out vec2 im)
+{
+  const vec2 zc = vec2(zm.x, -zm.y);
+  re = 0.5 * (z + zc);
+  const vec2 d = 0.5 * (z - zc);
+  im = vec2(d.y, -d.x); // d / i
+}
+
+void main()
+{
+  const ivec2 k = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(k, size)))
+  {
+    return;
+  }
+  const ivec2 km = (size - k) % size;
+  const int total = size.x * size.y;
+  const int p = k.y * size.x + k.x;
+  const int q = km.y * size.x + km.x;
+#ifdef FFT_SEPARATE
+  vec2 re, im;
+  Separate(signal[p], signal[q], re, im);
+  spectra[p] = scale * re;
+  spectra[total + p] = scale * im;
+  spectra[2 * total + p] = scale * signal[total + p];
+#else
+  if (q < p)
+  {
+    return; // the invocation of -k does both
+  }
+  vec2 re, im;
+  Separate(signal[p], signal[q], re, im);
+  // The red and green spectra are Hermitian: at -k they are the conjugates.
+  const vec2 gp = ComplexMultiply(im, spectra[total + p]);
+  signal[p] = ComplexMultiply(re, spectra[p]) + vec2(-gp.y, gp.x);
+  signal[total + p] = ComplexMultiply(signal[total + p], spectra[2 * total + p]);
+  if (q != p)
+  {
+    const vec2 gq = ComplexMultiply(vec2(im.x, -im.y), spectra[total + q]);
+    signal[q] = ComplexMultiply(vec2(re.x, -re.y), spectra[q]) + vec2(-gq.y, gq.x);
+    signal[total + q] = ComplexMultiply(signal[total + q], spectra[2 * total + q]);
+  }
+#endif
+}
+
+#elif defined(FFT_FOLD)
+
+layout(rgba32f, binding = 0) writeonly uniform image2D target;
+uniform ivec2 imageSize; // W, H
+uniform int radius;
+uniform int rowStride;    // NX
+uniform int signalStride; // NX NY
+
+void main()
+{
+  const ivec2 p = ivec2(gl_GlobalInvocationID.xy);
+  if (any(greaterThanEqual(p, imageSize)))
+  {
+    return;
+  }
+  vec3 sum = vec3(0.0);
+#ifdef FFT_REFLECT
+  // Positions u = p + 2 W m and u = -1 - p + 2 W m within [-radius, W + radius).
+  const ivec2 reach = ivec2(radius) / (2 * imageSize) + 1;
+  for (int my = -reach.y; my <= reach.y; ++my)
+  {
+    for (int fy = 0; fy < 2; ++fy)
+    {
+      const int v = (fy == 0 ? p.y : -1 - p.y) + 2 * imageSize.y * my;
+      if (v < -radius || v >= imageSize.y + radius)
+      {
+        continue;
+      }
+      for (int mx = -reach.x; mx <= reach.x; ++mx)
+      {
+        for (int fx = 0; fx < 2; ++fx)
+        {
+          const int u = (fx == 0 ? p.x : -1 - p.x) + 2 * imageSize.x * mx;
+          if (u < -radius || u >= imageSize.x + radius)
+          {
+            continue;
+          }
+          const int at = (v + radius) * rowStride + u + radius;
+          sum += vec3(signal[at], signal[signalStride + at].x);
+        }
+      }
+    }
+  }
+#else
+  const int at = (p.y + radius) * rowStride + p.x + radius;
+  sum = vec3(signal[at], signal[signalStride + at].x);
+#endif
+  imageStore(target, p, vec4(sum, 0.0));
+}
+
+#endif

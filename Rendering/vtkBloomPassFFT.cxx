@@ -1,0 +1,360 @@
+// PSF bloom's convolution on the GPU (see vtkBloomPassFFT.h): the buffers, the twiddle tables,
+// the kernels' spectra and the six dispatches of a convolution. The shaders are
+// glsl/vtkBloomPassFFTCS.glsl.
+#include "vtkBloomPassFFT.h"
+
+#include "vtkBloomPassChainRunner.h"
+#include "vtkBloomPassFFTCS.h"
+#include "vtkBloomVTKCompat.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace
+{
+// Work groups of the point-wise stages (separate, multiply, fold): 16 x 16.
+constexpr int Tile = 16;
+
+int Groups(int n)
+{
+  return (n + Tile - 1) / Tile;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkBloomPassFFT::vtkBloomPassFFT() = default;
+
+//------------------------------------------------------------------------------
+vtkBloomPassFFT::~vtkBloomPassFFT() = default;
+
+//------------------------------------------------------------------------------
+int vtkBloomPassFFT::GoodSize(int n)
+{
+  for (int m = std::max(n, 1);; ++m)
+  {
+    int r = m;
+    for (int p : { 2, 3, 5 })
+    {
+      while (r % p == 0)
+      {
+        r /= p;
+      }
+    }
+    if (r == 1)
+    {
+      return m;
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+std::vector<int> vtkBloomPassFFT::Radices(int n)
+{
+  // Radix 4 first: fewer stages and a butterfly with no multiplication.
+  std::vector<int> radices;
+  for (int p : { 4, 2, 3, 5 })
+  {
+    while (n % p == 0)
+    {
+      radices.push_back(p);
+      n /= p;
+    }
+  }
+  return radices;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkBloomPassFFT::TransformDefines(int n, bool fromTexture)
+{
+  // Enough invocations that each runs at most 8 butterflies of radix 2 (n <= 4096).
+  const int threads = n <= 1024 ? 64 : 256;
+  const std::vector<int> radices = Radices(n);
+  int butterflies = 1;
+  std::string list;
+  for (int r : radices)
+  {
+    butterflies = std::max(butterflies, (n / r + threads - 1) / threads);
+    list += (list.empty() ? "" : ", ") + std::to_string(r);
+  }
+  if (radices.empty())
+  {
+    list = "1"; // n == 1: no stage
+  }
+  return "#define FFT_TRANSFORM 1\n#define FFT_N " + std::to_string(n) + "\n#define FFT_THREADS " +
+    std::to_string(threads) + "\n#define FFT_STAGES " + std::to_string(radices.size()) +
+    "\n#define FFT_RADICES " + list + "\n#define FFT_BUTTERFLIES " + std::to_string(butterflies) +
+    "\n" + (fromTexture ? "#define FFT_FROM_TEXTURE 1\n" : "");
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkBloomPassFFT::Program(const std::string& defines, std::string* log)
+{
+  auto found = this->Programs.find(defines);
+  if (found != this->Programs.end())
+  {
+    return found->second;
+  }
+  std::string text = vtkBloomPassFFTCS;
+  vtkShaderProgram::Substitute(text, "//VTK::System::Dec", "#version 430 core\n" + defines);
+  const unsigned int id = vtkBloomPassChainRunner::BuildComputeProgram(text.c_str(), log);
+  this->Programs[defines] = id;
+  return id;
+}
+
+//------------------------------------------------------------------------------
+int vtkBloomPassFFT::Uniform(unsigned int program, const char* name)
+{
+  const auto key = std::make_pair(program, std::string(name));
+  auto found = this->Locations.find(key);
+  if (found == this->Locations.end())
+  {
+    found = this->Locations.emplace(key, glGetUniformLocation(program, name)).first;
+  }
+  return found->second;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::SetKernels(const Kernel kernels[3], vtkMTimeType version)
+{
+  this->Radius = 0;
+  for (int c = 0; c < 3; ++c)
+  {
+    this->Kernels[c] = kernels[c];
+    this->Radius = std::max(this->Radius, kernels[c].Radius);
+  }
+  this->KernelsVersion = version;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassFFT::Prepare(
+  vtkOpenGLRenderWindow* context, int width, int height, std::string& why)
+{
+  if (this->Context && this->Context != context)
+  {
+    this->ReleaseGraphicsResources(this->Context);
+  }
+  this->Context = context;
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  if (major * 10 + minor < 43 || !glDispatchCompute)
+  {
+    why = "PSF bloom needs OpenGL 4.3 compute shaders; this context has OpenGL " +
+      std::to_string(major) + "." + std::to_string(minor) + ".";
+    return false;
+  }
+  const int grid[2] = { GoodSize(width + 2 * this->Radius), GoodSize(height + 2 * this->Radius) };
+  if (grid[0] > MaximumLength || grid[1] > MaximumLength)
+  {
+    why = "PSF bloom's FFT grid " + std::to_string(grid[0]) + " x " + std::to_string(grid[1]) +
+      " (the image " + std::to_string(width) + " x " + std::to_string(height) +
+      " padded by the PSF radius " + std::to_string(this->Radius) + ") has a line longer than " +
+      std::to_string(MaximumLength) + " samples.";
+    return false;
+  }
+  if (grid[0] != this->Grid[0] || grid[1] != this->Grid[1])
+  {
+    this->Grid[0] = grid[0];
+    this->Grid[1] = grid[1];
+    this->AllocateBuffers();
+    this->SpectraVersion = 0;
+  }
+  this->Size[0] = width;
+  this->Size[1] = height;
+  for (const std::string& defines :
+    { TransformDefines(grid[0], true), TransformDefines(grid[0], false),
+      TransformDefines(grid[1], false), std::string("#define FFT_SEPARATE 1\n"),
+      std::string("#define FFT_MULTIPLY 1\n"), std::string("#define FFT_FOLD 1\n"),
+      std::string("#define FFT_FOLD 1\n#define FFT_REFLECT 1\n") })
+  {
+    std::string log;
+    if (!this->Program(defines, &log))
+    {
+      why = "A PSF bloom FFT program did not build: " + log;
+      return false;
+    }
+  }
+  if (this->SpectraVersion != this->KernelsVersion)
+  {
+    this->MakeSpectra();
+    this->SpectraVersion = this->KernelsVersion;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::AllocateBuffers()
+{
+  const GLsizeiptr samples = static_cast<GLsizeiptr>(this->Grid[0]) * this->Grid[1];
+  if (!this->SignalBuffer)
+  {
+    glGenBuffers(1, &this->SignalBuffer);
+    glGenBuffers(1, &this->SpectraBuffer);
+    glGenBuffers(2, this->TwiddleBuffers);
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->SignalBuffer);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, 2 * samples * 2 * sizeof(float), nullptr, GL_DYNAMIC_COPY);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->SpectraBuffer);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, 3 * samples * 2 * sizeof(float), nullptr, GL_DYNAMIC_COPY);
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    // cos and sin of 2 pi m / N in double, rounded once to float.
+    const int n = this->Grid[axis];
+    std::vector<float> table(2 * static_cast<size_t>(n));
+    for (int m = 0; m < n; ++m)
+    {
+      const double angle = 2.0 * 3.14159265358979323846 * m / n;
+      table[2 * m] = static_cast<float>(std::cos(angle));
+      table[2 * m + 1] = static_cast<float>(std::sin(angle));
+    }
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->TwiddleBuffers[axis]);
+    glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(table.size() * sizeof(float)),
+      table.data(), GL_STATIC_DRAW);
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::MakeSpectra()
+{
+  // The kernels as one RGBA32F texture of the largest kernel's window, each centred in it.
+  const int r = this->Radius, n = 2 * r + 1;
+  std::vector<float> texels(static_cast<size_t>(n) * n * 4, 0.0f);
+  for (int c = 0; c < 3; ++c)
+  {
+    const Kernel& kernel = this->Kernels[c];
+    const int kn = 2 * kernel.Radius + 1, offset = r - kernel.Radius;
+    for (int y = 0; y < kn; ++y)
+    {
+      for (int x = 0; x < kn; ++x)
+      {
+        texels[(static_cast<size_t>(y + offset) * n + x + offset) * 4 + c] =
+          static_cast<float>(kernel.Values[static_cast<size_t>(y) * kn + x]);
+      }
+    }
+  }
+  if (this->KernelTexture)
+  {
+    this->KernelTexture->ReleaseGraphicsResources(this->Context);
+  }
+  this->KernelTexture = vtkSmartPointer<vtkTextureObject>::New();
+  this->KernelTexture->SetContext(this->Context);
+  this->KernelTexture->SetInternalFormat(GL_RGBA32F);
+  this->KernelTexture->Create2DFromRaw(n, n, 4, VTK_FLOAT, texels.data());
+  const int size[2] = { n, n };
+  this->Transform(0, -1.0f, this->KernelTexture, size);
+  this->Transform(1, -1.0f, nullptr, size);
+  // Separate the red and green spectra, scaled by the inverse transform's 1 / (NX NY).
+  const unsigned int program = this->Program("#define FFT_SEPARATE 1\n");
+  glUseProgram(program);
+  glUniform2i(this->Uniform(program, "size"), this->Grid[0], this->Grid[1]);
+  glUniform1f(this->Uniform(program, "scale"),
+    static_cast<float>(1.0 / (static_cast<double>(this->Grid[0]) * this->Grid[1])));
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->SignalBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->SpectraBuffer);
+  glDispatchCompute(Groups(this->Grid[0]), Groups(this->Grid[1]), 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  this->KernelTexture->ReleaseGraphicsResources(this->Context);
+  this->KernelTexture = nullptr;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::Transform(
+  int axis, float direction, vtkTextureObject* source, const int sourceSize[2])
+{
+  const int n = this->Grid[axis];
+  const unsigned int program = this->Program(TransformDefines(n, source != nullptr));
+  glUseProgram(program);
+  // Rows: samples adjacent, lines NX apart; columns: samples NX apart, lines adjacent.
+  glUniform1i(this->Uniform(program, "sampleStride"), axis == 0 ? 1 : this->Grid[0]);
+  glUniform1i(this->Uniform(program, "lineStride"), axis == 0 ? this->Grid[0] : 1);
+  glUniform1i(this->Uniform(program, "signalStride"), this->Grid[0] * this->Grid[1]);
+  glUniform1f(this->Uniform(program, "direction"), direction);
+  if (source)
+  {
+    source->Activate();
+    glUniform1i(this->Uniform(program, "source"), source->GetTextureUnit());
+    glUniform2i(this->Uniform(program, "sourceSize"), sourceSize[0], sourceSize[1]);
+  }
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->SignalBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->TwiddleBuffers[axis]);
+  glDispatchCompute(this->Grid[1 - axis], 2, 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  if (source)
+  {
+    source->Deactivate();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::Convolve(vtkTextureObject* source, vtkTextureObject* target, bool reflect)
+{
+  this->Transform(0, -1.0f, source, this->Size);
+  this->Transform(1, -1.0f, nullptr, this->Size);
+  const unsigned int multiply = this->Program("#define FFT_MULTIPLY 1\n");
+  glUseProgram(multiply);
+  glUniform2i(this->Uniform(multiply, "size"), this->Grid[0], this->Grid[1]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->SignalBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->SpectraBuffer);
+  glDispatchCompute(Groups(this->Grid[0]), Groups(this->Grid[1]), 1);
+  glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  this->Transform(1, 1.0f, nullptr, this->Size);
+  this->Transform(0, 1.0f, nullptr, this->Size);
+  const unsigned int fold =
+    this->Program(reflect ? "#define FFT_FOLD 1\n#define FFT_REFLECT 1\n" : "#define FFT_FOLD 1\n");
+  glUseProgram(fold);
+  glUniform2i(this->Uniform(fold, "imageSize"), this->Size[0], this->Size[1]);
+  glUniform1i(this->Uniform(fold, "radius"), this->Radius);
+  glUniform1i(this->Uniform(fold, "rowStride"), this->Grid[0]);
+  glUniform1i(this->Uniform(fold, "signalStride"), this->Grid[0] * this->Grid[1]);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->SignalBuffer);
+  glBindImageTexture(0, target->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glDispatchCompute(Groups(this->Size[0]), Groups(this->Size[1]), 1);
+  // The composite reads the target by texelFetch or imageLoad next.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+    GL_SHADER_STORAGE_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  for (GLuint binding : { 0u, 1u })
+  {
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, binding, 0);
+  }
+  // VTK's shader cache must know that its last program is no longer bound.
+  this->Context->GetShaderCache()->ReleaseCurrentShader();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::ReleaseGraphicsResources(vtkWindow* w)
+{
+  if (this->Context)
+  {
+    for (const auto& program : this->Programs)
+    {
+      if (program.second)
+      {
+        glDeleteProgram(program.second);
+      }
+    }
+    if (this->SignalBuffer)
+    {
+      glDeleteBuffers(1, &this->SignalBuffer);
+      glDeleteBuffers(1, &this->SpectraBuffer);
+      glDeleteBuffers(2, this->TwiddleBuffers);
+    }
+  }
+  if (this->KernelTexture)
+  {
+    this->KernelTexture->ReleaseGraphicsResources(w);
+    this->KernelTexture = nullptr;
+  }
+  this->Programs.clear();
+  this->Locations.clear();
+  this->SignalBuffer = this->SpectraBuffer = 0;
+  this->TwiddleBuffers[0] = this->TwiddleBuffers[1] = 0;
+  this->Grid[0] = this->Grid[1] = 0;
+  this->SpectraVersion = 0;
+  this->Context = nullptr;
+}

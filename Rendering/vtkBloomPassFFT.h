@@ -1,0 +1,127 @@
+/**
+ * @file   vtkBloomPassFFT.h
+ * @brief  (private to vtkBloomPass) PSF bloom's convolution on the GPU: a float RGBA texture
+ *         convolved with one point-spread function per colour channel through a 2-D FFT in
+ *         compute shaders (OpenGL 4.3), as vtkBloomPSFConvolution::Convolve does on the CPU.
+ *
+ * For a W x H image and kernels k_c of radius R (the largest of the three; a smaller kernel is
+ * centred in the larger window), out_c = fold(b_c * k_c): the full linear convolution
+ * (W + 2R) x (H + 2R) of the zero-padded grid NX x NY (NX >= W + 2R, NY >= H + 2R, products
+ * of 2, 3 and 5, so nothing wraps around), then what falls outside the image folded back by
+ * half-sample reflection (REFLECT: energy conserved) or dropped (ZERO). Alpha is 0.
+ *
+ * The real channels are transformed two at a time as one complex signal: z = R + i G and
+ * B + i 0 (two complex 2-D transforms for three real channels). After the forward transform
+ * the multiply separates the spectra of R and G by Hermitian symmetry,
+ * R^[k] = (Z[k] + conj Z[-k]) / 2, G^[k] = (Z[k] - conj Z[-k]) / (2 i), multiplies each by its
+ * kernel's spectrum and recombines them as Y = R^ KR + i G^ KG, whose inverse is
+ * (r * kR) + i (g * kG), both parts real. The kernels' spectra are made the same way, once per
+ * kernel set and grid (SetKernels / Prepare), scaled by 1 / (NX NY).
+ *
+ * Per convolution: the row transforms (reading the texture), the column transforms, the
+ * multiply, the inverse columns, the inverse rows and the fold: six dispatches, each line in
+ * shared memory (one work group per line and signal). Storage is float32: two shader storage
+ * buffers of 2 NX NY vec2 (the signals) and 3 NX NY vec2 (the kernels' spectra), and one
+ * twiddle table per axis, cos and sin of 2 pi m / N computed in double. A line longer than
+ * 4096 samples does not fit the 32 KiB of shared memory every OpenGL 4.3 context has: Prepare
+ * refuses such a grid.
+ *
+ * The programs are plain OpenGL (VTK 9.1's shader classes have no compute stage), from
+ * glsl/vtkBloomPassFFTCS.glsl and a #define preamble, made on first use.
+ */
+
+#ifndef vtkBloomPassFFT_h
+#define vtkBloomPassFFT_h
+
+#include "vtkSmartPointer.h" // For the kernel texture
+#include "vtkType.h"         // For vtkMTimeType
+
+#include <map>
+#include <string>
+#include <vector>
+
+class vtkOpenGLRenderWindow;
+class vtkTextureObject;
+class vtkWindow;
+
+class vtkBloomPassFFT
+{
+public:
+  vtkBloomPassFFT();
+  ~vtkBloomPassFFT();
+  vtkBloomPassFFT(const vtkBloomPassFFT&) = delete;
+  vtkBloomPassFFT& operator=(const vtkBloomPassFFT&) = delete;
+
+  /// One colour channel's kernel: (2 Radius + 1)^2 values, row-major, centred on (R, R).
+  struct Kernel
+  {
+    int Radius = 0;
+    std::vector<double> Values;
+  };
+
+  /// The longest line one dispatch transforms: 4096 vec2 fill 32 KiB of shared memory.
+  static constexpr int MaximumLength = 4096;
+
+  /// The smallest n' >= n whose prime factors are 2, 3 and 5.
+  static int GoodSize(int n);
+
+  /// The radices of n (a product of 2, 3 and 5) in the order the stages run: 4s, a 2, 3s, 5s.
+  static std::vector<int> Radices(int n);
+
+  /**
+   * Use `kernels` (red, green, blue) from now on, identified by `version` (not 0): the spectra are
+   * made again only when the version, or the grid, changes.
+   */
+  void SetKernels(const Kernel kernels[3], vtkMTimeType version);
+  vtkMTimeType GetKernelsVersion() const { return this->KernelsVersion; }
+
+  /**
+   * Make the grid, the buffers, the programs and (where stale) the kernels' spectra for
+   * width x height images in `context`. False, with the reason in `why`, when the context has
+   * no compute shaders, a program does not build or the grid has a line longer than
+   * MaximumLength.
+   */
+  bool Prepare(vtkOpenGLRenderWindow* context, int width, int height, std::string& why);
+
+  /**
+   * target = `source` (width x height, RGBA float, the prepared size) convolved with the
+   * kernels, REFLECT or ZERO borders; `target` an RGBA32F texture of the same size.
+   */
+  void Convolve(vtkTextureObject* source, vtkTextureObject* target, bool reflect);
+
+  /// The padded grid (NX, NY) of the last Prepare.
+  const int* GetGridSize() const { return this->Grid; }
+
+  void ReleaseGraphicsResources(vtkWindow* w);
+
+private:
+  /// The forward (direction -1) or inverse (+1) transform of every line along `axis` (0: rows,
+  /// 1: columns) of both signals; rows may read `source` instead of the buffer.
+  void Transform(int axis, float direction, vtkTextureObject* source, const int sourceSize[2]);
+  /// The compute program of `defines`, made on first use; 0 when it does not build (the
+  /// compiler's log in `log`, when given).
+  unsigned int Program(const std::string& defines, std::string* log = nullptr);
+  /// The defines of the transform along a line of n samples.
+  static std::string TransformDefines(int n, bool fromTexture);
+  /// Upload the kernels and compute their spectra into SpectraBuffer.
+  void MakeSpectra();
+  int Uniform(unsigned int program, const char* name);
+  void AllocateBuffers();
+
+  vtkOpenGLRenderWindow* Context = nullptr;
+  Kernel Kernels[3];
+  int Radius = 0;
+  vtkMTimeType KernelsVersion = 0;
+  vtkMTimeType SpectraVersion = 0; ///< the kernels' version the spectra were made for; 0: none
+  int Size[2] = { 0, 0 };          ///< the image
+  int Grid[2] = { 0, 0 };          ///< NX, NY
+  unsigned int SignalBuffer = 0;
+  unsigned int SpectraBuffer = 0;
+  unsigned int TwiddleBuffers[2] = { 0, 0 }; ///< per axis
+  vtkSmartPointer<vtkTextureObject> KernelTexture;
+  std::map<std::string, unsigned int> Programs;
+  std::map<std::pair<unsigned int, std::string>, int> Locations;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkBloomPassFFT.h

@@ -1,0 +1,409 @@
+// Tests of vtkBloomPass's PSF mode (vtkBloomParameters::BLOOM_PSF; the FFT of
+// vtkBloomPassFFT): the GPU against vtkImageBloom's PSF mode on the same float render for each
+// kind of PSF, both borders, an odd and an even size and a PSF as wide as the frame; the energy
+// of the bloom term with REFLECT; a delta's bloom against the PSF itself, per channel.
+#include "vtkBloomExampleScenes.h"
+#include "vtkBloomParameters.h"
+#include "vtkBloomPass.h"
+#include "vtkBloomPassTestWindow.h"
+
+#include "vtkBloomVTKCompat.h"
+#include "vtkCommand.h"
+#include "vtkFloatArray.h"
+#include "vtkImageBloom.h"
+#include "vtkImageBloomThreshold.h"
+#include "vtkImageData.h"
+#include "vtkImageSeparableGaussian.h"
+#include "vtkNew.h"
+#include "vtkPointData.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace
+{
+enum PSFKind
+{
+  AIRY,
+  GAUSSIANS,
+  IMAGE
+};
+
+// A non-symmetric, per-channel PSF image (2 r + 1 square, 3 components): a flip, a transpose
+// or a swap of channels changes the convolution.
+vtkSmartPointer<vtkImageData> LopsidedPSF(int r)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(2 * r + 1, 2 * r + 1, 1);
+  image->AllocateScalars(VTK_DOUBLE, 3);
+  vtkDataArray* values = image->GetPointData()->GetScalars();
+  for (int y = 0; y <= 2 * r; ++y)
+  {
+    for (int x = 0; x <= 2 * r; ++x)
+    {
+      const double dx = x - r, dy = y - r;
+      const vtkIdType p = static_cast<vtkIdType>(y) * (2 * r + 1) + x;
+      values->SetComponent(p, 0, std::exp(-(dx * dx + 4.0 * dy * dy) / (r * r)) * (x > r ? 2 : 1));
+      values->SetComponent(p, 1, std::exp(-(4.0 * dx * dx + dy * dy) / (r * r)) * (y > r ? 3 : 1));
+      values->SetComponent(p, 2, 1.0 / (1.0 + std::abs(dx + 0.5 * dy)) + (x + y) % 3);
+    }
+  }
+  return image;
+}
+
+// PSF mode of `kind` with `radius` (-1: automatic) and `border` on `parameters`.
+void SetPSF(vtkBloomParameters* parameters, PSFKind kind, int radius, int border)
+{
+  parameters->SetBloomModeToPSF();
+  parameters->SetPSFRadius(radius);
+  parameters->SetPSFBorderMode(border);
+  switch (kind)
+  {
+    case AIRY:
+      parameters->SetPSFType(vtkBloomParameters::PSF_AIRY);
+      parameters->SetAiryRadius(2.5);
+      break;
+    case GAUSSIANS:
+      parameters->SetPSFType(vtkBloomParameters::PSF_GAUSSIANS);
+      parameters->SetPSFGaussians(
+        { 2.0, 9.0, radius > 0 ? radius / 3.0 : 20.0 }, { 1.0, 0.3, 0.1 });
+      break;
+    case IMAGE:
+      parameters->SetPSFType(vtkBloomParameters::PSF_IMAGE);
+      parameters->SetPSFImage(LopsidedPSF(radius > 0 ? radius : 15));
+      break;
+  }
+}
+
+// Relative L2 over the colour channels of two RGBA float images of the same size.
+double ColourRelativeL2(vtkImageData* a, vtkImageData* b)
+{
+  double num = 0.0, den = 0.0;
+  for (vtkIdType p = 0; p < a->GetNumberOfPoints(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double x = a->GetPointData()->GetScalars()->GetComponent(p, c);
+      const double y = b->GetPointData()->GetScalars()->GetComponent(p, c);
+      num += (x - y) * (x - y);
+      den += y * y;
+    }
+  }
+  return std::sqrt(num / std::max(den, 1e-300));
+}
+
+// Relative L2 of the bloom terms (result - scene) of the GPU and the CPU.
+double BloomRelativeL2(vtkImageData* scene, vtkImageData* gpu, vtkImageData* cpu)
+{
+  double num = 0.0, den = 0.0;
+  for (vtkIdType p = 0; p < scene->GetNumberOfPoints(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double s = scene->GetPointData()->GetScalars()->GetComponent(p, c);
+      const double x = gpu->GetPointData()->GetScalars()->GetComponent(p, c) - s;
+      const double y = cpu->GetPointData()->GetScalars()->GetComponent(p, c) - s;
+      num += (x - y) * (x - y);
+      den += y * y;
+    }
+  }
+  return std::sqrt(num / std::max(den, 1e-300));
+}
+
+struct Agreement
+{
+  double Colour = 1.0; ///< relative L2 of the composited colour
+  double Bloom = 1.0;  ///< relative L2 of the bloom term alone
+};
+
+// GPU PSF bloom vs vtkImageBloom's PSF mode (REFERENCE) on the same float render.
+Agreement PSFAgreement(PSFKind kind, int radius, int border, int width, int height)
+{
+  BloomWindow w(width, height);
+  EXPECT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
+  w.Bloom->SetEmissionSourceToScene();
+  w.Bloom->SetFloatPrecisionTo32Bit();
+  SetPSF(w.Bloom->GetParameters(), kind, radius, border);
+  w.Bloom->CaptureResultOn();
+  w.Window->Render();
+  EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
+  vtkNew<vtkImageData> scene, gpu;
+  EXPECT_TRUE(w.Bloom->ReadSceneImage(scene));
+  EXPECT_TRUE(w.Bloom->ReadResultImage(gpu));
+  EXPECT_FALSE(w.Bloom->GetLastBloomSkipped());
+
+  vtkNew<vtkImageBloom> cpu;
+  cpu->SetParameters(w.Bloom->GetParameters());
+  cpu->SetExecutionMode(vtkImageBloom::REFERENCE);
+  cpu->SetInputData(scene);
+  cpu->Update();
+  Agreement a;
+  a.Colour = ColourRelativeL2(gpu, cpu->GetOutput());
+  a.Bloom = BloomRelativeL2(scene, gpu, cpu->GetOutput());
+  // The bloom must change the image, or agreement would be trivial.
+  EXPECT_GT(ColourRelativeL2(scene, cpu->GetOutput()), 1e-3);
+  return a;
+}
+
+// One float RGBA image, zero but for `value` at (x, y) in every colour channel.
+vtkSmartPointer<vtkImageData> Delta(int width, int height, int x, int y, double value)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_FLOAT, 4);
+  auto* values = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+  values->FillValue(0.0f);
+  for (int c = 0; c < 3; ++c)
+  {
+    values->SetComponent(static_cast<vtkIdType>(y) * width + x, c, value);
+  }
+  return image;
+}
+
+// Every parameter that makes the result scene + PSF * scene: no threshold, strength 1, white.
+void PassEverything(vtkBloomParameters* parameters)
+{
+  parameters->SetThresholdMode(vtkImageBloomThreshold::NONE);
+  parameters->SetCompositeMode(vtkBloomParameters::ADDITIVE);
+  parameters->SetStrength(1.0);
+  parameters->SetTint(1.0, 1.0, 1.0);
+}
+
+// Counts the error events of the object it observes.
+class ErrorCount : public vtkCommand
+{
+public:
+  static ErrorCount* New() { return new ErrorCount; }
+  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
+  int Count = 0;
+};
+
+const char* BorderName(int border)
+{
+  return border == vtkImageSeparableGaussian::REFLECT ? "REFLECT" : "ZERO";
+}
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, AgreesWithTheCPUFilterForEveryPSFAndBorder)
+{
+  for (int border :
+    { int(vtkImageSeparableGaussian::REFLECT), int(vtkImageSeparableGaussian::ZERO) })
+  {
+    for (PSFKind kind : { AIRY, GAUSSIANS, IMAGE })
+    {
+      for (const auto& size : { std::make_pair(301, 207), std::make_pair(256, 160) })
+      {
+        // Airy's automatic radius (12 rings of the reddest channel), the others 40 pixels.
+        const Agreement a =
+          PSFAgreement(kind, kind == AIRY ? -1 : 40, border, size.first, size.second);
+        std::cout << "PSF " << kind << " " << BorderName(border) << " " << size.first << "x"
+                  << size.second << ": colour " << a.Colour << ", bloom " << a.Bloom << "\n";
+        EXPECT_LE(a.Colour, 1e-5) << "PSF kind " << kind << ", " << BorderName(border) << ", "
+                                  << size.first << "x" << size.second;
+        EXPECT_LE(a.Bloom, 1e-5) << "PSF kind " << kind << ", " << BorderName(border);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, AgreesWithTheCPUFilterForAPSFWiderThanTheFrame)
+{
+  // Radius 301 at 301 x 207: a grid of 960 x 810 (radices 4, 2, 3 and 5), and REFLECT folds
+  // light back more than once across the frame.
+  for (int border :
+    { int(vtkImageSeparableGaussian::REFLECT), int(vtkImageSeparableGaussian::ZERO) })
+  {
+    for (PSFKind kind : { GAUSSIANS, IMAGE })
+    {
+      const Agreement a = PSFAgreement(kind, 301, border, 301, 207);
+      std::cout << "wide PSF " << kind << " " << BorderName(border) << ": colour " << a.Colour
+                << ", bloom " << a.Bloom << "\n";
+      EXPECT_LE(a.Colour, 1e-5) << "PSF kind " << kind << ", " << BorderName(border);
+      EXPECT_LE(a.Bloom, 1e-5) << "PSF kind " << kind << ", " << BorderName(border);
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, AgreesWithTheCPUFilterForAnAiryPatternWiderThanTheFrame)
+{
+  // A smaller frame: an Airy pattern costs 25 Bessel evaluations per PSF sample.
+  for (int border :
+    { int(vtkImageSeparableGaussian::REFLECT), int(vtkImageSeparableGaussian::ZERO) })
+  {
+    const Agreement a = PSFAgreement(AIRY, 64, border, 64, 48);
+    std::cout << "wide Airy " << BorderName(border) << ": colour " << a.Colour << ", bloom "
+              << a.Bloom << "\n";
+    EXPECT_LE(a.Colour, 1e-5) << BorderName(border);
+    EXPECT_LE(a.Bloom, 1e-5) << BorderName(border);
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, FollowsAChangeOfPSFOrStrengthBetweenFrames)
+{
+  // The PSFs and their spectra are kept between frames: a new PSF must replace them, a new
+  // strength must not need them remade. Each frame is checked against the filter.
+  BloomWindow w(150, 100);
+  ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
+  w.Bloom->SetEmissionSourceToScene();
+  w.Bloom->SetFloatPrecisionTo32Bit();
+  w.Bloom->CaptureResultOn();
+  vtkBloomParameters* parameters = w.Bloom->GetParameters();
+  SetPSF(parameters, GAUSSIANS, 30, vtkImageSeparableGaussian::REFLECT);
+  vtkNew<vtkImageBloom> cpu;
+  cpu->SetParameters(parameters);
+  auto check = [&](const char* what)
+  {
+    w.Window->Render();
+    vtkNew<vtkImageData> scene, gpu;
+    ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
+    ASSERT_TRUE(w.Bloom->ReadResultImage(gpu));
+    cpu->SetInputData(scene);
+    cpu->Update();
+    EXPECT_LE(ColourRelativeL2(gpu, cpu->GetOutput()), 1e-5) << what;
+  };
+  check("first PSF");
+  parameters->SetPSFGaussians({ 1.0, 6.0 }, { 1.0, 0.5 });
+  check("new Gaussians");
+  parameters->SetStrength(0.25);
+  check("new strength");
+  parameters->SetPSFType(vtkBloomParameters::PSF_IMAGE);
+  parameters->SetPSFImage(LopsidedPSF(12));
+  check("an image PSF");
+  parameters->SetPSFBorderMode(vtkImageSeparableGaussian::ZERO);
+  check("ZERO borders");
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, ReflectConservesTheBrightPassEnergy)
+{
+  for (PSFKind kind : { GAUSSIANS, IMAGE })
+  {
+    BloomWindow w(301, 207);
+    ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
+    w.Bloom->SetEmissionSourceToScene();
+    w.Bloom->SetFloatPrecisionTo32Bit();
+    SetPSF(w.Bloom->GetParameters(), kind, 120, vtkImageSeparableGaussian::REFLECT);
+    PassEverything(w.Bloom->GetParameters());
+    w.Bloom->CaptureResultOn();
+    w.Window->Render();
+    vtkNew<vtkImageData> scene, result;
+    ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
+    ASSERT_TRUE(w.Bloom->ReadResultImage(result));
+    // With no threshold the bright pass is the scene's colour.
+    double bright = 0.0, bloom = 0.0;
+    for (vtkIdType p = 0; p < scene->GetNumberOfPoints(); ++p)
+    {
+      for (int c = 0; c < 3; ++c)
+      {
+        const double s = scene->GetPointData()->GetScalars()->GetComponent(p, c);
+        bright += s;
+        bloom += result->GetPointData()->GetScalars()->GetComponent(p, c) - s;
+      }
+    }
+    ASSERT_GT(bright, 0.0);
+    const double error = std::abs(bloom - bright) / bright;
+    std::cout << "energy " << kind << ": relative error " << error << "\n";
+    EXPECT_LE(error, 1e-5) << "PSF kind " << kind << ": bloom " << bloom << ", bright " << bright;
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, ADeltaBloomsIntoThePSFItself)
+{
+  // A delta away from the borders (ZERO: nothing folds) blooms into its channel's PSF, centred
+  // on it: out(x0 + dx, y0 + dy) = k_c(R + dx, R + dy). A wrong twiddle, stage, separation of
+  // red from green, or a flipped axis all break it.
+  const int width = 97, height = 75, r = 20, x0 = 40, y0 = 33;
+  BloomWindow w(8, 8);
+  w.Bloom->SetFloatPrecisionTo32Bit();
+  vtkBloomParameters* parameters = w.Bloom->GetParameters();
+  SetPSF(parameters, IMAGE, r, vtkImageSeparableGaussian::ZERO);
+  PassEverything(parameters);
+  vtkNew<vtkImageData> output;
+  ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), Delta(width, height, x0, y0, 1.0), output));
+  vtkNew<vtkImageBloom> cpu;
+  cpu->SetParameters(parameters);
+  // The delta's own pixel holds 1 + k(R, R) in float: its rounding (2^-24) is checked apart.
+  double worst = 0.0, largest = 0.0, centre = 0.0;
+  for (int c = 0; c < 3; ++c)
+  {
+    int radius = 0;
+    const std::vector<double> kernel = cpu->ComputePSF(c, radius);
+    ASSERT_EQ(radius, r);
+    for (int y = 0; y < height; ++y)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        const int kx = x - x0 + r, ky = y - y0 + r;
+        const bool inside = kx >= 0 && kx <= 2 * r && ky >= 0 && ky <= 2 * r;
+        const double k = inside ? kernel[static_cast<size_t>(ky) * (2 * r + 1) + kx] : 0.0;
+        const vtkIdType p = static_cast<vtkIdType>(y) * width + x;
+        const double got = output->GetPointData()->GetScalars()->GetComponent(p, c);
+        if (x == x0 && y == y0)
+        {
+          centre = std::max(centre, std::abs(got - 1.0 - k));
+          continue;
+        }
+        worst = std::max(worst, std::abs(got - k));
+        largest = std::max(largest, k);
+      }
+    }
+  }
+  std::cout << "delta: largest error " << worst << " for a PSF peak of " << largest
+            << "; at the delta " << centre << "\n";
+  EXPECT_LE(worst, 1e-5 * largest);
+  EXPECT_LE(centre, 2e-7);
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, WithoutComputeShadersTheSceneRendersUnbloomedWithOneError)
+{
+  // vtkBloomPass::SimulateComputeShaderFailure stands for a context without OpenGL 4.3.
+  BloomWindow w(120, 90);
+  ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
+  w.Bloom->SetEmissionSourceToScene();
+  w.Bloom->SetFloatPrecisionTo32Bit();
+  w.Bloom->GetParameters()->SetBloomModeToPSF();
+  w.Bloom->SetSimulateComputeShaderFailure(true);
+  w.Bloom->CaptureResultOn();
+  vtkNew<ErrorCount> errors;
+  w.Bloom->AddObserver(vtkCommand::ErrorEvent, errors);
+  for (int frame = 0; frame < 3; ++frame)
+  {
+    w.Window->Render();
+  }
+  EXPECT_EQ(errors->Count, 1);
+  EXPECT_TRUE(w.Bloom->GetLastBloomSkipped());
+  vtkNew<vtkImageData> scene, result;
+  ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
+  ASSERT_TRUE(w.Bloom->ReadResultImage(result));
+  EXPECT_EQ(ColourRelativeL2(result, scene), 0.0);
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, ThePyramidModeIsUnchangedAfterPSFMode)
+{
+  // Switching PSF mode on and off again renders the pyramid's bloom as before, bit for bit.
+  BloomWindow w(160, 120);
+  ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
+  w.Bloom->SetEmissionSourceToScene();
+  w.Bloom->CaptureResultOn();
+  w.Window->Render();
+  vtkNew<vtkImageData> before, psf, after;
+  ASSERT_TRUE(w.Bloom->ReadResultImage(before));
+  w.Bloom->GetParameters()->SetBloomModeToPSF();
+  w.Window->Render();
+  ASSERT_TRUE(w.Bloom->ReadResultImage(psf));
+  EXPECT_GT(ColourRelativeL2(psf, before), 1e-3);
+  w.Bloom->GetParameters()->SetBloomMode(vtkBloomParameters::BLOOM_PYRAMID);
+  w.Window->Render();
+  ASSERT_TRUE(w.Bloom->ReadResultImage(after));
+  EXPECT_EQ(ColourRelativeL2(after, before), 0.0);
+}
