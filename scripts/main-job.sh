@@ -55,6 +55,20 @@ for scene in $("$gpu_tool" render --list); do
   echo "main-job: rendered $scene: $out/$scene-comparison.png"
 done
 
+# PSF bloom live in the pass (its compute-shader FFT) beside the CPU filter on the same float
+# render: the same bright pass, Airy pattern and composite on both sides.
+psf_options=(--psf airy --airy-radius 12 --mode smoothstep --threshold 1 --knee 0.5
+  --clamp-luminance 1000 --strength 1.5 --composite additive --tint 1,1,1)
+env -u DISPLAY "$gpu_tool" render --no-bloom lit-spheres "$out/lit-spheres-float.exr"
+env -u DISPLAY "$gpu_tool" render "${psf_options[@]}" lit-spheres "$out/lit-spheres-psf-pass.exr"
+"$tool" image "${psf_options[@]}" "$out/lit-spheres-float.exr" "$out/lit-spheres-psf-cpu.exr"
+for side in pass cpu; do
+  "$tool" blur --radius 0 "$out/lit-spheres-psf-$side.exr" "$out/lit-spheres-psf-$side.png"
+done
+/usr/bin/python3 "$root/scripts/lib/side-by-side.py" --scale 0.5 "$out/psf-pass-comparison.png" \
+  "$out/lit-spheres-psf-pass.png" "$out/lit-spheres-psf-cpu.png"
+echo "main-job: PSF bloom by the pass and by the filter: $out/psf-pass-comparison.png"
+
 # The user's own data: a dataset written by an example program, rendered by `vtk-bloom render
 # FILE`, only its hottest range glowing (selective bloom through the pass's emitters).
 "$root/build-osmesa/bin/WriteHeatedPlate" "$out/heated-plate.vtp"
