@@ -30,6 +30,35 @@ int Groups(int n)
   return (n + Tile - 1) / Tile;
 }
 
+// The outputs that input sample i reaches through the operator's weights rounded to float (the
+// direct pass's weights: a far tail that underflows there reaches nothing), [lo[i], hi[i]],
+// made monotone so that a range's reach is its ends', as vtkBloomFFTConvolution's own reach.
+void FloatReach(const vtkBloomLinearOperator& op, int* lo, int* hi)
+{
+  const int n = op.InputSize;
+  std::fill(lo, lo + n, n);
+  std::fill(hi, hi + n, -1);
+  for (int j = 0; j < op.OutputSize; ++j)
+  {
+    for (int k = 0; k < op.Width && op.First[j] + k < n; ++k)
+    {
+      if (static_cast<float>(op.Weights[static_cast<size_t>(j) * op.Width + k]) != 0.0f)
+      {
+        lo[op.First[j] + k] = std::min(lo[op.First[j] + k], j);
+        hi[op.First[j] + k] = std::max(hi[op.First[j] + k], j);
+      }
+    }
+  }
+  for (int i = n - 2; i >= 0; --i)
+  {
+    lo[i] = std::min(lo[i], lo[i + 1]);
+  }
+  for (int i = 1; i < n; ++i)
+  {
+    hi[i] = std::max(hi[i], hi[i - 1]);
+  }
+}
+
 std::string FinishDefines(int axis, unsigned int format)
 {
   return "#define FFT_AXIS " + std::to_string(axis) + "\n#define FFT_BLUR_FINISH 1\n" +
@@ -73,7 +102,8 @@ struct vtkBloomPassFFTBlur::Operator
   unsigned int Factors = 0;  ///< each block's V, then its U
   unsigned int Twiddles = 0; ///< vtkBloomPassFFT::TwiddleTable(N)
 
-  void Upload(int border);
+  bool NonNegative = false; ///< every weight is >= 0
+  void Upload(const vtkBloomLinearOperator& op, int border);
   void Release()
   {
     for (unsigned int* b : { &this->Spectrum, &this->Tables, &this->Factors, &this->Twiddles })
@@ -88,7 +118,7 @@ struct vtkBloomPassFFTBlur::Operator
 };
 
 //------------------------------------------------------------------------------
-void vtkBloomPassFFTBlur::Operator::Upload(int border)
+void vtkBloomPassFFTBlur::Operator::Upload(const vtkBloomLinearOperator& op, int border)
 {
   const vtkBloomFFTConvolution& c = this->Convolution;
   const int n = this->Size, padded = n + c.GetPadLeft() + c.GetPadRight();
@@ -109,8 +139,7 @@ void vtkBloomPassFFTBlur::Operator::Upload(int border)
   {
     tables[m] = vtkBloomLinearOperator::FoldIndex(m - this->PadLeft, n, border);
   }
-  std::copy(c.GetReachLo().begin(), c.GetReachLo().end(), tables.begin() + this->N);
-  std::copy(c.GetReachHi().begin(), c.GetReachHi().end(), tables.begin() + this->N + n);
+  FloatReach(op, tables.data() + this->N, tables.data() + this->N + n);
   std::vector<float> factors;
   const std::vector<vtkBloomFFTConvolution::Block>& blocks = c.GetCorrections();
   for (size_t b = 0; b < blocks.size() && b < 2; ++b)
@@ -180,7 +209,9 @@ vtkBloomPassFFTBlur::Operator* vtkBloomPassFFTBlur::Prepare(
     cost += static_cast<double>(b.Rank) * (b.Rows + b.Cols);
   }
   o.Cheaper = cost < vtkBloomFFTConvolution::DirectCost(op);
-  o.Upload(border);
+  o.NonNegative =
+    std::all_of(op.Weights.begin(), op.Weights.end(), [](double w) { return w >= 0.0; });
+  o.Upload(op, border);
   o.Usable = true;
   return &o;
 }
@@ -283,7 +314,7 @@ bool vtkBloomPassFFTBlur::Convolve(const vtkBloomLinearOperator& op, int axis, i
   const int ranks = o.Rank[0] + o.Rank[1];
   this->Reserve(2 * static_cast<size_t>(lines) * o.Size * 2 * sizeof(float),
     2 * static_cast<size_t>(lines) * std::max(ranks, 1) * 2 * sizeof(float),
-    2 * static_cast<size_t>(lines) * 2 * sizeof(int));
+    2 * static_cast<size_t>(lines) * 4 * sizeof(int));
   glUseProgram(program);
   glUniform1f(this->Uniform(program, "direction"), -1.0f);
   glUniform1i(this->Uniform(program, "lineLength"), o.Size);
@@ -319,6 +350,7 @@ void vtkBloomPassFFTBlur::Finish(const vtkBloomLinearOperator& op, int axis, int
   glUniform4iv(this->Uniform(program, "blocks"), 2, &o.Blocks[0][0]);
   glUniform2i(this->Uniform(program, "blockRank"), o.Rank[0], o.Rank[1]);
   glUniform2i(this->Uniform(program, "blockU"), o.UAt[0], o.UAt[1]);
+  glUniform1i(this->Uniform(program, "nonNegative"), o.NonNegative ? 1 : 0);
   glUniform1f(this->Uniform(program, "weight"), static_cast<float>(weight));
   const unsigned int bindings[7] = { this->Buffers[0], 0, 0, o.Tables, o.Factors, this->Buffers[1],
     this->Buffers[2] };

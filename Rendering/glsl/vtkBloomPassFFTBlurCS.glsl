@@ -21,8 +21,9 @@
     (s lines + l) n). An all-zero line is not transformed: its range is empty.
   - FFT_BLUR_FINISH: one invocation per output sample: both signals, plus the corrections
     sum_k U_k[j - Row0] t_k on the rows of D's blocks, times `weight`, into the image `target`;
-    exact zeros where no non-zero input sample of the line reaches (reachLo, reachHi), as the
-    direct path and vtkBloomFFTConvolution give.
+    exact zeros where no non-zero input sample of the line reaches (reachLo, reachHi: the
+    float32 weights' non-zeros, the direct pass's zero set), and no negative output from a
+    non-negative operator (nonNegative) on a line with no negative sample.
 
   The tables (int): extension[FFT_N], then reachLo[n] and reachHi[n]. The factors (float):
   each block's V (Cols x Rank) at blockV, its U (Rank x Rows) at blockU.
@@ -34,6 +35,7 @@ uniform ivec4 blocks[2]; // Row0, Rows, Col0, Cols of D's blocks (Rows 0: none)
 uniform ivec2 blockRank;
 uniform ivec2 blockV; // where each block's V starts in `factors`
 uniform ivec2 blockU; // where each block's U starts in `factors`
+uniform int nonNegative; // every weight of M is >= 0
 
 layout(std430, binding = 3) readonly buffer Tables
 {
@@ -47,7 +49,7 @@ layout(std430, binding = 4) readonly buffer Factors
 
 layout(std430, binding = 6) buffer LineRanges
 {
-  ivec2 lineRange[]; // per signal and line: its first and last non-zero sample
+  ivec4 lineRange[]; // per signal and line: its first and last non-zero sample, any negative
 };
 
 #if defined(FFT_BLUR_CONVOLVE)
@@ -67,6 +69,7 @@ uniform int padLeft;
 
 shared int firstNonZero;
 shared int lastNonZero;
+shared int anyNegative;
 
 void main()
 {
@@ -77,6 +80,7 @@ void main()
   {
     firstNonZero = lineLength;
     lastNonZero = -1;
+    anyNegative = 0;
   }
   barrier();
   for (int m = id; m < FFT_N; m += FFT_THREADS)
@@ -94,6 +98,10 @@ void main()
     {
       atomicMin(firstNonZero, j);
       atomicMax(lastNonZero, j);
+      if (any(lessThan(v, vec2(0.0))))
+      {
+        atomicOr(anyNegative, 1);
+      }
     }
   }
   barrier();
@@ -114,7 +122,7 @@ void main()
   const ivec2 range = ivec2(firstNonZero, lastNonZero);
   if (id == 0)
   {
-    lineRange[s * lines + l] = range;
+    lineRange[s * lines + l] = ivec4(range, anyNegative, 0);
   }
   if (range.y < range.x)
   {
@@ -164,7 +172,7 @@ void main()
     return;
   }
   vec4 sum = vec4(0.0);
-  const ivec2 range[2] = ivec2[](lineRange[l], lineRange[lines + l]);
+  const ivec4 range[2] = ivec4[](lineRange[l], lineRange[lines + l]);
   const int a = min(range[0].x, range[1].x);
   const int b = max(range[0].y, range[1].y);
   if (a <= b && j >= tables[transformLength + a] &&
@@ -189,6 +197,13 @@ void main()
         sum += u *
           vec4(coefficients[l * ranks + c0 + k], coefficients[(lines + l) * ranks + c0 + k]);
       }
+    }
+    // M >= 0 and x >= 0 give M x >= 0 exactly: what is below zero is the transforms' rounding
+    // (a bloom term must not darken; the direct path's sums of non-negative terms never do).
+    if (nonNegative != 0)
+    {
+      sum.xy = range[0].z == 0 ? max(sum.xy, vec2(0.0)) : sum.xy;
+      sum.zw = range[1].z == 0 ? max(sum.zw, vec2(0.0)) : sum.zw;
     }
   }
   imageStore(target, p, weight * sum);
