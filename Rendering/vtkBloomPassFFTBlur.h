@@ -52,9 +52,14 @@ public:
 
   /**
    * Tap-fetches of the direct pass that one N log2 N unit of a compute-shader transform costs.
-   * Measured on an NVIDIA H100 with BloomPassFrameTime's profile at 3840x2160: the direct
-   * blur-x and blur-y of the ping-pong preset (385 taps) against the FFT passes of the same
-   * operators.
+   * 1.0 is an estimate for an NVIDIA H100, not yet a measurement: the direct ping-pong blur
+   * (385 taps) costs 12 ms at 3840x2160 there, about 1.9 ps per tap-fetch, and the two
+   * transforms per line of both axes (about 4.5e8 units) are bound by shared memory and its
+   * barriers at an expected 1 ms or less, about 2 ps per unit. Measured on Mesa's llvmpipe
+   * (BloomPassFrameTime --direct / --fft --profile lit-spheres 960 540 5 ping-pong: 672 ms
+   * against 791 ms over the floor, 1.7 ns per tap-fetch, 19 ns per unit) it is about 11, so
+   * there AUTOMATIC takes the FFT where the direct pass would be roughly ten times dearer than
+   * modeled; the ping-pong preset still runs through the FFT at 1.2 times the direct cost.
    */
   static constexpr double FFTCostFactor = 1.0;
 
