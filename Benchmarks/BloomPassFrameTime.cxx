@@ -11,6 +11,9 @@
 //   BloomPassFrameTime --fast ...  as above, with vtkBloomPass::QUALITY_FAST
 //   BloomPassFrameTime --fragment ...  as above, every pass a fragment pass
 //                                  (vtkBloomPass::UseComputeShadersOff; with --fast or alone)
+//   BloomPassFrameTime --direct ... / --fft ...  as above, the level blurs by their taps or
+//                                  through the FFT (vtkBloomParameters::ConvolutionMode; the
+//                                  default is AUTOMATIC; with the options above)
 //   BloomPassFrameTime --quality SCENE WIDTH HEIGHT FRAMES [CSV]
 //   BloomPassFrameTime --sparse WIDTH HEIGHT FRAMES [fast]
 //   BloomPassFrameTime --sync SCENE WIDTH HEIGHT FRAMES
@@ -49,6 +52,7 @@
 // the occlusion query only, and with neither (no wait: the CPU submits the whole frame ahead
 // of the GPU), GPU time and the CPU's time in Render().
 #include "vtkBloomFrameTimer.h"
+#include "vtkBloomParameters.h"
 
 #include "vtkImageBloom.h"
 #include "vtkImageData.h"
@@ -68,6 +72,7 @@ namespace
 {
 bool Fast = false;     // --fast
 bool Fragment = false; // --fragment
+int Convolution = -1;  // --direct, --fft: vtkBloomParameters::ConvolutionMode
 
 // The timer on `scene` with `preset`, in the quality and shader stage the options ask for; false,
 // with a message, for an unknown scene or preset.
@@ -81,6 +86,10 @@ bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::strin
   }
   timer.Bloom->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
   timer.Bloom->SetUseComputeShaders(!Fragment);
+  if (Convolution >= 0)
+  {
+    timer.Bloom->GetParameters()->SetConvolutionMode(Convolution);
+  }
   return true;
 }
 
@@ -594,10 +603,19 @@ int main(int argc, char* argv[])
       ? 0
       : 1;
   }
-  while (
-    argc > 1 && (std::strcmp(argv[1], "--fast") == 0 || std::strcmp(argv[1], "--fragment") == 0))
+  while (argc > 1 &&
+    (std::strcmp(argv[1], "--fast") == 0 || std::strcmp(argv[1], "--fragment") == 0 ||
+      std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0))
   {
-    (std::strcmp(argv[1], "--fast") == 0 ? Fast : Fragment) = true;
+    if (std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0)
+    {
+      Convolution = std::strcmp(argv[1], "--fft") == 0 ? vtkBloomParameters::CONVOLUTION_FFT
+                                                       : vtkBloomParameters::CONVOLUTION_DIRECT;
+    }
+    else
+    {
+      (std::strcmp(argv[1], "--fast") == 0 ? Fast : Fragment) = true;
+    }
     --argc;
     ++argv;
   }

@@ -11,17 +11,6 @@
 #include <mutex>
 #include <type_traits>
 
-struct vtkBloomFFTConvolution::Block
-{
-  int Row0 = 0;
-  int Rows = 0;
-  int Col0 = 0;
-  int Cols = 0;
-  int Rank = 0;
-  std::vector<double> U; ///< Rank x Rows
-  std::vector<double> V; ///< Cols x Rank (V^T transposed, so that V^T x runs over rows of V)
-};
-
 namespace
 {
 /**
@@ -466,6 +455,13 @@ double vtkBloomFFTConvolution::Cost() const
 }
 
 //------------------------------------------------------------------------------
+void vtkBloomFFTConvolution::ComputeKernelSpectrum(int n, std::vector<double>& spectrum) const
+{
+  std::vector<float> single;
+  KernelSpectrum(this->Kernel, this->Offset, n, spectrum, single);
+}
+
+//------------------------------------------------------------------------------
 int vtkBloomFFTConvolution::GetCorrectionRank(int side) const
 {
   for (const Block& b : this->Corrections)
@@ -508,6 +504,8 @@ bool vtkBloomFFTConvolution::Build(const vtkBloomLinearOperator& op, int border,
   this->PadRight = std::max(0, offset + taps - 1);
   this->N = vtkBloomFFTConvolution::GoodTransformSize(n + this->PadLeft + this->PadRight);
   KernelSpectrum(kernel, offset, this->N, this->SpectrumD, this->SpectrumF);
+  this->Kernel = kernel;
+  this->Offset = offset;
 
   // D = M - T on the rows outside the invariant range, one block per end.
   for (int side = 0; side < 2; ++side)

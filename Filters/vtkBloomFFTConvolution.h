@@ -130,7 +130,46 @@ public:
   template <typename T>
   void ApplyAxis(T* data, const int size[3], int lanes, int activeLanes, int axis) const;
 
-  struct Block; ///< one factored border correction
+  /**
+   * One factored border correction: rows [Row0, Row0 + Rows) of D read input samples
+   * [Col0, Col0 + Cols) as D_block = U^T V^T, i.e. (D x)[Row0 + r] = sum_k U[k Rows + r] t_k
+   * with t_k = sum_q V[q Rank + k] x[Col0 + q].
+   */
+  struct Block
+  {
+    int Row0 = 0;
+    int Rows = 0;
+    int Col0 = 0;
+    int Cols = 0;
+    int Rank = 0;
+    std::vector<double> U; ///< Rank x Rows
+    std::vector<double> V; ///< Cols x Rank (V^T transposed, so that V^T x runs over rows of V)
+  };
+
+  ///@{
+  /**
+   * Read-only access for another implementation of the same M x = T x + D x (vtkBloomPass runs
+   * it in compute shaders): the line length n; the extension E, PadLeft samples before the line
+   * and PadRight after it, sample m of the extended line (-PadLeft <= m < n + PadRight) being
+   * x[FoldIndex(m, n, Border)] (zero for -1); the outputs [ReachLo[a], ReachHi[b]] that input
+   * samples [a, b] can reach; and D's blocks.
+   */
+  int GetSize() const { return this->Size; }
+  int GetPadLeft() const { return this->PadLeft; }
+  int GetPadRight() const { return this->PadRight; }
+  int GetBorder() const { return this->Border; }
+  const std::vector<int>& GetReachLo() const { return this->ReachLo; }
+  const std::vector<int>& GetReachHi() const { return this->ReachHi; }
+  const std::vector<Block>& GetCorrections() const { return this->Corrections; }
+  ///@}
+
+  /**
+   * The spectrum of T's kernel for a circular convolution of length `n` (at least
+   * GetSize() + GetPadLeft() + GetPadRight(), so that nothing wraps) whose output j sits at
+   * PadLeft + j of the extended line, divided by n: n / 2 + 1 complex values, interleaved re, im,
+   * computed in double (the same function that makes this object's own spectrum).
+   */
+  void ComputeKernelSpectrum(int n, std::vector<double>& spectrum) const;
 
 private:
   template <typename T, typename P>
@@ -142,11 +181,13 @@ private:
 
   bool Ready = false;
   bool Single = true;
-  int Size = 0;                      ///< n
-  int N = 0;                         ///< transform length
-  int PadLeft = 0;                   ///< extension before sample 0
-  int PadRight = 0;                  ///< extension after sample n - 1
-  int Border = 0;                    ///< extension mode
+  int Size = 0;               ///< n
+  int N = 0;                  ///< transform length
+  int PadLeft = 0;            ///< extension before sample 0
+  int PadRight = 0;           ///< extension after sample n - 1
+  int Border = 0;             ///< extension mode
+  std::vector<double> Kernel; ///< T's kernel: row j reads x[j + Offset + k]
+  int Offset = 0;
   std::vector<double> SpectrumD;     ///< kernel spectrum / N, interleaved re, im
   std::vector<float> SpectrumF;      ///< the same in single precision
   std::vector<int> ReachLo, ReachHi; ///< outputs an input sample i can reach: [Lo[i], Hi[i]]

@@ -84,6 +84,15 @@
  * render framebuffer without multisampling, vtkToneMappingPass's and vtkFramebufferPass's
  * targets) and the context has OpenGL 4.5; else it is a fragment pass.
  *
+ * Wide blurs. A level's blur whose operator is wide (the ping-pong preset's 32 clamped passes
+ * folded into 385 taps, a large BlurStandardDeviation) runs through an FFT in compute shaders
+ * where the parameters' ConvolutionMode asks for it (FFT) or, in AUTOMATIC, where its modeled
+ * cost is below the direct pass's (vtkBloomPassFFTBlur): the line extended by the clamped
+ * border and zero padded, one transform, the product with the kernel's spectrum, one more
+ * transform, and vtkBloomFFTConvolution's low-rank border corrections, the same operator to
+ * float rounding. Without compute shaders the direct passes run. The profile names these
+ * passes "blur-x-fft", "blur-x-fft-finish", "blur-y-fft" and "blur-y-fft-finish".
+ *
  * PSF mode. With the parameters' BloomMode BLOOM_PSF the pass runs vtkImageBloom's PSF mode:
  * the bright pass at full resolution (the chain's threshold, no resample), its convolution
  * with one PSF per colour channel (built by vtkImageBloom::ComputePSF, the filter's own code)

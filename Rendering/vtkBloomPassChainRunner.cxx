@@ -6,6 +6,7 @@
 #include "vtkBloomChain.h"
 #include "vtkBloomKernels.h"
 #include "vtkBloomParameters.h"
+#include "vtkBloomPassFFTBlur.h"
 #include "vtkBloomPassFS.h"
 #include "vtkBloomPassReduceFS.h"
 #include "vtkBloomPassResources.h"
@@ -28,7 +29,8 @@
 
 //------------------------------------------------------------------------------
 vtkBloomPassChainRunner::vtkBloomPassChainRunner(vtkObject* owner, vtkBloomPassResources& resources)
-  : Owner(owner)
+  : FFTBlur(new vtkBloomPassFFTBlur)
+  , Owner(owner)
   , Resources(resources)
 {
 }
@@ -45,12 +47,14 @@ void vtkBloomPassChainRunner::ReleaseOperators(vtkWindow* w)
   }
   this->Operators.clear();
   this->Interiors.clear();
+  this->FFTBlur->ReleaseOperators();
 }
 
 //------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->ReleaseOperators(w);
+  this->FFTBlur->ReleaseGraphicsResources(w);
   for (auto& program : this->Programs)
   {
     program.second->ReleaseGraphicsResources(w);

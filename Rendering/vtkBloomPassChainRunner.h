@@ -28,6 +28,7 @@
 #include <vector>
 
 class vtkBloomLinearOperator;
+class vtkBloomPassFFTBlur;
 class vtkBloomPassResources;
 struct vtkBloomPassTarget;
 class vtkBloomParameters;
@@ -291,6 +292,22 @@ private:
   /// 4. The accumulation into Full (DIRECT) or the Accum targets (CASCADE).
   void AccumulateDirect(ChainRegions& regions);
   void AccumulateCascade(ChainRegions& regions);
+
+  /**
+   * One axis (0: x, 1: y) of a level's blur, `spec` into `target`: through the FFT
+   * (FFTBlurPass) where the parameters' ConvolutionMode chooses it, else as a direct Pass().
+   */
+  void BlurPass(vtkBloomPassTarget& target, const PassSpec& spec, int axis);
+  /**
+   * The blur's operator along `axis` through the FFT in two compute dispatches
+   * (vtkBloomPassFFTBlur, profiled as "<name>-fft" and "<name>-fft-finish"), over the whole
+   * level; false, having drawn nothing, when the direct pass must run instead: no compute
+   * shaders, ConvolutionMode DIRECT, AUTOMATIC with the direct pass cheaper by
+   * vtkBloomPassFFTBlur's cost model, an operator with no convolution interior or too long a
+   * line, or a program that does not build.
+   */
+  bool FFTBlurPass(vtkBloomPassTarget& target, const PassSpec& spec, int axis);
+  std::unique_ptr<vtkBloomPassFFTBlur> FFTBlur;
 
   // Content-aware evaluation (vtkBloomPassRegion.cxx).
 

@@ -6,6 +6,7 @@
 
 #include "vtkBloomChain.h"
 #include "vtkBloomParameters.h"
+#include "vtkBloomPassFFTBlur.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkOpenGLFramebufferObject.h"
@@ -318,7 +319,6 @@ void vtkBloomPassChainRunner::BlurLevels(ChainRegions& regions)
   // scaled by its weight).
   vtkBloomPassResources& res = this->Resources;
   const vtkBloomChain& c = res.Chain;
-  const int zero[2] = { 0, 0 };
   const size_t n = c.Levels.size();
   const size_t last = n - 1;
   const bool cascade = c.AccumulateMode != vtkBloomParameters::DIRECT;
@@ -342,7 +342,7 @@ void vtkBloomPassChainRunner::BlurLevels(ChainRegions& regions)
     x.Name = "blur-x";
     x.Level = static_cast<int>(i);
     x.Region = regions.Of(xBox);
-    this->Pass(&res.Temp, zero, x);
+    this->BlurPass(res.Temp, x, 0);
     PassSpec y;
     y.Source = res.Temp.Color;
     y.SourceSize = level.Size;
@@ -353,15 +353,73 @@ void vtkBloomPassChainRunner::BlurLevels(ChainRegions& regions)
     if (cascade && i == last)
     {
       y.Weight = level.Weight;
-      this->Pass(&res.Accum[last], zero, y);
+      this->BlurPass(res.Accum[last], y, 1);
       regions.LastAccumulated = true;
     }
     else
     {
-      this->Pass(&res.Work[i], zero, y);
+      this->BlurPass(res.Work[i], y, 1);
       regions.Blurred[i] = &res.Work[i];
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::BlurPass(vtkBloomPassTarget& target, const PassSpec& spec, int axis)
+{
+  const int zero[2] = { 0, 0 };
+  if (!this->FFTBlurPass(target, spec, axis))
+  {
+    this->Pass(&target, zero, spec);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::FFTBlurPass(
+  vtkBloomPassTarget& target, const PassSpec& spec, int axis)
+{
+  // Compute shaders only, as any compute pass: without them (or when they are made to fail)
+  // the direct pass runs, whatever ConvolutionMode asks.
+  const vtkBloomLinearOperator& op = axis == 0 ? *spec.X : *spec.Y;
+  if (!this->UseCompute || this->SimulateComputeFailure || !this->ComputeSupported() ||
+    !this->FFTBlur->Choose(this->Resources.Context, op, this->Parameters->GetConvolutionMode()))
+  {
+    return false;
+  }
+  const int width = spec.SourceSize[0], height = spec.SourceSize[1];
+  const int lines = axis == 0 ? height : width;
+  const unsigned int format = target.Color->GetInternalFormat(VTK_FLOAT, 4, false);
+  // Traffic: the source read and both signals written, then read and the target written.
+  const double texel = this->Resources.Format == GL_RGBA32F ? 16.0 : 8.0;
+  const double samples = static_cast<double>(width) * height;
+  const std::string name = std::string(spec.Name) + "-fft";
+  const std::string level = spec.Level >= 0 ? " L" + std::to_string(spec.Level) : "";
+  if (this->Profiling)
+  {
+    this->BeginProfiledSpan();
+  }
+  if (!this->FFTBlur->Convolve(op, axis, lines, spec.Source, format))
+  {
+    return false;
+  }
+  if (this->Profiling)
+  {
+    this->EndProfiledSpan(name + level, width, height, (texel + 16.0) * samples);
+    this->BeginProfiledSpan();
+  }
+  // The pass replaces the whole level (its region, when restricted, only bounds the zeros).
+  this->PrepareTarget(target, nullptr, width, height);
+  this->FFTBlur->Finish(op, axis, lines, target.Color->GetHandle(), format, spec.Weight);
+  this->EndCompute();
+  if (this->Profiling)
+  {
+    this->EndProfiledSpan(name + "-finish" + level, width, height, (texel + 16.0) * samples);
+  }
+  this->FullSamples += samples;
+  this->ComputedSamples += samples;
+  this->Passes += 2;
+  this->ComputePasses += 2;
+  return true;
 }
 
 //------------------------------------------------------------------------------
@@ -446,7 +504,7 @@ void vtkBloomPassChainRunner::AccumulateCascade(ChainRegions& regions)
       accumBox[i] = accumBox[i].Union(regions.Blur[i]);
     }
     x.Region = regions.Of(xBox);
-    this->Pass(&res.Temp, zero, x);
+    this->BlurPass(res.Temp, x, 0);
     PassSpec y;
     y.Source = res.Temp.Color;
     const int size[2] = { level.Size[0], res.Accum[i + 1].Size[1] };

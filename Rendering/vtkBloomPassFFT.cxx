@@ -91,6 +91,25 @@ std::string vtkBloomPassFFT::TransformDefines(int n, bool fromTexture)
 }
 
 //------------------------------------------------------------------------------
+std::string vtkBloomPassFFT::LineTransformDefines(int n)
+{
+  return TransformDefines(n, false) + "#define FFT_LIBRARY 1\n";
+}
+
+//------------------------------------------------------------------------------
+std::vector<float> vtkBloomPassFFT::TwiddleTable(int n)
+{
+  std::vector<float> table(2 * static_cast<size_t>(n));
+  for (int m = 0; m < n; ++m)
+  {
+    const double angle = 2.0 * 3.14159265358979323846 * m / n;
+    table[2 * m] = static_cast<float>(std::cos(angle));
+    table[2 * m + 1] = static_cast<float>(std::sin(angle));
+  }
+  return table;
+}
+
+//------------------------------------------------------------------------------
 unsigned int vtkBloomPassFFT::Program(const std::string& defines, std::string* log)
 {
   auto found = this->Programs.find(defines);

@@ -94,6 +94,18 @@ public:
 
   void ReleaseGraphicsResources(vtkWindow* w);
 
+  ///@{
+  /**
+   * For other programs that run the line transform on a line of their own (vtkBloomPassFFTBlur):
+   * the #defines of glsl/vtkBloomPassFFTCS.glsl's transform of n samples (FFT_TRANSFORM) with
+   * FFT_LIBRARY, which leaves out its main() and adds TransformLine(), the in-place DFT of the
+   * shared `line`; and its twiddle table, cos and sin of 2 pi m / n for m < n, computed in double
+   * and rounded once to float.
+   */
+  static std::string LineTransformDefines(int n);
+  static std::vector<float> TwiddleTable(int n);
+  ///@}
+
 private:
   /// The forward (direction -1) or inverse (+1) transform of every line along `axis` (0: rows,
   /// 1: columns) of both signals; rows may read `source` instead of the buffer.

@@ -10,6 +10,7 @@ set(vtkbloom_rendering_baselines "${CMAKE_CURRENT_LIST_DIR}/Data/Baseline")
 vtkbloom_add_gtest(TestBloomPass OPENGL
   SOURCES Rendering/TestBloomPass.cxx Rendering/TestBloomPassLiveScenes.cxx
     Rendering/TestBloomPassSelective.cxx Rendering/TestBloomPassPSF.cxx
+    Rendering/TestBloomPassFFTBlur.cxx
   LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom VTKBloom::IOOpenEXR
     VTK::TestingRendering VTK::IOImage
     VTK::RenderingOpenGL2 VTK::RenderingCore VTK::FiltersSources VTK::CommonDataModel

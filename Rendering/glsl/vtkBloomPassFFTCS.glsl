@@ -138,6 +138,19 @@ void Stage(int R, int ns)
   barrier();
 }
 
+#if defined(FFT_LIBRARY)
+// For programs that append their own main() (vtkBloomPassFFTBlur): the DFT of the shared
+// `line` in place, the stages main() runs.
+void TransformLine()
+{
+  int ns = 1;
+  for (int stage = 0; stage < FFT_STAGES; ++stage)
+  {
+    Stage(radices[stage], ns);
+    ns *= radices[stage];
+  }
+}
+#else
 void main()
 {
   const int index = int(gl_WorkGroupID.x);
@@ -168,6 +181,7 @@ void main()
     signal[base + i * sampleStride] = line[i];
   }
 }
+#endif // FFT_LIBRARY
 
 #elif defined(FFT_SEPARATE) || defined(FFT_MULTIPLY)
 
