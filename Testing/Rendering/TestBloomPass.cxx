@@ -40,24 +40,6 @@
 
 namespace
 {
-// Relative L2 over the colour channels of two RGBA float images of the same size.
-double ColourRelativeL2(vtkImageData* a, vtkImageData* b)
-{
-  const vtkIdType n = a->GetNumberOfPoints();
-  double num = 0.0, den = 0.0;
-  for (vtkIdType p = 0; p < n; ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double x = a->GetPointData()->GetScalars()->GetComponent(p, c);
-      const double y = b->GetPointData()->GetScalars()->GetComponent(p, c);
-      num += (x - y) * (x - y);
-      den += y * y;
-    }
-  }
-  return std::sqrt(num / std::max(den, 1e-300));
-}
-
 // The image of an OpenEXR file.
 vtkSmartPointer<vtkImageData> ReadExr(const std::string& path)
 {
@@ -118,9 +100,9 @@ double PresetAgreement(const std::string& preset, int precision, const std::stri
   cpu->SetParameters(w.Bloom->GetParameters());
   cpu->SetInputData(sceneImage);
   cpu->Update();
-  const double error = ColourRelativeL2(gpu, cpu->GetOutput());
+  const double error = vtkBloomTest::ColourRelativeL2(gpu, cpu->GetOutput());
   // The bloom must change the image, or agreement would be trivial.
-  EXPECT_GT(ColourRelativeL2(sceneImage, cpu->GetOutput()), 1e-3);
+  EXPECT_GT(vtkBloomTest::ColourRelativeL2(sceneImage, cpu->GetOutput()), 1e-3);
   return error;
 }
 }
@@ -194,7 +176,7 @@ TEST(RenderingBloomPass, SkipsAnEmptyBloomExactly)
       cpu->SetInputData(scene);
       cpu->Update();
       EXPECT_TRUE(cpu->GetLastBloomSkipped());
-      EXPECT_EQ(ColourRelativeL2(skipped, cpu->GetOutput()), 0.0);
+      EXPECT_EQ(vtkBloomTest::ColourRelativeL2(skipped, cpu->GetOutput()), 0.0);
     }
     else
     {
@@ -228,7 +210,7 @@ TEST(RenderingBloomPass, ApplyToImageMatchesThePresetExamples)
     vtkNew<vtkImageData> gpu;
     ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), image, gpu));
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-    const double error = ColourRelativeL2(gpu, expectedReader->GetOutput());
+    const double error = vtkBloomTest::ColourRelativeL2(gpu, expectedReader->GetOutput());
     EXPECT_LE(error, 1e-5) << preset;
     std::cout << "[ presets ] " << preset << " relative L2 vs float64 " << error << "\n";
   }
@@ -257,8 +239,8 @@ TEST(RenderingBloomPass, SharedParametersDriveThePassAndTheFilter)
     cpu->GetParameters()->SetStrength(strength);
     ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), image, shared));
     cpu->Update();
-    EXPECT_LE(ColourRelativeL2(shared, cpu->GetOutput()), 1e-5) << strength;
-    EXPECT_GT(ColourRelativeL2(shared, defaults), 1e-3) << strength;
+    EXPECT_LE(vtkBloomTest::ColourRelativeL2(shared, cpu->GetOutput()), 1e-5) << strength;
+    EXPECT_GT(vtkBloomTest::ColourRelativeL2(shared, defaults), 1e-3) << strength;
   }
 }
 
@@ -301,7 +283,7 @@ TEST(RenderingBloomPass, OccludedEmittersDoNotGlow)
     vtkNew<vtkImageData> sceneImage, result;
     ASSERT_TRUE(w.Bloom->ReadSceneImage(sceneImage));
     ASSERT_TRUE(w.Bloom->ReadResultImage(result));
-    const double change = ColourRelativeL2(result, sceneImage);
+    const double change = vtkBloomTest::ColourRelativeL2(result, sceneImage);
     if (inFront)
     {
       EXPECT_GT(change, 0.05) << "a visible emitter must glow";

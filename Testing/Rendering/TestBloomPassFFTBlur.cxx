@@ -7,6 +7,7 @@
 #include "vtkBloomParameters.h"
 #include "vtkBloomPass.h"
 #include "vtkBloomPassTestWindow.h"
+#include "vtkBloomTestSupport.h"
 
 #include "vtkBloomVTKCompat.h"
 #include "vtkDataArray.h"
@@ -66,26 +67,6 @@ vtkSmartPointer<vtkImageData> SpotImage(int width, int height)
     ++index;
   }
   return image;
-}
-
-// Relative L2 of the bloom terms (output - input) of `gpu` against `cpu`, colour channels.
-double BloomRelativeL2(vtkImageData* input, vtkImageData* gpu, vtkImageData* cpu)
-{
-  double num = 0.0, den = 0.0;
-  vtkDataArray* in = input->GetPointData()->GetScalars();
-  vtkDataArray* g = gpu->GetPointData()->GetScalars();
-  vtkDataArray* c = cpu->GetPointData()->GetScalars();
-  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
-  {
-    for (int k = 0; k < 3; ++k)
-    {
-      const double x = g->GetComponent(p, k) - in->GetComponent(p, k);
-      const double y = c->GetComponent(p, k) - in->GetComponent(p, k);
-      num += (x - y) * (x - y);
-      den += y * y;
-    }
-  }
-  return std::sqrt(num / std::max(den, 1e-300));
 }
 
 // The names of the last render's profiled passes.
@@ -159,7 +140,7 @@ Result Agreement(const std::string& which, int mode, int width, int height, bool
   cpu->SetExecutionModeToReference();
   cpu->SetInputData(input);
   cpu->Update();
-  r.Error = BloomRelativeL2(input, gpu, cpu->GetOutput());
+  r.Error = vtkBloomTest::BloomRelativeL2(input, gpu, cpu->GetOutput());
   std::cout << "[ fft-blur ] " << which << " " << width << "x" << height << " mode " << mode
             << (compute ? "" : " (fragments)") << " bloom relative L2 " << r.Error << "\n";
   return r;

@@ -3,6 +3,7 @@
 // for bit, and of its fast mode (QUALITY_FAST) against the exact pass.
 #include "vtkBloomExampleScenes.h"
 #include "vtkBloomPass.h"
+#include "vtkBloomTestSupport.h"
 
 #include "vtkBloomVTKCompat.h"
 #include "vtkCommand.h"
@@ -96,23 +97,6 @@ bool SameBits(vtkImageData* a, vtkImageData* b)
       sizeof(float) * 4 * a->GetNumberOfPoints()) == 0;
 }
 
-double ColourRelativeL2(vtkImageData* a, vtkImageData* b)
-{
-  const float* x = static_cast<const float*>(a->GetScalarPointer());
-  const float* y = static_cast<const float*>(b->GetScalarPointer());
-  double num = 0.0, den = 0.0;
-  for (vtkIdType p = 0; p < a->GetNumberOfPoints(); ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double d = static_cast<double>(x[4 * p + c]) - y[4 * p + c];
-      num += d * d;
-      den += static_cast<double>(y[4 * p + c]) * y[4 * p + c];
-    }
-  }
-  return std::sqrt(num / std::max(den, 1e-300));
-}
-
 std::vector<std::string> Presets()
 {
   std::vector<std::string> presets = vtkImageBloom::GetPresetNames();
@@ -191,7 +175,7 @@ TEST(RenderingBloomPassRegion, RestrictedChainIsBitIdenticalToTheFullChain)
             else
             {
               // The bloom must reach past the spots, or the comparison would be trivial.
-              EXPECT_GT(ColourRelativeL2(full, input), 1e-3) << what;
+              EXPECT_GT(vtkBloomTest::ColourRelativeL2(full, input), 1e-3) << what;
               EXPECT_GT(coverage, 0.0) << what;
             }
             if (c.Rects.size() == 1 && preset == "default")
@@ -275,7 +259,7 @@ TEST(RenderingBloomPassFast, ApproximatesTheExactPassForEveryPreset)
     const int exactPasses = gpu.Pass->GetNumberOfPasses();
     gpu.Pass->SetQualityToFast();
     vtkSmartPointer<vtkImageData> fast = gpu.Apply(input);
-    const double error = ColourRelativeL2(fast, exact);
+    const double error = vtkBloomTest::ColourRelativeL2(fast, exact);
     std::cout << "[ fast ] " << preset << " relative L2 against the exact pass " << error << ", "
               << gpu.Pass->GetNumberOfPasses() << " passes (exact " << exactPasses << ")\n";
     EXPECT_GT(error, 0.0) << preset;
@@ -317,8 +301,8 @@ TEST(RenderingBloomPassCompute, ComputeAndFragmentPassesAgree)
         // chain off; here it is on) and the composite.
         EXPECT_GE(gpu.Pass->GetLastComputePasses(), gpu.Pass->GetNumberOfPasses() - 1) << what;
       }
-      EXPECT_LE(ColourRelativeL2(compute, fragment), quality ? 2e-3 : 1e-6) << what;
-      EXPECT_GT(ColourRelativeL2(fragment, input), 1e-3) << what;
+      EXPECT_LE(vtkBloomTest::ColourRelativeL2(compute, fragment), quality ? 2e-3 : 1e-6) << what;
+      EXPECT_GT(vtkBloomTest::ColourRelativeL2(fragment, input), 1e-3) << what;
     }
   }
 }

@@ -5,6 +5,7 @@
 #include "vtkBloomExampleScenes.h"
 #include "vtkBloomPass.h"
 #include "vtkBloomPassTestWindow.h"
+#include "vtkBloomTestSupport.h"
 
 #include "vtkActor.h"
 #include "vtkActor2D.h"
@@ -28,23 +29,6 @@
 
 namespace
 {
-// Relative L2 over the colour channels of two RGBA float images of the same size.
-double RelativeL2(vtkImageData* a, vtkImageData* b)
-{
-  double num = 0.0, den = 0.0;
-  for (vtkIdType p = 0; p < a->GetNumberOfPoints(); ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double x = a->GetPointData()->GetScalars()->GetComponent(p, c);
-      const double y = b->GetPointData()->GetScalars()->GetComponent(p, c);
-      num += (x - y) * (x - y);
-      den += y * y;
-    }
-  }
-  return std::sqrt(num / std::max(den, 1e-300));
-}
-
 // The bloomed result of `w` rendered once, with the emission in the scene's render or not.
 vtkSmartPointer<vtkImageData> RenderSelective(BloomWindow& w, bool inScene, bool expectInScene)
 {
@@ -104,10 +88,10 @@ TEST(RenderingBloomPassSelective, OneRenderGivesTheImageOfTwo)
     auto one = RenderSelective(w, true, true);
     vtkNew<vtkImageData> scene;
     ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
-    const double error = RelativeL2(one, two);
+    const double error = vtkBloomTest::ColourRelativeL2(one, two);
     std::cout << "scalar-field: one render vs two, relative L2 " << error << "\n";
     EXPECT_LE(error, 1e-6);
-    EXPECT_GT(RelativeL2(one, scene), 1e-2) << "the range must glow";
+    EXPECT_GT(vtkBloomTest::ColourRelativeL2(one, scene), 1e-2) << "the range must glow";
   }
   {
     BloomWindow w(240, 180);
@@ -117,10 +101,10 @@ TEST(RenderingBloomPassSelective, OneRenderGivesTheImageOfTwo)
     auto one = RenderSelective(w, true, true);
     vtkNew<vtkImageData> scene;
     ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
-    const double error = RelativeL2(one, two);
+    const double error = vtkBloomTest::ColourRelativeL2(one, two);
     std::cout << "lamp and wall: one render vs two, relative L2 " << error << "\n";
     EXPECT_LE(error, 1e-6);
-    EXPECT_GT(RelativeL2(one, scene), 1e-2) << "the lamp must glow";
+    EXPECT_GT(vtkBloomTest::ColourRelativeL2(one, scene), 1e-2) << "the lamp must glow";
   }
   {
     // Multisampled, the resolve averages the colour and the emission's weight separately:
@@ -133,7 +117,7 @@ TEST(RenderingBloomPassSelective, OneRenderGivesTheImageOfTwo)
     LampAndWall(w, lamp, wall);
     auto two = RenderSelective(w, false, false);
     auto one = RenderSelective(w, true, true);
-    const double error = RelativeL2(one, two);
+    const double error = vtkBloomTest::ColourRelativeL2(one, two);
     std::cout << "lamp and wall, 4 samples: one render vs two, relative L2 " << error << "\n";
     EXPECT_LE(error, 3e-2);
   }
@@ -244,11 +228,11 @@ TEST(RenderingBloomPassSelective, FallsBackToASecondRenderWhereItMust)
     }
     auto fallback = RenderSelective(w, true, false);
     auto two = RenderSelective(w, false, false);
-    EXPECT_LE(RelativeL2(fallback, two), 1e-6) << obstacle;
+    EXPECT_LE(vtkBloomTest::ColourRelativeL2(fallback, two), 1e-6) << obstacle;
     if (obstacle == 0)
     {
       // The square draws away from the glow: the rest of the image is unchanged.
-      EXPECT_LE(RelativeL2(fallback, one), 0.2);
+      EXPECT_LE(vtkBloomTest::ColourRelativeL2(fallback, one), 0.2);
     }
   }
 }

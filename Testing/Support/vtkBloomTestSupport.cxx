@@ -4,6 +4,7 @@
 #include <vtkImageAlgorithm.h>
 #include <vtkPointData.h>
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <cstdlib>
@@ -134,6 +135,42 @@ double RelativeL2(vtkImageData* a, vtkImageData* b)
     den += r * r;
   }
   return den > 0.0 ? std::sqrt(num / den) : std::sqrt(num);
+}
+
+double ColourRelativeL2(vtkImageData* a, vtkImageData* b)
+{
+  double num = 0.0, den = 0.0;
+  vtkDataArray* sa = a->GetPointData()->GetScalars();
+  vtkDataArray* sb = b->GetPointData()->GetScalars();
+  for (vtkIdType p = 0; p < a->GetNumberOfPoints(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double x = sa->GetComponent(p, c), y = sb->GetComponent(p, c);
+      num += (x - y) * (x - y);
+      den += y * y;
+    }
+  }
+  return std::sqrt(num / std::max(den, 1e-300));
+}
+
+double BloomRelativeL2(vtkImageData* base, vtkImageData* a, vtkImageData* b)
+{
+  double num = 0.0, den = 0.0;
+  vtkDataArray* s0 = base->GetPointData()->GetScalars();
+  vtkDataArray* sa = a->GetPointData()->GetScalars();
+  vtkDataArray* sb = b->GetPointData()->GetScalars();
+  for (vtkIdType p = 0; p < base->GetNumberOfPoints(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double s = s0->GetComponent(p, c);
+      const double x = sa->GetComponent(p, c) - s, y = sb->GetComponent(p, c) - s;
+      num += (x - y) * (x - y);
+      den += y * y;
+    }
+  }
+  return std::sqrt(num / std::max(den, 1e-300));
 }
 
 double MaxAbsDifference(vtkImageData* a, vtkImageData* b)

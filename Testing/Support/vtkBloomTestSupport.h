@@ -43,6 +43,18 @@ double Value(vtkImageData* image, int i, int j, int k, int c);
 /// ||a - b||_2 / ||b||_2 over all scalars; NaN if the shapes differ.
 double RelativeL2(vtkImageData* a, vtkImageData* b);
 
+/**
+ * ||a - b||_2 / ||b||_2 over the colour channels (the first three components) of two
+ * images of the same size: a rendered or bloomed frame against its reference.
+ */
+double ColourRelativeL2(vtkImageData* a, vtkImageData* b);
+
+/**
+ * The relative L2 of two bloom terms over the colour channels: ||(a - base) - (b - base)|| /
+ * ||b - base||, for a result `a` against a reference result `b` of the same input `base`.
+ */
+double BloomRelativeL2(vtkImageData* base, vtkImageData* a, vtkImageData* b);
+
 /// max |a - b| over all scalars; NaN if the shapes differ.
 double MaxAbsDifference(vtkImageData* a, vtkImageData* b);
 
