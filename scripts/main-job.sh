@@ -57,8 +57,8 @@ done
 
 # PSF bloom live in the pass (its compute-shader FFT) beside the CPU filter on the same float
 # render: the same bright pass, Airy pattern and composite on both sides.
-psf_options=(--psf airy --airy-radius 12 --mode smoothstep --threshold 1 --knee 0.5
-  --clamp-luminance 1000 --strength 1.5 --composite additive --tint 1,1,1)
+psf_options=(--psf airy --airy-radius 24 --mode smoothstep --threshold 1 --knee 0.5
+  --clamp-luminance 1000 --strength 4 --composite additive --tint 1,1,1)
 env -u DISPLAY "$gpu_tool" render --no-bloom lit-spheres "$out/lit-spheres-float.exr"
 env -u DISPLAY "$gpu_tool" render "${psf_options[@]}" lit-spheres "$out/lit-spheres-psf-pass.exr"
 "$tool" image "${psf_options[@]}" "$out/lit-spheres-float.exr" "$out/lit-spheres-psf-cpu.exr"
