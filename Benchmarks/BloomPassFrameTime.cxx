@@ -492,9 +492,11 @@ bool PSFTable(const std::string& scene, int width, int height, int frames)
               "| p99 | max | bloom over compute copy, mean | first bloom frame (wall) |\n"
               "|---|---|---|---|---|---|---|---|---|---|---|\n",
     scene.c_str(), width, height, frames);
-  const int wide = std::max(width, height) / 2;
-  for (const int radius : { 16, 64, 256, wide })
+  // Airy patterns, then Gaussians as wide as the frame.
+  const int radii[] = { 16, 64, 256, std::max(width, height) / 2 };
+  for (int row = 0; row < 4; ++row)
   {
+    const int radius = radii[row];
     vtkBloomFrameTimer timer;
     if (!SetUp(timer, scene, "scene", width, height))
     {
@@ -503,7 +505,7 @@ bool PSFTable(const std::string& scene, int width, int height, int frames)
     vtkBloomParameters* parameters = timer.Bloom->GetParameters();
     parameters->SetBloomModeToPSF();
     parameters->SetPSFRadius(radius);
-    const bool airy = radius < wide;
+    const bool airy = row < 3;
     if (airy)
     {
       parameters->SetPSFType(vtkBloomParameters::PSF_AIRY);
