@@ -202,8 +202,25 @@ bool vtkBloomPassFFT::Prepare(
   {
     this->Grid[0] = grid[0];
     this->Grid[1] = grid[1];
-    this->AllocateBuffers();
     this->SpectraVersion = 0;
+    // A grid within the limits may still not fit the GPU's memory (40 NX NY bytes in all): a
+    // buffer that could not be allocated has size 0 (and GL_OUT_OF_MEMORY is raised).
+    this->AllocateBuffers();
+    GLint64 allocated[2] = { 0, 0 };
+    for (int b = 0; b < 2; ++b)
+    {
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, b ? this->SpectraBuffer : this->SignalBuffer);
+      glGetBufferParameteri64v(GL_SHADER_STORAGE_BUFFER, GL_BUFFER_SIZE, &allocated[b]);
+    }
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    if (allocated[0] + allocated[1] < 40LL * grid[0] * grid[1])
+    {
+      why = "PSF bloom's FFT grid " + std::to_string(grid[0]) + " x " + std::to_string(grid[1]) +
+        " does not fit in the GPU's memory (" + std::to_string(40LL * grid[0] * grid[1]) +
+        " bytes of buffers).";
+      this->Grid[0] = this->Grid[1] = 0;
+      return false;
+    }
   }
   this->Size[0] = width;
   this->Size[1] = height;
