@@ -6,9 +6,9 @@
 
   - FFT_TRANSFORM: the DFT of every sub-sequence of every line (a row or a column) of the two
     complex signals in the buffer `signal` (signal s at s * signalStride; sample n of line l at
-    l * lineStride + n * sampleStride), X[q] = sum_i x[i] exp(direction 2 pi i i q / FFT_N),
-    unscaled. Sub-sequence j of a line is its samples j * subOffset + i * subSpacing,
-    0 <= i < FFT_N (subCount of them per line); a line of N <= 4096 samples is one sub-sequence
+    l * lineStride + n * sampleStride), X[q] = sum_m x[m] exp(direction 2 pi i m q / FFT_N),
+    unscaled. Sub-sequence j of a line is its samples j * subOffset + m * subSpacing,
+    0 <= m < FFT_N (subCount of them per line); a line of N <= 4096 samples is one sub-sequence
     (subOffset 0, subSpacing 1). One work group per sub-sequence and signal, numbered
     g = (s lineCount + l) subCount + j along x, then y (2-D so that the count stays within
     65535 a dimension; groups past the last do nothing). The sub-sequence is held in shared
@@ -33,8 +33,8 @@
     G[k] = (Z[k] - conj Z[-k]) / (2 i). Each is scaled by `scale` = 1 / (NX NY), the inverse
     transform's normalization, and written to `spectra` (3 NX NY: red, green, blue). Along an
     axis transformed in four steps the spectrum is stored in the order of vtkBloomPassFFT.h
-    (position N2 k1 + k2 holds frequency k1 + N1 k2): Position maps a position to its
-    frequency's negative with `split` = (N2 along x, N2 along y), 1 along a one-pass axis.
+    (position N2 k1 + k2 holds frequency k1 + N1 k2): Negative maps a position to that of
+    its frequency's negative with `split` = (N2 along x, N2 along y), 1 along a one-pass axis.
   - FFT_MULTIPLY: the image's spectrum times the kernels', in place: Y = R KR + i G KG for
     signal 0 (with R, G separated as above; the inverse of Y is then r * kR + i g * kG, both
     real), B KB for signal 1. One invocation per pair (k, -k): each reads both.
