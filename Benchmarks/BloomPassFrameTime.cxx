@@ -19,6 +19,7 @@
 //   BloomPassFrameTime --sync SCENE WIDTH HEIGHT FRAMES
 //   BloomPassFrameTime --orbit SCENE WIDTH HEIGHT FRAMES
 //   BloomPassFrameTime --selective SCENE WIDTH HEIGHT FRAMES
+//   BloomPassFrameTime --psf SCENE WIDTH HEIGHT FRAMES
 //
 // SCENE is a name of vtkBloomExampleSceneNames() or "all" (default lit-spheres); PRESET is
 // "scene" (the scene's own parameters, the default), "default" (vtkBloomParameters' defaults),
@@ -46,6 +47,14 @@
 // chain and with the full chain) and in a second render of the emitters
 // (vtkBloomPass::EmitInSceneRender off), interleaved frame by frame: the selective frames'
 // median, mean, p99 and maximum, and their mean over the whole scene's.
+//
+// --psf: PSF bloom (vtkBloomParameters::BLOOM_PSF, the FFT convolution of vtkBloomPassFFT) on
+// the scene's bright pass, an Airy pattern of PSF radius 16, 64 and 256, then as wide as the
+// frame (radius max(WIDTH, HEIGHT) / 2; Gaussians there: an Airy pattern that wide takes
+// minutes to make on the CPU, and the FFT's cost does not depend on the PSF's values), each
+// interleaved frame by frame with the plain frame and the compute copy: the padded FFT grid,
+// the bloom frame's median, mean, p99 and maximum, its mean over the compute copy's, and the
+// wall time of the first bloom frame (the PSFs and their spectra made, the programs built).
 //
 // --sync: the cost of the pass's one wait for the GPU (the bright region's read-back, or
 // SkipEmptyBloom's occlusion query): vtkImageBloom's defaults with the content-aware chain, with
@@ -482,6 +491,68 @@ bool OrbitTable(const std::string& scene, int width, int height, int frames)
 }
 }
 
+// PSF bloom's frame time on `scene` for a few PSF radii (see --psf above); false for an unknown
+// scene.
+bool PSFTable(const std::string& scene, int width, int height, int frames)
+{
+  std::printf("PSF bloom (FFT convolution), %s at %dx%d: GPU time per frame (GL_TIME_ELAPSED), "
+              "ms, %d frames of each kind, interleaved\n"
+              "| PSF | radius | FFT grid | plain, mean | compute copy, mean | bloom: median | mean "
+              "| p99 | max | bloom over compute copy, mean | first bloom frame (wall) |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|\n",
+    scene.c_str(), width, height, frames);
+  // Airy patterns, then Gaussians as wide as the frame.
+  const int radii[] = { 16, 64, 256, std::max(width, height) / 2 };
+  for (int row = 0; row < 4; ++row)
+  {
+    const int radius = radii[row];
+    vtkBloomFrameTimer timer;
+    if (!SetUp(timer, scene, "scene", width, height))
+    {
+      return false;
+    }
+    vtkBloomParameters* parameters = timer.Bloom->GetParameters();
+    parameters->SetBloomModeToPSF();
+    parameters->SetPSFRadius(radius);
+    const bool airy = row < 3;
+    if (airy)
+    {
+      parameters->SetPSFType(vtkBloomParameters::PSF_AIRY);
+    }
+    else
+    {
+      parameters->SetPSFType(vtkBloomParameters::PSF_GAUSSIANS);
+      parameters->SetPSFGaussians({ 2.0, 16.0, radius / 3.0 }, { 1.0, 0.3, 0.1 });
+    }
+    const vtkBloomFrameTimer::Kind kinds[] = { vtkBloomFrameTimer::PLAIN,
+      vtkBloomFrameTimer::COMPUTE_COPY, vtkBloomFrameTimer::BLOOM };
+    std::vector<double> gpu[3];
+    double first = 0.0;
+    for (int f = -2; f < frames; ++f) // two warm-up frames of each
+    {
+      for (int k = 0; k < 3; ++k)
+      {
+        const double wall = timer.Frame(kinds[k]);
+        first = f == -2 && k == 2 ? wall : first;
+        if (f >= 0)
+        {
+          gpu[k].push_back(1e3 * timer.LastGPUSeconds);
+        }
+      }
+    }
+    const int* grid = timer.Bloom->GetLastPSFGrid();
+    const vtkBloomFrameStatistics plain(gpu[0]), copy(gpu[1]), bloom(gpu[2]);
+    const std::string gridText = grid[0] > 0
+      ? std::to_string(grid[0]) + "x" + std::to_string(grid[1])
+      : std::string("refused: no bloom");
+    std::printf("| %s | %d | %s | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %+.3f | %.2f s |\n",
+      airy ? "Airy" : "Gaussians", radius, gridText.c_str(), plain.Mean, copy.Mean, bloom.Median,
+      bloom.Mean, bloom.P99, bloom.Max, bloom.Mean - copy.Mean, first);
+    std::fflush(stdout);
+  }
+  return true;
+}
+
 // Selective bloom's cost over the whole scene's on `scene`, with the emission in the scene's
 // render and in a second render; false for an unknown scene or one without emitters. The
 // one-render frames have a window of their own: a mapper drawn alternately with and without
@@ -580,6 +651,10 @@ int main(int argc, char* argv[])
   {
     return SelectiveTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0
                                                                                                : 1;
+  }
+  if (argc > 5 && std::strcmp(argv[1], "--psf") == 0)
+  {
+    return PSFTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0 : 1;
   }
   if (argc > 5 && std::strcmp(argv[1], "--orbit") == 0)
   {

@@ -200,6 +200,7 @@ bool vtkBloomPass::vtkInternals::Prepare(
 //------------------------------------------------------------------------------
 bool vtkBloomPass::vtkInternals::RunBloom(vtkBloomPass* self, vtkTextureObject* source, bool mask)
 {
+  self->LastPSFGrid[0] = self->LastPSFGrid[1] = 0;
   if (self->Parameters->GetBloomMode() == vtkBloomParameters::BLOOM_PSF)
   {
     return this->RunPSF(self, source, mask);
@@ -273,6 +274,7 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self, vtkTextureObject* so
     return false;
   }
   this->PSFError.clear();
+  std::copy(this->FFT.GetGridSize(), this->FFT.GetGridSize() + 2, self->LastPSFGrid);
   if (!this->Runner.BrightPassPSF(source, mask, res.PSFBright))
   {
     return false;
@@ -370,6 +372,7 @@ vtkBloomPass::vtkBloomPass()
   , CaptureResult(false)
   , LastBrightRegion{ 0, 0, 0, 0 }
   , LastChainCoverage(1.0)
+  , LastPSFGrid{ 0, 0 }
   , NumberOfPasses(0)
   , LastBloomSkipped(false)
   , ProfilePasses(false)
@@ -866,6 +869,7 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "LastComputePasses: " << this->LastComputePasses << "\n";
   os << indent << "CaptureResult: " << (this->CaptureResult ? "On" : "Off") << "\n";
+  os << indent << "LastPSFGrid: " << this->LastPSFGrid[0] << " " << this->LastPSFGrid[1] << "\n";
   os << indent << "NumberOfPasses: " << this->NumberOfPasses << "\n";
   os << indent << "LastBloomSkipped: " << (this->LastBloomSkipped ? "On" : "Off") << "\n";
   os << indent << "LastBrightRegion: " << this->LastBrightRegion[0] << " "

@@ -98,9 +98,12 @@
  * with one PSF per colour channel (built by vtkImageBloom::ComputePSF, the filter's own code)
  * through a 2-D FFT in compute shaders (vtkBloomPassFFT: zero padded so nothing wraps, then
  * folded back by REFLECT or dropped by ZERO borders), and the same composite. It needs OpenGL
- * 4.3 compute shaders whatever UseComputeShaders says; without them, or for a padded grid with
- * a line longer than 4096 samples (the image plus twice the PSF radius), the pass reports an
- * error once and renders the scene without bloom. The PSFs' spectra are made again only when
+ * 4.3 compute shaders whatever UseComputeShaders says. A grid line longer than 4096 samples
+ * (the image plus twice the PSF radius) is transformed in four steps, up to 65536 samples
+ * (3840 x 2160 with a PSF as wide as the frame: a 7680 x 6000 grid, 1.9 GB of buffers).
+ * Without compute shaders, or for a longer line or buffers over vtkBloomPassFFT's limits
+ * (2 GiB a buffer, the context's largest shader storage block), the pass reports an error
+ * once and renders the scene without bloom. The PSFs' spectra are made again only when
  * the parameters or the size change. No chain is built in PSF mode.
  *
  * With CaptureResult on, the bloomed image is also kept in a float texture after each render,
@@ -361,6 +364,12 @@ public:
   vtkGetMacro(LastChainCoverage, double);
 
   /**
+   * The padded FFT grid (NX, NY) of the last evaluation in PSF mode; (0, 0) when it did not run
+   * the convolution (pyramid mode, or PSF mode refused).
+   */
+  vtkGetVector2Macro(LastPSFGrid, int);
+
+  /**
    * What the content-aware chain has measured of its own cost: the average GPU milliseconds of
    * an evaluation, from the start of the chain to the end of the composite, with the bright
    * region measured (its read-back's wait included) and with the full chain; negative until
@@ -437,6 +446,7 @@ protected:
   bool CaptureResult;
   int LastBrightRegion[4];
   double LastChainCoverage;
+  int LastPSFGrid[2];
   int NumberOfPasses;
   bool LastBloomSkipped;
   bool ProfilePasses;

@@ -68,26 +68,71 @@ std::vector<int> vtkBloomPassFFT::Radices(int n)
 }
 
 //------------------------------------------------------------------------------
-std::string vtkBloomPassFFT::TransformDefines(int n, bool fromTexture)
+bool vtkBloomPassFFT::Split(int n, int& n1, int& n2)
 {
-  // Enough invocations that each runs at most 8 butterflies of radix 2 (n <= 4096).
-  const int threads = n <= 1024 ? 64 : 256;
-  const std::vector<int> radices = Radices(n);
+  n1 = n;
+  n2 = 1;
+  if (n <= MaximumLength)
+  {
+    return true;
+  }
+  // Factors close to sqrt(n): more, shorter work groups rather than a few long ones.
+  for (int d = 1; d <= MaximumLength; ++d)
+  {
+    if (n % d == 0 && static_cast<long long>(d) * d >= n && n / d <= MaximumLength)
+    {
+      n1 = d;
+      n2 = n / d;
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkBloomPassFFT::Pass> vtkBloomPassFFT::Passes(int n, float direction)
+{
+  int n1 = n, n2 = 1;
+  Split(n, n1, n2);
+  if (n2 == 1)
+  {
+    return { Pass{ n, 1, 0, 1, false } };
+  }
+  // The strided sub-sequences (n1 samples, stride n2, n2 of them) and the contiguous runs (n2
+  // samples, n1 of them). The twiddle follows the first dispatch of either direction.
+  const Pass strided{ n1, n2, 1, n2, direction < 0.0f };
+  const Pass runs{ n2, n1, n2, 1, direction > 0.0f };
+  if (direction < 0.0f)
+  {
+    return { strided, runs };
+  }
+  return { runs, strided };
+}
+
+//------------------------------------------------------------------------------
+std::string vtkBloomPassFFT::TransformDefines(const Pass& pass, int n, bool fromTexture)
+{
+  // Enough invocations that each runs at most 8 butterflies of radix 2 (length <= 4096).
+  const int length = pass.Length;
+  const int threads = length <= 1024 ? 64 : 256;
+  const std::vector<int> radices = Radices(length);
   int butterflies = 1;
   std::string list;
   for (int r : radices)
   {
-    butterflies = std::max(butterflies, (n / r + threads - 1) / threads);
+    butterflies = std::max(butterflies, (length / r + threads - 1) / threads);
     list += (list.empty() ? "" : ", ") + std::to_string(r);
   }
   if (radices.empty())
   {
-    list = "1"; // n == 1: no stage
+    list = "1"; // length 1: no stage
   }
-  return "#define FFT_TRANSFORM 1\n#define FFT_N " + std::to_string(n) + "\n#define FFT_THREADS " +
+  return "#define FFT_TRANSFORM 1\n#define FFT_N " + std::to_string(length) +
+    "\n#define FFT_TWIDDLE_STRIDE " + std::to_string(n / length) + "\n#define FFT_THREADS " +
     std::to_string(threads) + "\n#define FFT_STAGES " + std::to_string(radices.size()) +
     "\n#define FFT_RADICES " + list + "\n#define FFT_BUTTERFLIES " + std::to_string(butterflies) +
-    "\n" + (fromTexture ? "#define FFT_FROM_TEXTURE 1\n" : "");
+    "\n" + (fromTexture ? "#define FFT_FROM_TEXTURE 1\n" : "") +
+    (pass.Twiddle ? "#define FFT_FOUR_STEP_TWIDDLE 1\n" : "");
 }
 
 //------------------------------------------------------------------------------
@@ -166,29 +211,55 @@ bool vtkBloomPassFFT::Prepare(
       std::to_string(major) + "." + std::to_string(minor) + ".";
     return false;
   }
-  const int grid[2] = { GoodSize(width + 2 * this->Radius), GoodSize(height + 2 * this->Radius) };
-  if (grid[0] > MaximumLength || grid[1] > MaximumLength)
+  int grid[2];
+  why = this->MakeGrid(width, height, grid);
+  if (!why.empty())
   {
-    why = "PSF bloom's FFT grid " + std::to_string(grid[0]) + " x " + std::to_string(grid[1]) +
-      " (the image " + std::to_string(width) + " x " + std::to_string(height) +
-      " padded by the PSF radius " + std::to_string(this->Radius) + ") has a line longer than " +
-      std::to_string(MaximumLength) + " samples.";
     return false;
   }
   if (grid[0] != this->Grid[0] || grid[1] != this->Grid[1])
   {
     this->Grid[0] = grid[0];
     this->Grid[1] = grid[1];
-    this->AllocateBuffers();
     this->SpectraVersion = 0;
+    // A grid within the limits may still not fit the GPU's memory (40 NX NY bytes in all): a
+    // buffer that could not be allocated has size 0 (and GL_OUT_OF_MEMORY is raised).
+    this->AllocateBuffers();
+    GLint64 allocated[2] = { 0, 0 };
+    for (int b = 0; b < 2; ++b)
+    {
+      glBindBuffer(GL_SHADER_STORAGE_BUFFER, b ? this->SpectraBuffer : this->SignalBuffer);
+      glGetBufferParameteri64v(GL_SHADER_STORAGE_BUFFER, GL_BUFFER_SIZE, &allocated[b]);
+    }
+    glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+    if (allocated[0] + allocated[1] < 40LL * grid[0] * grid[1])
+    {
+      why = "PSF bloom's FFT grid " + std::to_string(grid[0]) + " x " + std::to_string(grid[1]) +
+        " does not fit in the GPU's memory (" + std::to_string(40LL * grid[0] * grid[1]) +
+        " bytes of buffers).";
+      this->Grid[0] = this->Grid[1] = 0;
+      return false;
+    }
   }
   this->Size[0] = width;
   this->Size[1] = height;
-  for (const std::string& defines :
-    { TransformDefines(grid[0], true), TransformDefines(grid[0], false),
-      TransformDefines(grid[1], false), std::string("#define FFT_SEPARATE 1\n"),
-      std::string("#define FFT_MULTIPLY 1\n"), std::string("#define FFT_FOLD 1\n"),
-      std::string("#define FFT_FOLD 1\n#define FFT_REFLECT 1\n") })
+  // The programs of both axes' transforms (rows forward from a texture, the rest from the
+  // buffer) and of the point-wise stages.
+  std::vector<std::string> programs = { "#define FFT_SEPARATE 1\n", "#define FFT_MULTIPLY 1\n",
+    "#define FFT_FOLD 1\n", "#define FFT_FOLD 1\n#define FFT_REFLECT 1\n" };
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    for (float direction : { -1.0f, 1.0f })
+    {
+      const std::vector<Pass> passes = Passes(grid[axis], direction);
+      for (size_t i = 0; i < passes.size(); ++i)
+      {
+        const bool fromTexture = axis == 0 && direction < 0.0f && i == 0;
+        programs.push_back(TransformDefines(passes[i], grid[axis], fromTexture));
+      }
+    }
+  }
+  for (const std::string& defines : programs)
   {
     std::string log;
     if (!this->Program(defines, &log))
@@ -203,6 +274,41 @@ bool vtkBloomPassFFT::Prepare(
     this->SpectraVersion = this->KernelsVersion;
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkBloomPassFFT::MakeGrid(int width, int height, int grid[2]) const
+{
+  const std::string image = "the image " + std::to_string(width) + " x " + std::to_string(height) +
+    " padded by the PSF radius " + std::to_string(this->Radius);
+  const long long padded[2] = { width + 2LL * this->Radius, height + 2LL * this->Radius };
+  if (std::max(padded[0], padded[1]) > MaximumGridLength)
+  {
+    return "PSF bloom's FFT grid (" + image + ") has a line longer than " +
+      std::to_string(MaximumGridLength) + " samples.";
+  }
+  grid[0] = GoodSize(static_cast<int>(padded[0]));
+  grid[1] = GoodSize(static_cast<int>(padded[1]));
+  const std::string name = "PSF bloom's FFT grid " + std::to_string(grid[0]) + " x " +
+    std::to_string(grid[1]) + " (" + image + ")";
+  // The spectra, 3 NX NY vec2, are the largest buffer; the shaders index it with 32-bit ints.
+  const long long bytes = 3LL * grid[0] * grid[1] * 2 * sizeof(float);
+  GLint64 block = 0;
+  glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
+  const long long limit = std::min<long long>(MaximumBufferBytes, block);
+  if (bytes > limit)
+  {
+    return name + " needs a buffer of " + std::to_string(bytes) + " bytes, more than the " +
+      std::to_string(limit) + " allowed.";
+  }
+  GLint texture = 0;
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &texture);
+  if (2 * this->Radius + 1 > texture)
+  {
+    return "PSF bloom's kernel window " + std::to_string(2 * this->Radius + 1) +
+      " is wider than this context's largest texture, " + std::to_string(texture) + ".";
+  }
+  return std::string();
 }
 
 //------------------------------------------------------------------------------
@@ -235,6 +341,17 @@ void vtkBloomPassFFT::AllocateBuffers()
       table.data(), GL_STATIC_DRAW);
   }
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::SetSplit(unsigned int program)
+{
+  int n1[2], n2[2];
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    Split(this->Grid[axis], n1[axis], n2[axis]);
+  }
+  glUniform2i(this->Uniform(program, "split"), n2[0], n2[1]);
 }
 
 //------------------------------------------------------------------------------
@@ -271,6 +388,7 @@ void vtkBloomPassFFT::MakeSpectra()
   const unsigned int program = this->Program("#define FFT_SEPARATE 1\n");
   glUseProgram(program);
   glUniform2i(this->Uniform(program, "size"), this->Grid[0], this->Grid[1]);
+  this->SetSplit(program);
   glUniform1f(this->Uniform(program, "scale"),
     static_cast<float>(1.0 / (static_cast<double>(this->Grid[0]) * this->Grid[1])));
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->SignalBuffer);
@@ -285,13 +403,29 @@ void vtkBloomPassFFT::MakeSpectra()
 void vtkBloomPassFFT::Transform(
   int axis, float direction, vtkTextureObject* source, const int sourceSize[2])
 {
+  // Only the first dispatch reads the texture; the second (four steps) reads its output.
+  for (const Pass& pass : Passes(this->Grid[axis], direction))
+  {
+    this->RunPass(pass, axis, direction, source, sourceSize);
+    source = nullptr;
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::RunPass(
+  const Pass& pass, int axis, float direction, vtkTextureObject* source, const int sourceSize[2])
+{
   const int n = this->Grid[axis];
-  const unsigned int program = this->Program(TransformDefines(n, source != nullptr));
+  const unsigned int program = this->Program(TransformDefines(pass, n, source != nullptr));
   glUseProgram(program);
   // Rows: samples adjacent, lines NX apart; columns: samples NX apart, lines adjacent.
   glUniform1i(this->Uniform(program, "sampleStride"), axis == 0 ? 1 : this->Grid[0]);
   glUniform1i(this->Uniform(program, "lineStride"), axis == 0 ? this->Grid[0] : 1);
   glUniform1i(this->Uniform(program, "signalStride"), this->Grid[0] * this->Grid[1]);
+  glUniform1i(this->Uniform(program, "lineCount"), this->Grid[1 - axis]);
+  glUniform1i(this->Uniform(program, "subCount"), pass.Count);
+  glUniform1i(this->Uniform(program, "subOffset"), pass.Offset);
+  glUniform1i(this->Uniform(program, "subSpacing"), pass.Spacing);
   glUniform1f(this->Uniform(program, "direction"), direction);
   if (source)
   {
@@ -301,7 +435,12 @@ void vtkBloomPassFFT::Transform(
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->SignalBuffer);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->TwiddleBuffers[axis]);
-  glDispatchCompute(this->Grid[1 - axis], 2, 1);
+  // One work group per sub-sequence, line and signal, in rows of at most 65535 (every
+  // context allows that many a dimension).
+  const long long groups = 2LL * this->Grid[1 - axis] * pass.Count;
+  const long long across = std::min<long long>(groups, 65535);
+  glDispatchCompute(
+    static_cast<GLuint>(across), static_cast<GLuint>((groups + across - 1) / across), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   if (source)
   {
@@ -317,6 +456,7 @@ void vtkBloomPassFFT::Convolve(vtkTextureObject* source, vtkTextureObject* targe
   const unsigned int multiply = this->Program("#define FFT_MULTIPLY 1\n");
   glUseProgram(multiply);
   glUniform2i(this->Uniform(multiply, "size"), this->Grid[0], this->Grid[1]);
+  this->SetSplit(multiply);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->SignalBuffer);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->SpectraBuffer);
   glDispatchCompute(Groups(this->Grid[0]), Groups(this->Grid[1]), 1);

@@ -19,12 +19,33 @@
  * kernel set and grid (SetKernels / Prepare), scaled by 1 / (NX NY).
  *
  * Per convolution: the row transforms (reading the texture), the column transforms, the
- * multiply, the inverse columns, the inverse rows and the fold: six dispatches, each line in
- * shared memory (one work group per line and signal). Storage is float32: two shader storage
- * buffers of 2 NX NY vec2 (the signals) and 3 NX NY vec2 (the kernels' spectra), and one
- * twiddle table per axis, cos and sin of 2 pi m / N computed in double. A line longer than
- * 4096 samples does not fit the 32 KiB of shared memory every OpenGL 4.3 context has: Prepare
- * refuses such a grid.
+ * multiply, the inverse columns, the inverse rows and the fold, each line in shared memory (one
+ * work group per line and signal). Storage is float32: two shader storage buffers of
+ * 2 NX NY vec2 (the signals) and 3 NX NY vec2 (the kernels' spectra), and one twiddle table per
+ * axis, cos and sin of 2 pi m / N computed in double.
+ *
+ * A line of N <= 4096 samples (MaximumLength: 4096 vec2 fill the 32 KiB of shared memory every
+ * OpenGL 4.3 context has) is transformed by one dispatch. A longer one (up to
+ * MaximumGridLength) takes two, the four-step transform of Bailey (1990, "FFTs in external or
+ * hierarchical memory"): N = N1 N2 (Split: both at most 4096, as close as they can be), with
+ * n = N2 n1 + n2 and k = k1 + N1 k2,
+ *
+ *   X[k1 + N1 k2] = sum_n2 W_N2^(n2 k2) [ W_N^(n2 k1) sum_n1 W_N1^(n1 k1) x[N2 n1 + n2] ],
+ *
+ * W_M = exp(-2 pi i / M). The first dispatch transforms the N2 sub-sequences of stride N2
+ * (length N1) in place and multiplies output k1 of sub-sequence n2 by the twiddle W_N^(n2 k1)
+ * (entry n2 k1 of the axis's table); the second transforms the N1 contiguous runs of N2 samples
+ * in place. No transpose: the spectrum stays in that order, position N2 k1 + k2 holding
+ * frequency k1 + N1 k2. The multiply (and the kernels' spectra, made by the same transform)
+ * only needs where -k is, which its shader works out from N2. The inverse runs the two
+ * dispatches backwards with conjugate roots: the runs of N2 (then the twiddle W_N^(-n2 k1)),
+ * then the strided sub-sequences, which leaves the signal in natural order for the fold.
+ *
+ * Limits: a grid line longer than MaximumGridLength, a buffer larger than MaximumBufferBytes
+ * (2 GiB; the spectra, 24 NX NY bytes, are the largest) or than the context's shader storage
+ * block, or a kernel window wider than its largest texture is refused. A 3840 x 2160 frame with
+ * a PSF of radius 1920 (grid 7680 x 6000) needs 1.1 GB of spectra and 0.74 GB of signals.
+ * Dispatches of more than 65535 work groups are laid out in 2-D.
  *
  * The programs are plain OpenGL (VTK 9.1's shader classes have no compute stage), from
  * glsl/vtkBloomPassFFTCS.glsl and a #define preamble, made on first use.
@@ -62,6 +83,19 @@ public:
   /// The longest line one dispatch transforms: 4096 vec2 fill 32 KiB of shared memory.
   static constexpr int MaximumLength = 4096;
 
+  /// The longest grid line: longer than MaximumLength, it is transformed in four steps.
+  static constexpr int MaximumGridLength = 65536;
+
+  /// The largest shader storage buffer Prepare makes (the spectra, 24 NX NY bytes).
+  static constexpr long long MaximumBufferBytes = 1LL << 31;
+
+  /**
+   * N = n1 n2 for the four-step transform of a line of n samples (a product of 2, 3 and 5):
+   * n1 = n, n2 = 1 for n <= MaximumLength (one dispatch); else both at most MaximumLength,
+   * n1 the smallest such divisor that is at least sqrt(n). False if there is none.
+   */
+  static bool Split(int n, int& n1, int& n2);
+
   /// The smallest n' >= n whose prime factors are 2, 3 and 5.
   static int GoodSize(int n);
 
@@ -78,8 +112,9 @@ public:
   /**
    * Make the grid, the buffers, the programs and (where stale) the kernels' spectra for
    * width x height images in `context`. False, with the reason in `why`, when the context has
-   * no compute shaders, a program does not build or the grid has a line longer than
-   * MaximumLength.
+   * no compute shaders, a program does not build, the grid has a line longer than
+   * MaximumGridLength, a buffer would exceed MaximumBufferBytes or the context's largest shader
+   * storage block, or the kernels' window its largest texture.
    */
   bool Prepare(vtkOpenGLRenderWindow* context, int width, int height, std::string& why);
 
@@ -107,17 +142,37 @@ public:
   ///@}
 
 private:
+  /// One dispatch of a transform: the DFT of Count sub-sequences of Length samples per line,
+  /// sub-sequence j at line samples j Offset + i Spacing, then the four-step twiddle or not.
+  struct Pass
+  {
+    int Length;
+    int Count;
+    int Offset;
+    int Spacing;
+    bool Twiddle;
+  };
+  /// The dispatches of a forward (direction -1) or inverse (+1) transform of lines of n samples.
+  static std::vector<Pass> Passes(int n, float direction);
+
   /// The forward (direction -1) or inverse (+1) transform of every line along `axis` (0: rows,
   /// 1: columns) of both signals; rows may read `source` instead of the buffer.
   void Transform(int axis, float direction, vtkTextureObject* source, const int sourceSize[2]);
+  void RunPass(
+    const Pass& pass, int axis, float direction, vtkTextureObject* source, const int sourceSize[2]);
   /// The compute program of `defines`, made on first use; 0 when it does not build (the
   /// compiler's log in `log`, when given).
   unsigned int Program(const std::string& defines, std::string* log = nullptr);
-  /// The defines of the transform along a line of n samples.
-  static std::string TransformDefines(int n, bool fromTexture);
+  /// The defines of `pass` along a line of n samples.
+  static std::string TransformDefines(const Pass& pass, int n, bool fromTexture);
+  /// The padded grid of width x height images in `grid`, and why this context cannot use it
+  /// (empty when it can).
+  std::string MakeGrid(int width, int height, int grid[2]) const;
   /// Upload the kernels and compute their spectra into SpectraBuffer.
   void MakeSpectra();
   int Uniform(unsigned int program, const char* name);
+  /// The `split` uniform of the separate and multiply stages: N2 of each axis (1: one pass).
+  void SetSplit(unsigned int program);
   void AllocateBuffers();
 
   vtkOpenGLRenderWindow* Context = nullptr;

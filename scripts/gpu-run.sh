@@ -30,12 +30,16 @@
 #   selective.md     selective bloom (scalar-field) against the whole scene's, the emission in
 #                    the scene's render and in a second render, at 1920x1080 and 3840x2160
 #                    (BloomPassFrameTime --selective), 4 x $FRAMES frames of each kind
+#   psf.md           PSF bloom (the FFT convolution) on lit-spheres at 1920x1080 and 3840x2160,
+#                    Airy PSFs of radius 16, 64 and 256 and a PSF as wide as the frame (grids
+#                    up to 7680 x 6000, four-step transforms), each against the plain frame and
+#                    the compute copy (BloomPassFrameTime --psf), $FRAMES frames of each kind
 #   stages.md        ShaderStageThroughput: one full-screen pass as a fragment and as a compute
 #                    shader at 3840x2160
 #   render.png       `vtk-bloom render` of lit-spheres at 3840x2160
 #   run.log          everything printed
 #
-# STEPS (default "tests frametime profile quality sparse sync orbit selective stages render")
+# STEPS (default "tests frametime profile quality sparse sync orbit selective psf stages render")
 # picks the steps. At most 8 files come back from the device tool: pick fewer steps there.
 # The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
 # CUDA image) and the pack at the absolute paths it was built with.
@@ -44,7 +48,7 @@ cd "${VTKBLOOM_GPU_ROOT:-$PWD}" || exit 1
 OUT=${OUT:-$(mktemp -d)}
 mkdir -p "$OUT"
 FRAMES=${FRAMES:-50}
-STEPS=${STEPS:-tests frametime profile quality sparse sync orbit selective stages render}
+STEPS=${STEPS:-tests frametime profile quality sparse sync orbit selective psf stages render}
 PRESETS=${PRESETS:-all}
 step() { [[ " $STEPS " == *" $1 "* ]]; }
 exec > >(tee "$OUT/run.log") 2>&1
@@ -163,6 +167,17 @@ echo "== selective bloom in one render"
     echo
   done
 } | tee "$OUT/selective.md"
+fi
+
+if step psf; then
+echo "== PSF bloom"
+{
+  for size in "1920 1080" "3840 2160"; do
+    # shellcheck disable=SC2086
+    timeout 400 "$bin/BloomPassFrameTime" --psf lit-spheres $size "$FRAMES"
+    echo
+  done
+} | tee "$OUT/psf.md"
 fi
 
 if step stages; then

@@ -4,11 +4,15 @@
   convolution of a float RGBA image with one PSF per colour channel through a 2-D FFT of the
   zero-padded NX x NY grid. One stage per program, chosen by a #define:
 
-  - FFT_TRANSFORM: the DFT of every line (a row or a column) of the two complex signals in
-    the buffer `signal` (signal s at s * signalStride; sample i of line l at
-    l * lineStride + i * sampleStride), X[q] = sum_n x[n] exp(direction 2 pi i n q / N),
-    unscaled. One work group per line and signal (gl_WorkGroupID.x, .y); the line is held in
-    shared memory (N <= 4096 complex samples: 32 KiB) and transformed in place by mixed-radix
+  - FFT_TRANSFORM: the DFT of every sub-sequence of every line (a row or a column) of the two
+    complex signals in the buffer `signal` (signal s at s * signalStride; sample n of line l at
+    l * lineStride + n * sampleStride), X[q] = sum_m x[m] exp(direction 2 pi i m q / FFT_N),
+    unscaled. Sub-sequence j of a line is its samples j * subOffset + m * subSpacing,
+    0 <= m < FFT_N (subCount of them per line); a line of N <= 4096 samples is one sub-sequence
+    (subOffset 0, subSpacing 1). One work group per sub-sequence and signal, numbered
+    g = (s lineCount + l) subCount + j along x, then y (2-D so that the count stays within
+    65535 a dimension; groups past the last do nothing). The sub-sequence is held in shared
+    memory (FFT_N <= 4096 complex samples: 32 KiB) and transformed in place by mixed-radix
     Stockham stages (radices 4, 2, 3, 5, in the order FFT_RADICES lists them), so that the
     result is in natural order with no bit reversal. Stage s of radix R, with Ns the product
     of the radices before it, takes butterfly j (0 <= j < N / R, k = j mod Ns) from samples
@@ -16,14 +20,21 @@
     it to (j / Ns) Ns R + k + q Ns (Govindaraju et al. 2008, "High performance discrete
     Fourier transforms on graphics processors"). Each invocation keeps its butterflies'
     results in registers between two barriers, so the stage needs one line of shared memory.
-    w^m = exp(direction 2 pi i m / N) comes from `twiddle`, cos and sin of 2 pi m / N computed
-    in double on the CPU: GLSL's float sin and cos are not accurate enough for large N.
+    The roots come from `twiddle`, cos and sin of 2 pi m / N for the whole line's N computed
+    in double on the CPU (GLSL's float sin and cos are not accurate enough for large N):
+    exp(direction 2 pi i m / FFT_N) is entry m FFT_TWIDDLE_STRIDE (= N / FFT_N).
+    FFT_FOUR_STEP_TWIDDLE: output q of sub-sequence j is then multiplied by
+    exp(direction 2 pi i j q / N), the twiddle of the four-step (Bailey) transform of a line
+    longer than 4096 samples (vtkBloomPassFFT.h gives its two passes and the spectrum's order).
     FFT_FROM_TEXTURE: the first (row) transform reads row l of the RGBA texture `source`
     instead, zero padded beyond sourceSize: signal 0 = R + i G, signal 1 = B + i 0.
   - FFT_SEPARATE: the kernels' spectra from the transform of (kR + i kG, kB): with Z the
     spectrum of z = r + i g (r, g real), R[k] = (Z[k] + conj Z[-k]) / 2 and
     G[k] = (Z[k] - conj Z[-k]) / (2 i). Each is scaled by `scale` = 1 / (NX NY), the inverse
-    transform's normalization, and written to `spectra` (3 NX NY: red, green, blue).
+    transform's normalization, and written to `spectra` (3 NX NY: red, green, blue). Along an
+    axis transformed in four steps the spectrum is stored in the order of vtkBloomPassFFT.h
+    (position N2 k1 + k2 holds frequency k1 + N1 k2): Negative maps a position to that of
+    its frequency's negative with `split` = (N2 along x, N2 along y), 1 along a one-pass axis.
   - FFT_MULTIPLY: the image's spectrum times the kernels', in place: Y = R KR + i G KG for
     signal 0 (with R, G separated as above; the inverse of Y is then r * kR + i g * kG, both
     real), B KB for signal 1. One invocation per pair (k, -k): each reads both.
@@ -60,6 +71,10 @@ layout(std430, binding = 1) readonly buffer Twiddles
 uniform int sampleStride;
 uniform int lineStride;
 uniform int signalStride;
+uniform int lineCount;  // lines per signal
+uniform int subCount;   // sub-sequences per line
+uniform int subOffset;  // line samples between the starts of two sub-sequences
+uniform int subSpacing; // line samples between two samples of a sub-sequence
 uniform float direction; // -1: forward, +1: inverse
 
 #ifdef FFT_FROM_TEXTURE
@@ -71,11 +86,17 @@ shared vec2 line[FFT_N];
 
 const int radices[FFT_STAGES] = int[](FFT_RADICES);
 
-// w^m for 0 <= m < N.
+// exp(direction 2 pi i m / N) for 0 <= m < N, N the whole line's length.
 vec2 Twiddle(int m)
 {
   vec2 w = twiddle[m];
   return vec2(w.x, direction * w.y);
+}
+
+// w^m = exp(direction 2 pi i m / FFT_N), a root of the sub-sequence's transform.
+vec2 Root(int m)
+{
+  return Twiddle(m * FFT_TWIDDLE_STRIDE);
 }
 
 // One Stockham stage of radix R (at most 5) after stages whose radices multiply to ns.
@@ -92,7 +113,7 @@ void Stage(int R, int ns)
     v[0] = line[j];
     for (int r = 1; r < R; ++r)
     {
-      v[r] = ComplexMultiply(line[j + r * butterflies], Twiddle(k * r * step));
+      v[r] = ComplexMultiply(line[j + r * butterflies], Root(k * r * step));
     }
     if (R == 2)
     {
@@ -118,7 +139,7 @@ void Stage(int R, int ns)
         vec2 sum = v[0];
         for (int r = 1; r < R; ++r)
         {
-          sum += ComplexMultiply(v[r], Twiddle(((r * q) % R) * butterflies));
+          sum += ComplexMultiply(v[r], Root(((r * q) % R) * butterflies));
         }
         results[b * 5 + q] = sum;
       }
@@ -153,20 +174,26 @@ void TransformLine()
 #else
 void main()
 {
-  const int index = int(gl_WorkGroupID.x);
-  const int s = int(gl_WorkGroupID.y);
+  // Groups past the last still reach every barrier (uniform control flow), but touch nothing.
+  const int g = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
+  const bool live = g < 2 * lineCount * subCount;
+  const int sub = g % subCount;
+  const int index = (g / subCount) % lineCount;
+  const int s = g / (subCount * lineCount);
+  const int first = sub * subOffset;
   const int base = s * signalStride + index * lineStride;
-  for (int i = int(gl_LocalInvocationID.x); i < FFT_N; i += FFT_THREADS)
+  for (int i = int(gl_LocalInvocationID.x); live && i < FFT_N; i += FFT_THREADS)
   {
+    const int at = first + i * subSpacing;
 #ifdef FFT_FROM_TEXTURE
     vec4 texel = vec4(0.0);
-    if (i < sourceSize.x && index < sourceSize.y)
+    if (at < sourceSize.x && index < sourceSize.y)
     {
-      texel = texelFetch(source, ivec2(i, index), 0);
+      texel = texelFetch(source, ivec2(at, index), 0);
     }
     line[i] = s == 0 ? texel.rg : vec2(texel.b, 0.0);
 #else
-    line[i] = signal[base + i * sampleStride];
+    line[i] = signal[base + at * sampleStride];
 #endif
   }
   barrier();
@@ -176,16 +203,22 @@ void main()
     Stage(radices[stage], ns);
     ns *= radices[stage];
   }
-  for (int i = int(gl_LocalInvocationID.x); i < FFT_N; i += FFT_THREADS)
+  for (int i = int(gl_LocalInvocationID.x); live && i < FFT_N; i += FFT_THREADS)
   {
-    signal[base + i * sampleStride] = line[i];
+#ifdef FFT_FOUR_STEP_TWIDDLE
+    signal[base + (first + i * subSpacing) * sampleStride] =
+      ComplexMultiply(line[i], Twiddle(sub * i));
+#else
+    signal[base + (first + i * subSpacing) * sampleStride] = line[i];
+#endif
   }
 }
 #endif // FFT_LIBRARY
 
 #elif defined(FFT_SEPARATE) || defined(FFT_MULTIPLY)
 
-uniform ivec2 size; // NX, NY
+uniform ivec2 size;  // NX, NY
+uniform ivec2 split; // N2 of each axis's four-step transform; 1 for a one-pass axis
 
 #ifdef FFT_SEPARATE
 layout(std430, binding = 1) writeonly buffer Spectra
@@ -199,6 +232,16 @@ layout(std430, binding = 1) readonly buffer Spectra
   vec2 spectra[];
 };
 #endif
+
+// The position of frequency -k where position p of an axis of n samples, split as n1 x n2,
+// holds frequency k = p / n2 + n1 (p mod n2) (n2 = 1: p itself).
+int Negative(int p, int n, int n2)
+{
+  const int n1 = n / n2;
+  const int k = p / n2 + n1 * (p % n2);
+  const int m = (n - k) % n;
+  return (m % n1) * n2 + m / n1;
+}
 
 // The spectra of the real and imaginary parts of a signal whose spectrum is z at k and zm at -k.
 void Separate(vec2 z, vec2 zm, out vec2 re, out vec2 im)
@@ -216,7 +259,7 @@ void main()
   {
     return;
   }
-  const ivec2 km = (size - k) % size;
+  const ivec2 km = ivec2(Negative(k.x, size.x, split.x), Negative(k.y, size.y, split.y));
   const int total = size.x * size.y;
   const int p = k.y * size.x + k.x;
   const int q = km.y * size.x + km.x;

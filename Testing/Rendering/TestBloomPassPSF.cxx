@@ -1,7 +1,8 @@
 // Tests of vtkBloomPass's PSF mode (vtkBloomParameters::BLOOM_PSF; the FFT of
 // vtkBloomPassFFT): the GPU against vtkImageBloom's PSF mode on the same float render for each
 // kind of PSF, both borders, an odd and an even size and a PSF as wide as the frame; the energy
-// of the bloom term with REFLECT; a delta's bloom against the PSF itself, per channel.
+// of the bloom term with REFLECT; a delta's bloom against the PSF itself, per channel; the same
+// on grids with a line longer than 4096 samples (vtkBloomPassFFT's four-step transform).
 #include "vtkBloomExampleScenes.h"
 #include "vtkBloomParameters.h"
 #include "vtkBloomPass.h"
@@ -185,6 +186,104 @@ const char* BorderName(int border)
 {
   return border == vtkImageSeparableGaussian::REFLECT ? "REFLECT" : "ZERO";
 }
+
+// A float RGBA image of HDR spots on a dim ripple, different in each channel, so that every
+// channel's convolution and the folds of both axes show.
+vtkSmartPointer<vtkImageData> Spots(int width, int height)
+{
+  auto image = vtkSmartPointer<vtkImageData>::New();
+  image->SetDimensions(width, height, 1);
+  image->AllocateScalars(VTK_FLOAT, 4);
+  auto* values = vtkFloatArray::SafeDownCast(image->GetPointData()->GetScalars());
+  for (int y = 0; y < height; ++y)
+  {
+    for (int x = 0; x < width; ++x)
+    {
+      const vtkIdType p = static_cast<vtkIdType>(y) * width + x;
+      const double ripple = 0.05 * (1.0 + std::sin(0.013 * x + 0.07 * y));
+      const double spot = (7 * x + 13 * y) % 211 == 0 ? 20.0 : 0.0;
+      for (int c = 0; c < 3; ++c)
+      {
+        values->SetComponent(p, c, ripple * (1.0 + 0.3 * c) + spot * (c + 1));
+      }
+      values->SetComponent(p, 3, 1.0);
+    }
+  }
+  return image;
+}
+
+struct FourStepResult
+{
+  double Colour = 1.0; ///< relative L2 of the GPU's result against the CPU filter's
+  double Bloom = 1.0;  ///< the same of the bloom terms alone
+  double Energy = 1.0; ///< |sum of the GPU's bloom term - sum of the input| / sum of the input
+};
+
+// vtkBloomPass::ApplyToImage of Spots(width, height) in `w`, every pixel blooming
+// (PassEverything), against vtkImageBloom's PSF mode (REFERENCE) on the same image.
+FourStepResult FourStepAgreement(
+  BloomWindow& w, PSFKind kind, int radius, int border, int width, int height)
+{
+  w.Bloom->SetFloatPrecisionTo32Bit();
+  vtkBloomParameters* parameters = w.Bloom->GetParameters();
+  SetPSF(parameters, kind, radius, border);
+  PassEverything(parameters);
+  vtkSmartPointer<vtkImageData> input = Spots(width, height);
+  vtkNew<vtkImageData> gpu;
+  EXPECT_TRUE(w.Bloom->ApplyToImage(w.GL(), input, gpu));
+  EXPECT_FALSE(w.Bloom->GetLastBloomSkipped());
+  vtkNew<vtkImageBloom> cpu;
+  cpu->SetParameters(parameters);
+  cpu->SetExecutionMode(vtkImageBloom::REFERENCE);
+  cpu->SetInputData(input);
+  cpu->Update();
+  FourStepResult r;
+  r.Colour = ColourRelativeL2(gpu, cpu->GetOutput());
+  r.Bloom = BloomRelativeL2(input, gpu, cpu->GetOutput());
+  double in = 0.0, bloom = 0.0;
+  for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      const double s = input->GetPointData()->GetScalars()->GetComponent(p, c);
+      in += s;
+      bloom += gpu->GetPointData()->GetScalars()->GetComponent(p, c) - s;
+    }
+  }
+  r.Energy = std::abs(bloom - in) / in;
+  return r;
+}
+
+// FourStepAgreement for Gaussians and an Airy pattern, both borders, on images 4050 or 4100
+// wide and 8 high (transposed: 8 wide), within 1e-5 of the CPU filter; REFLECT keeps the energy.
+void FourStepCases(bool transposed)
+{
+  struct Case
+  {
+    PSFKind Kind;
+    int Radius, Long;
+  };
+  for (const Case& c : { Case{ GAUSSIANS, 40, 4050 }, Case{ AIRY, -1, 4100 } })
+  {
+    const int width = transposed ? 8 : c.Long, height = transposed ? c.Long : 8;
+    BloomWindow w(8, 8); // one for both borders: the PSFs' spectra are made once
+    for (int border :
+      { int(vtkImageSeparableGaussian::REFLECT), int(vtkImageSeparableGaussian::ZERO) })
+    {
+      const FourStepResult r = FourStepAgreement(w, c.Kind, c.Radius, border, width, height);
+      std::cout << "four-step PSF " << c.Kind << " " << BorderName(border) << " " << width << "x"
+                << height << ": colour " << r.Colour << ", bloom " << r.Bloom << ", energy "
+                << r.Energy << "\n";
+      EXPECT_LE(r.Colour, 1e-5) << "PSF kind " << c.Kind << ", " << BorderName(border);
+      EXPECT_LE(r.Bloom, 1e-5) << "PSF kind " << c.Kind << ", " << BorderName(border);
+      if (border == vtkImageSeparableGaussian::REFLECT)
+      {
+        EXPECT_LE(r.Energy, 1e-5) << "PSF kind " << c.Kind;
+      }
+    }
+  }
+}
+
 }
 
 //------------------------------------------------------------------------------
@@ -241,6 +340,72 @@ TEST(RenderingBloomPassPSF, AgreesWithTheCPUFilterForAnAiryPatternWiderThanTheFr
               << a.Bloom << "\n";
     EXPECT_LE(a.Colour, 1e-5) << BorderName(border);
     EXPECT_LE(a.Bloom, 1e-5) << BorderName(border);
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, AgreesWithTheCPUFilterOnRowsLongerThan4096)
+{
+  // Grid rows of more than 4096 samples, transformed in four steps (vtkBloomPassFFT::Split):
+  // Gaussians of radius 40 on 4050 x 8 (grid 4320 x 90, 4320 = 72 x 60; REFLECT folds the
+  // light back across the 8 rows five times) and an Airy pattern (its automatic radius) on
+  // 4100 x 8. Thin grids: llvmpipe transforms about a million samples a second.
+  FourStepCases(false);
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, AgreesWithTheCPUFilterOnColumnsLongerThan4096)
+{
+  // The same, transposed: 8 x 4050 and 8 x 4100.
+  FourStepCases(true);
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, ADeltaBloomsIntoThePSFItselfOnLinesLongerThan4096)
+{
+  // As ADeltaBloomsIntoThePSFItself, on 4100 x 9 and 9 x 4400 (grids 4320 x 50, 4320 = 72 x 60,
+  // and 50 x 4500, 4500 = 75 x 60): the four-step transform's twiddle, its order of the
+  // spectrum (the multiply's -k) and its inverse must all be right for the lopsided PSF to come
+  // back in place.
+  const int r = 20;
+  for (const auto& size : { std::make_pair(4100, 9), std::make_pair(9, 4400) })
+  {
+    const int width = size.first, height = size.second;
+    const int x0 = width > height ? 3001 : 4, y0 = width > height ? 4 : 3001;
+    BloomWindow w(8, 8);
+    w.Bloom->SetFloatPrecisionTo32Bit();
+    vtkBloomParameters* parameters = w.Bloom->GetParameters();
+    SetPSF(parameters, IMAGE, r, vtkImageSeparableGaussian::ZERO);
+    PassEverything(parameters);
+    vtkNew<vtkImageData> output;
+    ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), Delta(width, height, x0, y0, 1.0), output));
+    vtkNew<vtkImageBloom> cpu;
+    cpu->SetParameters(parameters);
+    double worst = 0.0, largest = 0.0;
+    for (int c = 0; c < 3; ++c)
+    {
+      int radius = 0;
+      const std::vector<double> kernel = cpu->ComputePSF(c, radius);
+      ASSERT_EQ(radius, r);
+      for (int y = 0; y < height; ++y)
+      {
+        for (int x = 0; x < width; ++x)
+        {
+          const int kx = x - x0 + r, ky = y - y0 + r;
+          const bool inside = kx >= 0 && kx <= 2 * r && ky >= 0 && ky <= 2 * r;
+          const double k = inside ? kernel[static_cast<size_t>(ky) * (2 * r + 1) + kx] : 0.0;
+          const vtkIdType p = static_cast<vtkIdType>(y) * width + x;
+          const double got = output->GetPointData()->GetScalars()->GetComponent(p, c) -
+            (x == x0 && y == y0 ? 1.0 : 0.0);
+          worst = std::max(worst, std::abs(got - k));
+          largest = std::max(largest, k);
+        }
+      }
+    }
+    std::cout << "four-step delta " << width << "x" << height << ": largest error " << worst
+              << " for a PSF peak of " << largest << "\n";
+    // The delta's own pixel, 1 + k(R, R) in float, rounds by 2^-24.
+    EXPECT_LE(worst, 1e-5 * largest + 2e-7) << width << "x" << height;
   }
 }
 
