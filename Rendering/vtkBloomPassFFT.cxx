@@ -138,7 +138,9 @@ std::string vtkBloomPassFFT::TransformDefines(const Pass& pass, int n, bool from
 //------------------------------------------------------------------------------
 std::string vtkBloomPassFFT::LineTransformDefines(int n)
 {
-  return TransformDefines(n, false) + "#define FFT_LIBRARY 1\n";
+  // One pass over a whole line in shared memory (vtkBloomPassFFTBlur: lines of at most
+  // MaximumLength samples).
+  return TransformDefines(Pass{ n, 1, 0, 1, false }, n, false) + "#define FFT_LIBRARY 1\n";
 }
 
 //------------------------------------------------------------------------------
