@@ -112,26 +112,26 @@ std::vector<vtkBloomPassFFT::Pass> vtkBloomPassFFT::Passes(int n, float directio
 //------------------------------------------------------------------------------
 std::string vtkBloomPassFFT::TransformDefines(const Pass& pass, int n, bool fromTexture)
 {
-  // Enough invocations that each runs at most 8 butterflies of radix 2 (length <= 4096).
+  // Enough invocations that each runs at most 4 butterflies of radix 2 (length <= 4096): each
+  // keeps its butterflies' results in registers.
   const int length = pass.Length;
-  const int threads = length <= 1024 ? 64 : 256;
+  const int threads = length <= 512 ? 64 : (length <= 2048 ? 256 : 512);
   const std::vector<int> radices = Radices(length);
   int butterflies = 1;
-  std::string list;
+  std::string calls;
+  int ns = 1;
   for (int r : radices)
   {
     butterflies = std::max(butterflies, (length / r + threads - 1) / threads);
-    list += (list.empty() ? "" : ", ") + std::to_string(r);
-  }
-  if (radices.empty())
-  {
-    list = "1"; // length 1: no stage
+    // The stages as calls with literal arguments, which the compiler specializes.
+    calls += "Stage(" + std::to_string(r) + ", " + std::to_string(ns) + "); ";
+    ns *= r;
   }
   return "#define FFT_TRANSFORM 1\n#define FFT_N " + std::to_string(length) +
     "\n#define FFT_TWIDDLE_STRIDE " + std::to_string(n / length) + "\n#define FFT_THREADS " +
     std::to_string(threads) + "\n#define FFT_STAGES " + std::to_string(radices.size()) +
-    "\n#define FFT_RADICES " + list + "\n#define FFT_BUTTERFLIES " + std::to_string(butterflies) +
-    "\n" + (fromTexture ? "#define FFT_FROM_TEXTURE 1\n" : "") +
+    "\n#define FFT_STAGE_CALLS " + calls + "\n#define FFT_BUTTERFLIES " +
+    std::to_string(butterflies) + "\n" + (fromTexture ? "#define FFT_FROM_TEXTURE 1\n" : "") +
     (pass.Twiddle ? "#define FFT_FOUR_STEP_TWIDDLE 1\n" : "");
 }
 

@@ -13,7 +13,7 @@
     g = (s lineCount + l) subCount + j along x, then y (2-D so that the count stays within
     65535 a dimension; groups past the last do nothing). The sub-sequence is held in shared
     memory (FFT_N <= 4096 complex samples: 32 KiB) and transformed in place by mixed-radix
-    Stockham stages (radices 4, 2, 3, 5, in the order FFT_RADICES lists them), so that the
+    Stockham stages (radices 4, 2, 3, 5, the calls FFT_STAGE_CALLS lists), so that the
     result is in natural order with no bit reversal. Stage s of radix R, with Ns the product
     of the radices before it, takes butterfly j (0 <= j < N / R, k = j mod Ns) from samples
     j + r N / R, multiplies sample r by w^(k r N / (Ns R)), applies the R-point DFT and writes
@@ -84,7 +84,6 @@ uniform ivec2 sourceSize;
 
 shared vec2 line[FFT_N];
 
-const int radices[FFT_STAGES] = int[](FFT_RADICES);
 
 // exp(direction 2 pi i m / N) for 0 <= m < N, N the whole line's length.
 vec2 Twiddle(int m)
@@ -104,10 +103,16 @@ void Stage(int R, int ns)
 {
   const int butterflies = FFT_N / R;
   const int step = FFT_N / (ns * R);
+  // A constant trip count, and R and ns literal in each call (FFT_STAGE_CALLS): the compiler
+  // unrolls the loops and keeps `results` in registers rather than in local memory.
   vec2 results[FFT_BUTTERFLIES * 5];
-  int b = 0;
-  for (int j = int(gl_LocalInvocationID.x); j < butterflies; j += FFT_THREADS, ++b)
+  for (int b = 0; b < FFT_BUTTERFLIES; ++b)
   {
+    const int j = int(gl_LocalInvocationID.x) + b * FFT_THREADS;
+    if (j >= butterflies)
+    {
+      break;
+    }
     const int k = j % ns;
     vec2 v[5];
     v[0] = line[j];
@@ -146,9 +151,13 @@ void Stage(int R, int ns)
     }
   }
   barrier();
-  b = 0;
-  for (int j = int(gl_LocalInvocationID.x); j < butterflies; j += FFT_THREADS, ++b)
+  for (int b = 0; b < FFT_BUTTERFLIES; ++b)
   {
+    const int j = int(gl_LocalInvocationID.x) + b * FFT_THREADS;
+    if (j >= butterflies)
+    {
+      break;
+    }
     const int k = j % ns;
     const int first = (j / ns) * ns * R + k;
     for (int q = 0; q < R; ++q)
@@ -164,12 +173,7 @@ void Stage(int R, int ns)
 // `line` in place, the stages main() runs.
 void TransformLine()
 {
-  int ns = 1;
-  for (int stage = 0; stage < FFT_STAGES; ++stage)
-  {
-    Stage(radices[stage], ns);
-    ns *= radices[stage];
-  }
+  FFT_STAGE_CALLS
 }
 #else
 void main()
@@ -197,12 +201,7 @@ void main()
 #endif
   }
   barrier();
-  int ns = 1;
-  for (int stage = 0; stage < FFT_STAGES; ++stage)
-  {
-    Stage(radices[stage], ns);
-    ns *= radices[stage];
-  }
+  FFT_STAGE_CALLS
   for (int i = int(gl_LocalInvocationID.x); live && i < FFT_N; i += FFT_THREADS)
   {
 #ifdef FFT_FOUR_STEP_TWIDDLE
