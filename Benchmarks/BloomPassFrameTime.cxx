@@ -284,6 +284,42 @@ void Capture(vtkBloomFrameTimer& timer, vtkImageData* scene, vtkImageData* a, vt
   timer.Alternative->CaptureResultOff();
 }
 
+// The quality rows of one setting on `timer`: the exact pass (named `label`) and, with
+// `withFast`, the fast mode; GPU time over the floor and error against vtkImageBloom REFERENCE.
+void QualityRows(vtkBloomFrameTimer& timer, const std::string& label, bool withFast, int frames,
+  std::ofstream& out)
+{
+  timer.Alternative->SetQualityToFast();
+  timer.Frame(vtkBloomFrameTimer::PLAIN); // a context for the GPU timer
+  vtkNew<vtkImageData> sceneImage, exact, fast;
+  Capture(timer, sceneImage, exact, fast);
+  vtkNew<vtkImageBloom> cpu;
+  cpu->SetParameters(timer.Bloom->GetParameters());
+  cpu->SetExecutionModeToReference();
+  cpu->SetInputData(sceneImage);
+  cpu->Update();
+  double l2[3], peak[3];
+  Errors(exact, cpu->GetOutput(), l2[0], peak[0]);
+  Errors(fast, cpu->GetOutput(), l2[1], peak[1]);
+  Errors(fast, exact, l2[2], peak[2]);
+  double ms[3];
+  TimeTwo(timer, frames, ms);
+  const int passes[2] = { timer.Bloom->GetNumberOfPasses(),
+    timer.Alternative->GetNumberOfPasses() };
+  for (int q = 0; q < (withFast ? 2 : 1); ++q)
+  {
+    const char* name = q ? "fast" : "exact";
+    std::printf("| %s | %s | %+.3f ms | %d | %s | %.2e | %.2e |\n", label.c_str(), name,
+      ms[1 + q] - ms[0], passes[q], q ? std::to_string(l2[2]).c_str() : "0", l2[q], peak[q]);
+    if (out.is_open())
+    {
+      out << "\"" << label << "\"," << name << "," << ms[1 + q] - ms[0] << "," << passes[q] << ","
+          << (q ? l2[2] : 0.0) << "," << l2[q] << "," << peak[q] << "\n";
+    }
+  }
+  std::fflush(stdout);
+}
+
 bool QualityTable(const std::string& scene, int width, int height, int frames, const char* csv)
 {
   std::vector<std::string> presets = vtkBloomParameters::GetPresetNames();
@@ -307,35 +343,32 @@ bool QualityTable(const std::string& scene, int width, int height, int frames, c
     {
       return false;
     }
-    timer.Alternative->SetQualityToFast();
-    timer.Frame(vtkBloomFrameTimer::PLAIN); // a context for the GPU timer
-    vtkNew<vtkImageData> sceneImage, exact, fast;
-    Capture(timer, sceneImage, exact, fast);
-    vtkNew<vtkImageBloom> cpu;
-    cpu->SetParameters(timer.Bloom->GetParameters());
-    cpu->SetExecutionModeToReference();
-    cpu->SetInputData(sceneImage);
-    cpu->Update();
-    double l2[3], peak[3];
-    Errors(exact, cpu->GetOutput(), l2[0], peak[0]);
-    Errors(fast, cpu->GetOutput(), l2[1], peak[1]);
-    Errors(fast, exact, l2[2], peak[2]);
-    double ms[3];
-    TimeTwo(timer, frames, ms);
-    const int passes[2] = { timer.Bloom->GetNumberOfPasses(),
-      timer.Alternative->GetNumberOfPasses() };
-    for (int q = 0; q < 2; ++q)
+    QualityRows(timer, preset, true, frames, out);
+  }
+  // The compute FFT's rows: ping-pong's blurs summed tap by tap (through the FFT is its
+  // default, above), and PSF bloom with the filter's default Airy pattern and Gaussians.
+  const std::string taps = "ping-pong, blurs tap by tap";
+  for (const char* name : { "ping-pong, blurs tap by tap", "psf airy", "psf gaussians" })
+  {
+    const std::string extra = name;
+    vtkBloomFrameTimer timer;
+    if (!timer.Setup(scene, width, height) ||
+      !timer.UsePreset(extra == taps ? "ping-pong" : "default"))
     {
-      const char* name = q ? "fast" : "exact";
-      std::printf("| %s | %s | %+.3f ms | %d | %s | %.2e | %.2e |\n", preset.c_str(), name,
-        ms[1 + q] - ms[0], passes[q], q ? std::to_string(l2[2]).c_str() : "0", l2[q], peak[q]);
-      if (csv)
-      {
-        out << preset << "," << name << "," << ms[1 + q] - ms[0] << "," << passes[q] << ","
-            << (q ? l2[2] : 0.0) << "," << l2[q] << "," << peak[q] << "\n";
-      }
+      return false;
     }
-    std::fflush(stdout);
+    vtkBloomParameters* parameters = timer.Bloom->GetParameters();
+    if (extra == taps)
+    {
+      parameters->SetConvolutionModeToDirect();
+    }
+    else
+    {
+      parameters->SetBloomModeToPSF();
+      parameters->SetPSFType(
+        extra == "psf airy" ? vtkBloomParameters::PSF_AIRY : vtkBloomParameters::PSF_GAUSSIANS);
+    }
+    QualityRows(timer, extra, false, frames, out);
   }
   return true;
 }
