@@ -36,19 +36,23 @@ def main():
     for index, (preset, rows) in enumerate(presets.items()):
         colour = COLOURS[index % len(COLOURS)]
         both = [rows[q] for q in ("exact", "fast") if q in rows]
-        line = chart.AddPlot(vtkChart.LINE)
-        line.SetInputData(xy_table(preset, both), 0, 1)
-        line.SetColor(colour[0], colour[1], colour[2], 255)
-        line.SetWidth(1.5)
-        line.SetMarkerStyle(0)
+        if len(both) > 1:
+            # A setting with one row (the compute FFT's: PSF bloom, blurs tap by tap) has no line.
+            line = chart.AddPlot(vtkChart.LINE)
+            line.SetInputData(xy_table(preset, both), 0, 1)
+            line.SetColor(colour[0], colour[1], colour[2], 255)
+            line.SetWidth(1.5)
+            line.SetMarkerStyle(0)
         for quality, marker in (("exact", 3), ("fast", 1)):
             if quality in rows:
                 points = chart.AddPlot(vtkChart.POINTS)
-                points.SetInputData(xy_table(preset + " " + quality, [rows[quality]]), 0, 1)
+                alone = len(both) < 2  # no line names it in the legend: the square does
+                points.SetInputData(
+                    xy_table(preset if alone else preset + " " + quality, [rows[quality]]), 0, 1)
                 points.SetColor(colour[0], colour[1], colour[2], 255)
                 points.SetMarkerStyle(marker)
                 points.SetMarkerSize(14.0)
-                points.SetLegendVisibility(False)
+                points.SetLegendVisibility(alone)
     save_png(view, target)
 
 if __name__ == "__main__":
