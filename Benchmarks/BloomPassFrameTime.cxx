@@ -69,6 +69,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <map>
 
 #include <cmath>
 #include <cstdio>
@@ -526,8 +527,43 @@ bool OrbitTable(const std::string& scene, int width, int height, int frames)
 
 // PSF bloom's frame time on `scene` for a few PSF radii (see --psf above); false for an unknown
 // scene.
+// One row of PSF bloom's per-stage profile: the medians of 5 profiled bloom frames.
+std::string PSFStages(vtkBloomFrameTimer& timer, const std::string& label)
+{
+  vtkBloomPass* bloom = timer.Bloom;
+  bloom->ProfilePassesOn();
+  std::map<std::string, std::vector<double>> ms;
+  std::vector<std::string> order;
+  for (int f = -1; f < 5; ++f)
+  {
+    timer.Frame(vtkBloomFrameTimer::BLOOM);
+    for (int i = 0; f >= 0 && i < bloom->GetNumberOfProfiledPasses(); ++i)
+    {
+      const std::string name = bloom->GetProfiledPassName(i);
+      if (ms.find(name) == ms.end())
+      {
+        order.push_back(name);
+      }
+      ms[name].push_back(bloom->GetProfiledPassMilliseconds(i));
+    }
+  }
+  bloom->ProfilePassesOff();
+  std::string row = "| " + label + " |";
+  for (const std::string& name : order)
+  {
+    if (name != "scene")
+    {
+      char cell[32];
+      std::snprintf(cell, sizeof(cell), " %.3f |", vtkBloomMedian(ms[name]));
+      row += cell;
+    }
+  }
+  return row + "\n";
+}
+
 bool PSFTable(const std::string& scene, int width, int height, int frames)
 {
+  std::string stages;
   std::printf("PSF bloom (FFT convolution), %s at %dx%d: GPU time per frame (GL_TIME_ELAPSED), "
               "ms, %d frames of each kind, interleaved\n"
               "| PSF | radius | FFT grid | plain, mean | compute copy, mean | bloom: median | mean "
@@ -582,7 +618,14 @@ bool PSFTable(const std::string& scene, int width, int height, int frames)
       airy ? "Airy" : "Gaussians", radius, gridText.c_str(), plain.Mean, copy.Mean, bloom.Median,
       bloom.Mean, bloom.P99, bloom.Max, bloom.Mean - copy.Mean, first);
     std::fflush(stdout);
+    stages += PSFStages(timer,
+      std::string(airy ? "Airy" : "Gaussians") + ", " + std::to_string(radius) + ", " + gridText);
   }
+  std::printf("\nThe bloom frame's passes (vtkBloomPass::ProfilePasses), medians of 5 frames, ms\n"
+              "| PSF, radius, grid | bright pass | rows | columns | multiply | inverse columns | "
+              "inverse rows | fold | composite |\n|---|---|---|---|---|---|---|---|---|\n%s",
+    stages.c_str());
+  std::fflush(stdout);
   return true;
 }
 

@@ -279,8 +279,15 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self, vtkTextureObject* so
   {
     return false;
   }
+  // With ProfilePasses each stage of the convolution is a profiled span, sized as the grid.
+  vtkBloomPassFFT::StageTimer timer;
+  const int* grid = this->FFT.GetGridSize();
+  timer.Begin = [this] { this->Runner.BeginProfiledSpan(); };
+  timer.End = [this, grid](const char* name, double bytes)
+  { this->Runner.EndProfiledSpan(name, grid[0], grid[1], bytes); };
   this->FFT.Convolve(res.PSFBright.Color, res.PSFBloom.Color,
-    self->Parameters->GetPSFBorderMode() == vtkImageSeparableGaussian::REFLECT);
+    self->Parameters->GetPSFBorderMode() == vtkImageSeparableGaussian::REFLECT,
+    self->ProfilePasses ? &timer : nullptr);
   return true;
 }
 

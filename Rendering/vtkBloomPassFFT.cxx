@@ -451,10 +451,35 @@ void vtkBloomPassFFT::RunPass(
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassFFT::Convolve(vtkTextureObject* source, vtkTextureObject* target, bool reflect)
+void vtkBloomPassFFT::Convolve(
+  vtkTextureObject* source, vtkTextureObject* target, bool reflect, const StageTimer* timer)
 {
-  this->Transform(0, -1.0f, source, this->Size);
-  this->Transform(1, -1.0f, nullptr, this->Size);
+  // A transform reads and writes both signals (2 x 8 bytes a sample, each way); the multiply
+  // also reads the three spectra; the fold reads both signals over the image.
+  const double grid = static_cast<double>(this->Grid[0]) * this->Grid[1];
+  const auto stage = [timer](const char* name, double bytes, const std::function<void()>& run)
+  {
+    if (timer)
+    {
+      timer->Begin();
+    }
+    run();
+    if (timer)
+    {
+      timer->End(name, bytes);
+    }
+  };
+  stage("psf rows", 32.0 * grid, [&] { this->Transform(0, -1.0f, source, this->Size); });
+  stage("psf columns", 32.0 * grid, [&] { this->Transform(1, -1.0f, nullptr, this->Size); });
+  stage("psf multiply", 56.0 * grid, [&] { this->Multiply(); });
+  stage("psf inverse columns", 32.0 * grid, [&] { this->Transform(1, 1.0f, nullptr, this->Size); });
+  stage("psf inverse rows", 32.0 * grid, [&] { this->Transform(0, 1.0f, nullptr, this->Size); });
+  stage("psf fold", 32.0 * this->Size[0] * this->Size[1], [&] { this->Fold(target, reflect); });
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::Multiply()
+{
   const unsigned int multiply = this->Program("#define FFT_MULTIPLY 1\n");
   glUseProgram(multiply);
   glUniform2i(this->Uniform(multiply, "size"), this->Grid[0], this->Grid[1]);
@@ -463,8 +488,11 @@ void vtkBloomPassFFT::Convolve(vtkTextureObject* source, vtkTextureObject* targe
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->SpectraBuffer);
   glDispatchCompute(Groups(this->Grid[0]), Groups(this->Grid[1]), 1);
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
-  this->Transform(1, 1.0f, nullptr, this->Size);
-  this->Transform(0, 1.0f, nullptr, this->Size);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::Fold(vtkTextureObject* target, bool reflect)
+{
   const unsigned int fold =
     this->Program(reflect ? "#define FFT_FOLD 1\n#define FFT_REFLECT 1\n" : "#define FFT_FOLD 1\n");
   glUseProgram(fold);

@@ -57,6 +57,7 @@
 #include "vtkSmartPointer.h" // For the kernel texture
 #include "vtkType.h"         // For vtkMTimeType
 
+#include <functional> // For StageTimer
 #include <map>
 #include <string>
 #include <vector>
@@ -118,11 +119,21 @@ public:
    */
   bool Prepare(vtkOpenGLRenderWindow* context, int width, int height, std::string& why);
 
+  /// Optional timing of Convolve's stages (vtkBloomPass::ProfilePasses): Begin before each
+  /// stage, End after it with the stage's name and its compulsory memory traffic in bytes.
+  struct StageTimer
+  {
+    std::function<void()> Begin;
+    std::function<void(const char* name, double bytes)> End;
+  };
+
   /**
    * target = `source` (width x height, RGBA float, the prepared size) convolved with the
-   * kernels, REFLECT or ZERO borders; `target` an RGBA32F texture of the same size.
+   * kernels, REFLECT or ZERO borders; `target` an RGBA32F texture of the same size. Its six
+   * stages: the forward rows and columns, the multiply, the inverse columns and rows, the fold.
    */
-  void Convolve(vtkTextureObject* source, vtkTextureObject* target, bool reflect);
+  void Convolve(vtkTextureObject* source, vtkTextureObject* target, bool reflect,
+    const StageTimer* timer = nullptr);
 
   /// The padded grid (NX, NY) of the last Prepare.
   const int* GetGridSize() const { return this->Grid; }
@@ -158,6 +169,10 @@ private:
   /// The forward (direction -1) or inverse (+1) transform of every line along `axis` (0: rows,
   /// 1: columns) of both signals; rows may read `source` instead of the buffer.
   void Transform(int axis, float direction, vtkTextureObject* source, const int sourceSize[2]);
+  /// The image's spectrum times the kernels' (FFT_MULTIPLY), in place.
+  void Multiply();
+  /// The inverse transform's full convolution folded into `target` (FFT_FOLD).
+  void Fold(vtkTextureObject* target, bool reflect);
   void RunPass(
     const Pass& pass, int axis, float direction, vtkTextureObject* source, const int sourceSize[2]);
   /// The compute program of `defines`, made on first use; 0 when it does not build (the
