@@ -172,15 +172,21 @@ unsigned int vtkBloomPassFFT::Program(const std::string& defines, std::string* l
 }
 
 //------------------------------------------------------------------------------
-int vtkBloomPassFFT::Uniform(unsigned int program, const char* name)
+int vtkBloomPassFFT::CachedUniform(UniformCache& cache, unsigned int program, const char* name)
 {
   const auto key = std::make_pair(program, std::string(name));
-  auto found = this->Locations.find(key);
-  if (found == this->Locations.end())
+  auto found = cache.find(key);
+  if (found == cache.end())
   {
-    found = this->Locations.emplace(key, glGetUniformLocation(program, name)).first;
+    found = cache.emplace(key, glGetUniformLocation(program, name)).first;
   }
   return found->second;
+}
+
+//------------------------------------------------------------------------------
+int vtkBloomPassFFT::Uniform(unsigned int program, const char* name)
+{
+  return vtkBloomPassFFT::CachedUniform(this->Locations, program, name);
 }
 
 //------------------------------------------------------------------------------

@@ -97,6 +97,10 @@ public:
    */
   static bool Split(int n, int& n1, int& n2);
 
+  /// A program's uniform locations, looked up once each (here and in vtkBloomPassFFTBlur).
+  using UniformCache = std::map<std::pair<unsigned int, std::string>, int>;
+  static int CachedUniform(UniformCache& cache, unsigned int program, const char* name);
+
   /// The smallest n' >= n whose prime factors are 2, 3 and 5.
   static int GoodSize(int n);
 
@@ -202,7 +206,7 @@ private:
   unsigned int TwiddleBuffers[2] = { 0, 0 }; ///< per axis
   vtkSmartPointer<vtkTextureObject> KernelTexture;
   std::map<std::string, unsigned int> Programs;
-  std::map<std::pair<unsigned int, std::string>, int> Locations;
+  UniformCache Locations;
 };
 
 #endif

@@ -269,13 +269,7 @@ unsigned int vtkBloomPassFFTBlur::Program(const std::string& defines, bool convo
 //------------------------------------------------------------------------------
 int vtkBloomPassFFTBlur::Uniform(unsigned int program, const char* name)
 {
-  const auto key = std::make_pair(program, std::string(name));
-  auto found = this->Locations.find(key);
-  if (found == this->Locations.end())
-  {
-    found = this->Locations.emplace(key, glGetUniformLocation(program, name)).first;
-  }
-  return found->second;
+  return vtkBloomPassFFT::CachedUniform(this->Locations, program, name);
 }
 
 //------------------------------------------------------------------------------

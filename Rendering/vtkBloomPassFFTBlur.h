@@ -107,7 +107,7 @@ private:
   vtkOpenGLRenderWindow* Context = nullptr;
   std::map<const vtkBloomLinearOperator*, std::unique_ptr<Operator>> Operators;
   std::map<std::string, unsigned int> Programs;
-  std::map<std::pair<unsigned int, std::string>, int> Locations;
+  std::map<std::pair<unsigned int, std::string>, int> Locations; // vtkBloomPassFFT::UniformCache
   unsigned int Buffers[3] = { 0, 0, 0 }; ///< signal, coefficients, line ranges
   size_t Capacity[3] = { 0, 0, 0 };      ///< their sizes in bytes
   int MaximumLength = 0;                 ///< the longest line shared memory holds; 0: not asked

@@ -7,6 +7,7 @@
 #include "vtkBloomParameters.h"
 #include "vtkBloomPass.h"
 #include "vtkBloomPassTestWindow.h"
+#include "vtkBloomTestSupport.h"
 
 #include "vtkBloomVTKCompat.h"
 #include "vtkCommand.h"
@@ -79,41 +80,6 @@ void SetPSF(vtkBloomParameters* parameters, PSFKind kind, int radius, int border
   }
 }
 
-// Relative L2 over the colour channels of two RGBA float images of the same size.
-double ColourRelativeL2(vtkImageData* a, vtkImageData* b)
-{
-  double num = 0.0, den = 0.0;
-  for (vtkIdType p = 0; p < a->GetNumberOfPoints(); ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double x = a->GetPointData()->GetScalars()->GetComponent(p, c);
-      const double y = b->GetPointData()->GetScalars()->GetComponent(p, c);
-      num += (x - y) * (x - y);
-      den += y * y;
-    }
-  }
-  return std::sqrt(num / std::max(den, 1e-300));
-}
-
-// Relative L2 of the bloom terms (result - scene) of the GPU and the CPU.
-double BloomRelativeL2(vtkImageData* scene, vtkImageData* gpu, vtkImageData* cpu)
-{
-  double num = 0.0, den = 0.0;
-  for (vtkIdType p = 0; p < scene->GetNumberOfPoints(); ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      const double s = scene->GetPointData()->GetScalars()->GetComponent(p, c);
-      const double x = gpu->GetPointData()->GetScalars()->GetComponent(p, c) - s;
-      const double y = cpu->GetPointData()->GetScalars()->GetComponent(p, c) - s;
-      num += (x - y) * (x - y);
-      den += y * y;
-    }
-  }
-  return std::sqrt(num / std::max(den, 1e-300));
-}
-
 struct Agreement
 {
   double Colour = 1.0; ///< relative L2 of the composited colour
@@ -142,10 +108,10 @@ Agreement PSFAgreement(PSFKind kind, int radius, int border, int width, int heig
   cpu->SetInputData(scene);
   cpu->Update();
   Agreement a;
-  a.Colour = ColourRelativeL2(gpu, cpu->GetOutput());
-  a.Bloom = BloomRelativeL2(scene, gpu, cpu->GetOutput());
+  a.Colour = vtkBloomTest::ColourRelativeL2(gpu, cpu->GetOutput());
+  a.Bloom = vtkBloomTest::BloomRelativeL2(scene, gpu, cpu->GetOutput());
   // The bloom must change the image, or agreement would be trivial.
-  EXPECT_GT(ColourRelativeL2(scene, cpu->GetOutput()), 1e-3);
+  EXPECT_GT(vtkBloomTest::ColourRelativeL2(scene, cpu->GetOutput()), 1e-3);
   return a;
 }
 
@@ -171,6 +137,54 @@ void PassEverything(vtkBloomParameters* parameters)
   parameters->SetCompositeMode(vtkBloomParameters::ADDITIVE);
   parameters->SetStrength(1.0);
   parameters->SetTint(1.0, 1.0, 1.0);
+}
+
+// How far a delta of 1 at (x0, y0) of a width x height image, bloomed with an image PSF of
+// radius r (ZERO borders, so that nothing folds), is from the PSFs themselves:
+// out(x0 + dx, y0 + dy) = k_c(R + dx, R + dy). Worst: the largest error away from the delta;
+// Largest: the PSFs' peak; Centre: the error at the delta's own pixel, 1 + k(R, R) in float.
+struct DeltaError
+{
+  double Worst = 0.0, Largest = 0.0, Centre = 0.0;
+};
+
+DeltaError BloomDelta(int width, int height, int x0, int y0, int r)
+{
+  DeltaError e;
+  BloomWindow w(8, 8);
+  w.Bloom->SetFloatPrecisionTo32Bit();
+  vtkBloomParameters* parameters = w.Bloom->GetParameters();
+  SetPSF(parameters, IMAGE, r, vtkImageSeparableGaussian::ZERO);
+  PassEverything(parameters);
+  vtkNew<vtkImageData> output;
+  EXPECT_TRUE(w.Bloom->ApplyToImage(w.GL(), Delta(width, height, x0, y0, 1.0), output));
+  vtkNew<vtkImageBloom> cpu;
+  cpu->SetParameters(parameters);
+  for (int c = 0; c < 3; ++c)
+  {
+    int radius = 0;
+    const std::vector<double> kernel = cpu->ComputePSF(c, radius);
+    EXPECT_EQ(radius, r);
+    for (int y = 0; y < height && radius == r; ++y)
+    {
+      for (int x = 0; x < width; ++x)
+      {
+        const int kx = x - x0 + r, ky = y - y0 + r;
+        const bool inside = kx >= 0 && kx <= 2 * r && ky >= 0 && ky <= 2 * r;
+        const double k = inside ? kernel[static_cast<size_t>(ky) * (2 * r + 1) + kx] : 0.0;
+        const vtkIdType p = static_cast<vtkIdType>(y) * width + x;
+        const double got = output->GetPointData()->GetScalars()->GetComponent(p, c);
+        if (x == x0 && y == y0)
+        {
+          e.Centre = std::max(e.Centre, std::abs(got - 1.0 - k));
+          continue;
+        }
+        e.Worst = std::max(e.Worst, std::abs(got - k));
+        e.Largest = std::max(e.Largest, k);
+      }
+    }
+  }
+  return e;
 }
 
 // Counts the error events of the object it observes.
@@ -238,8 +252,8 @@ FourStepResult FourStepAgreement(
   cpu->SetInputData(input);
   cpu->Update();
   FourStepResult r;
-  r.Colour = ColourRelativeL2(gpu, cpu->GetOutput());
-  r.Bloom = BloomRelativeL2(input, gpu, cpu->GetOutput());
+  r.Colour = vtkBloomTest::ColourRelativeL2(gpu, cpu->GetOutput());
+  r.Bloom = vtkBloomTest::BloomRelativeL2(input, gpu, cpu->GetOutput());
   double in = 0.0, bloom = 0.0;
   for (vtkIdType p = 0; p < input->GetNumberOfPoints(); ++p)
   {
@@ -372,40 +386,11 @@ TEST(RenderingBloomPassPSF, ADeltaBloomsIntoThePSFItselfOnLinesLongerThan4096)
   {
     const int width = size.first, height = size.second;
     const int x0 = width > height ? 3001 : 4, y0 = width > height ? 4 : 3001;
-    BloomWindow w(8, 8);
-    w.Bloom->SetFloatPrecisionTo32Bit();
-    vtkBloomParameters* parameters = w.Bloom->GetParameters();
-    SetPSF(parameters, IMAGE, r, vtkImageSeparableGaussian::ZERO);
-    PassEverything(parameters);
-    vtkNew<vtkImageData> output;
-    ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), Delta(width, height, x0, y0, 1.0), output));
-    vtkNew<vtkImageBloom> cpu;
-    cpu->SetParameters(parameters);
-    double worst = 0.0, largest = 0.0;
-    for (int c = 0; c < 3; ++c)
-    {
-      int radius = 0;
-      const std::vector<double> kernel = cpu->ComputePSF(c, radius);
-      ASSERT_EQ(radius, r);
-      for (int y = 0; y < height; ++y)
-      {
-        for (int x = 0; x < width; ++x)
-        {
-          const int kx = x - x0 + r, ky = y - y0 + r;
-          const bool inside = kx >= 0 && kx <= 2 * r && ky >= 0 && ky <= 2 * r;
-          const double k = inside ? kernel[static_cast<size_t>(ky) * (2 * r + 1) + kx] : 0.0;
-          const vtkIdType p = static_cast<vtkIdType>(y) * width + x;
-          const double got = output->GetPointData()->GetScalars()->GetComponent(p, c) -
-            (x == x0 && y == y0 ? 1.0 : 0.0);
-          worst = std::max(worst, std::abs(got - k));
-          largest = std::max(largest, k);
-        }
-      }
-    }
-    std::cout << "four-step delta " << width << "x" << height << ": largest error " << worst
-              << " for a PSF peak of " << largest << "\n";
-    // The delta's own pixel, 1 + k(R, R) in float, rounds by 2^-24.
-    EXPECT_LE(worst, 1e-5 * largest + 2e-7) << width << "x" << height;
+    const DeltaError e = BloomDelta(width, height, x0, y0, r);
+    std::cout << "four-step delta " << width << "x" << height << ": largest error " << e.Worst
+              << " for a PSF peak of " << e.Largest << "; at the delta " << e.Centre << "\n";
+    EXPECT_LE(e.Worst, 1e-5 * e.Largest) << width << "x" << height;
+    EXPECT_LE(e.Centre, 2e-7) << width << "x" << height; // 1 + k(R, R) rounds by 2^-24
   }
 }
 
@@ -431,7 +416,7 @@ TEST(RenderingBloomPassPSF, FollowsAChangeOfPSFOrStrengthBetweenFrames)
     ASSERT_TRUE(w.Bloom->ReadResultImage(gpu));
     cpu->SetInputData(scene);
     cpu->Update();
-    EXPECT_LE(ColourRelativeL2(gpu, cpu->GetOutput()), 1e-5) << what;
+    EXPECT_LE(vtkBloomTest::ColourRelativeL2(gpu, cpu->GetOutput()), 1e-5) << what;
   };
   check("first PSF");
   parameters->SetPSFGaussians({ 1.0, 6.0 }, { 1.0, 0.5 });
@@ -485,46 +470,11 @@ TEST(RenderingBloomPassPSF, ADeltaBloomsIntoThePSFItself)
   // A delta away from the borders (ZERO: nothing folds) blooms into its channel's PSF, centred
   // on it: out(x0 + dx, y0 + dy) = k_c(R + dx, R + dy). A wrong twiddle, stage, separation of
   // red from green, or a flipped axis all break it.
-  const int width = 97, height = 75, r = 20, x0 = 40, y0 = 33;
-  BloomWindow w(8, 8);
-  w.Bloom->SetFloatPrecisionTo32Bit();
-  vtkBloomParameters* parameters = w.Bloom->GetParameters();
-  SetPSF(parameters, IMAGE, r, vtkImageSeparableGaussian::ZERO);
-  PassEverything(parameters);
-  vtkNew<vtkImageData> output;
-  ASSERT_TRUE(w.Bloom->ApplyToImage(w.GL(), Delta(width, height, x0, y0, 1.0), output));
-  vtkNew<vtkImageBloom> cpu;
-  cpu->SetParameters(parameters);
-  // The delta's own pixel holds 1 + k(R, R) in float: its rounding (2^-24) is checked apart.
-  double worst = 0.0, largest = 0.0, centre = 0.0;
-  for (int c = 0; c < 3; ++c)
-  {
-    int radius = 0;
-    const std::vector<double> kernel = cpu->ComputePSF(c, radius);
-    ASSERT_EQ(radius, r);
-    for (int y = 0; y < height; ++y)
-    {
-      for (int x = 0; x < width; ++x)
-      {
-        const int kx = x - x0 + r, ky = y - y0 + r;
-        const bool inside = kx >= 0 && kx <= 2 * r && ky >= 0 && ky <= 2 * r;
-        const double k = inside ? kernel[static_cast<size_t>(ky) * (2 * r + 1) + kx] : 0.0;
-        const vtkIdType p = static_cast<vtkIdType>(y) * width + x;
-        const double got = output->GetPointData()->GetScalars()->GetComponent(p, c);
-        if (x == x0 && y == y0)
-        {
-          centre = std::max(centre, std::abs(got - 1.0 - k));
-          continue;
-        }
-        worst = std::max(worst, std::abs(got - k));
-        largest = std::max(largest, k);
-      }
-    }
-  }
-  std::cout << "delta: largest error " << worst << " for a PSF peak of " << largest
-            << "; at the delta " << centre << "\n";
-  EXPECT_LE(worst, 1e-5 * largest);
-  EXPECT_LE(centre, 2e-7);
+  const DeltaError e = BloomDelta(97, 75, 40, 33, 20);
+  std::cout << "delta: largest error " << e.Worst << " for a PSF peak of " << e.Largest
+            << "; at the delta " << e.Centre << "\n";
+  EXPECT_LE(e.Worst, 1e-5 * e.Largest);
+  EXPECT_LE(e.Centre, 2e-7); // 1 + k(R, R) in float rounds by 2^-24
 }
 
 //------------------------------------------------------------------------------
@@ -549,7 +499,7 @@ TEST(RenderingBloomPassPSF, WithoutComputeShadersTheSceneRendersUnbloomedWithOne
   vtkNew<vtkImageData> scene, result;
   ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
   ASSERT_TRUE(w.Bloom->ReadResultImage(result));
-  EXPECT_EQ(ColourRelativeL2(result, scene), 0.0);
+  EXPECT_EQ(vtkBloomTest::ColourRelativeL2(result, scene), 0.0);
 }
 
 //------------------------------------------------------------------------------
@@ -566,9 +516,9 @@ TEST(RenderingBloomPassPSF, ThePyramidModeIsUnchangedAfterPSFMode)
   w.Bloom->GetParameters()->SetBloomModeToPSF();
   w.Window->Render();
   ASSERT_TRUE(w.Bloom->ReadResultImage(psf));
-  EXPECT_GT(ColourRelativeL2(psf, before), 1e-3);
+  EXPECT_GT(vtkBloomTest::ColourRelativeL2(psf, before), 1e-3);
   w.Bloom->GetParameters()->SetBloomMode(vtkBloomParameters::BLOOM_PYRAMID);
   w.Window->Render();
   ASSERT_TRUE(w.Bloom->ReadResultImage(after));
-  EXPECT_EQ(ColourRelativeL2(after, before), 0.0);
+  EXPECT_EQ(vtkBloomTest::ColourRelativeL2(after, before), 0.0);
 }
