@@ -158,26 +158,24 @@ echo "== stutter over an orbiting camera"
 } | tee "$OUT/orbit.md"
 fi
 
-if step selective; then
-echo "== selective bloom in one render"
-{
+# BloomPassFrameTime MODE SCENE at 1920x1080 and at 3840x2160: both_sizes SECONDS MODE SCENE
+# FRAMES, each run bounded by SECONDS.
+both_sizes() {
   for size in "1920 1080" "3840 2160"; do
     # shellcheck disable=SC2086
-    timeout 200 "$bin/BloomPassFrameTime" --selective scalar-field $size "$((4 * FRAMES))"
+    timeout "$1" "$bin/BloomPassFrameTime" "$2" "$3" $size "$4"
     echo
   done
-} | tee "$OUT/selective.md"
+}
+
+if step selective; then
+echo "== selective bloom in one render"
+both_sizes 200 --selective scalar-field "$((4 * FRAMES))" | tee "$OUT/selective.md"
 fi
 
 if step psf; then
 echo "== PSF bloom"
-{
-  for size in "1920 1080" "3840 2160"; do
-    # shellcheck disable=SC2086
-    timeout 400 "$bin/BloomPassFrameTime" --psf lit-spheres $size "$FRAMES"
-    echo
-  done
-} | tee "$OUT/psf.md"
+both_sizes 400 --psf lit-spheres "$FRAMES" | tee "$OUT/psf.md"
 fi
 
 if step stages; then
