@@ -442,11 +442,17 @@ double vtkBloomFFTConvolution::DirectCost(const vtkBloomLinearOperator& op)
 //------------------------------------------------------------------------------
 double vtkBloomFFTConvolution::Cost() const
 {
+  return this->Cost(this->N, FFTCostFactor);
+}
+
+//------------------------------------------------------------------------------
+double vtkBloomFFTConvolution::Cost(int n, double factor) const
+{
   if (!this->Ready)
   {
     return std::numeric_limits<double>::infinity();
   }
-  double cost = FFTCostFactor * this->N * std::log2(static_cast<double>(this->N)) + 8.0 * this->N;
+  double cost = factor * n * std::log2(static_cast<double>(n)) + 8.0 * n;
   for (const Block& b : this->Corrections)
   {
     cost += static_cast<double>(b.Rank) * (b.Rows + b.Cols);

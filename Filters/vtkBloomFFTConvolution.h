@@ -92,6 +92,12 @@ public:
   /// Modeled multiply-adds per line of this path (see the class description).
   double Cost() const;
 
+  /**
+   * The same model for a transform of n samples whose N log2 N unit costs `factor`
+   * multiply-adds (the render pass's GPU transform has its own length and factor).
+   */
+  double Cost(int n, double factor) const;
+
   /// FFT length and the ranks of the two border corrections (for tests and reports).
   int GetTransformSize() const { return this->N; }
   int GetCorrectionRank(int side) const;

@@ -335,15 +335,7 @@ void vtkBloomPassFFT::AllocateBuffers()
   glBufferData(GL_SHADER_STORAGE_BUFFER, 3 * samples * 2 * sizeof(float), nullptr, GL_DYNAMIC_COPY);
   for (int axis = 0; axis < 2; ++axis)
   {
-    // cos and sin of 2 pi m / N in double, rounded once to float.
-    const int n = this->Grid[axis];
-    std::vector<float> table(2 * static_cast<size_t>(n));
-    for (int m = 0; m < n; ++m)
-    {
-      const double angle = 2.0 * 3.14159265358979323846 * m / n;
-      table[2 * m] = static_cast<float>(std::cos(angle));
-      table[2 * m + 1] = static_cast<float>(std::sin(angle));
-    }
+    const std::vector<float> table = vtkBloomPassFFT::TwiddleTable(this->Grid[axis]);
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->TwiddleBuffers[axis]);
     glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(table.size() * sizeof(float)),
       table.data(), GL_STATIC_DRAW);

@@ -203,12 +203,8 @@ vtkBloomPassFFTBlur::Operator* vtkBloomPassFFTBlur::Prepare(
   {
     return &o;
   }
-  double cost = FFTCostFactor * 2.0 * o.N * std::log2(static_cast<double>(o.N)) + 8.0 * o.N;
-  for (const vtkBloomFFTConvolution::Block& b : c.GetCorrections())
-  {
-    cost += static_cast<double>(b.Rank) * (b.Rows + b.Cols);
-  }
-  o.Cheaper = cost < vtkBloomFFTConvolution::DirectCost(op);
+  // The CPU's model at the GPU's length; both transforms of a line count.
+  o.Cheaper = c.Cost(o.N, 2.0 * FFTCostFactor) < vtkBloomFFTConvolution::DirectCost(op);
   o.NonNegative =
     std::all_of(op.Weights.begin(), op.Weights.end(), [](double w) { return w >= 0.0; });
   o.Upload(op, border);
