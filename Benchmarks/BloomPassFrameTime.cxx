@@ -60,6 +60,11 @@
 // SkipEmptyBloom's occlusion query): vtkImageBloom's defaults with the content-aware chain, with
 // the occlusion query only, and with neither (no wait: the CPU submits the whole frame ahead
 // of the GPU), GPU time and the CPU's time in Render().
+//
+// One executable for every GPU timing of scripts/gpu-run.sh (about 830 lines): each mode is a
+// function of its own (TimeFrames, ProfilePasses, QualityTable, SparseTable, SyncTable,
+// OrbitTable, SelectiveTable, PSFTable), and they share the scene set-up (SetUp) and the
+// frame statistics, which separate files would have to export for one caller each.
 #include "vtkBloomFrameTimer.h"
 #include "vtkBloomParameters.h"
 

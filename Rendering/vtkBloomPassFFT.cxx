@@ -129,8 +129,7 @@ std::string vtkBloomPassFFT::TransformDefines(const Pass& pass, int n, bool from
   }
   return "#define FFT_TRANSFORM 1\n#define FFT_N " + std::to_string(length) +
     "\n#define FFT_TWIDDLE_STRIDE " + std::to_string(n / length) + "\n#define FFT_THREADS " +
-    std::to_string(threads) + "\n#define FFT_STAGES " + std::to_string(radices.size()) +
-    "\n#define FFT_STAGE_CALLS " + calls + "\n#define FFT_BUTTERFLIES " +
+    std::to_string(threads) + "\n#define FFT_STAGE_CALLS " + calls + "\n#define FFT_BUTTERFLIES " +
     std::to_string(butterflies) + "\n" + (fromTexture ? "#define FFT_FROM_TEXTURE 1\n" : "") +
     (pass.Twiddle ? "#define FFT_FOUR_STEP_TWIDDLE 1\n" : "");
 }
