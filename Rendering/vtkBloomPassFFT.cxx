@@ -229,6 +229,7 @@ bool vtkBloomPassFFT::Prepare(
     this->Grid[0] = grid[0];
     this->Grid[1] = grid[1];
     this->SpectraVersion = 0;
+    this->ProgramsBuilt = false;
     // A grid within the limits may still not fit the GPU's memory (40 NX NY bytes in all): a
     // buffer that could not be allocated has size 0 (and GL_OUT_OF_MEMORY is raised).
     this->AllocateBuffers();
@@ -250,8 +251,23 @@ bool vtkBloomPassFFT::Prepare(
   }
   this->Size[0] = width;
   this->Size[1] = height;
+  if (!this->ProgramsBuilt && !this->BuildPrograms(grid, why))
+  {
+    return false;
+  }
+  if (this->SpectraVersion != this->KernelsVersion)
+  {
+    this->MakeSpectra();
+    this->SpectraVersion = this->KernelsVersion;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassFFT::BuildPrograms(const int grid[2], std::string& why)
+{
   // The programs of both axes' transforms (rows forward from a texture, the rest from the
-  // buffer) and of the point-wise stages.
+  // buffer) and of the point-wise stages, made once per grid.
   std::vector<std::string> programs = { "#define FFT_SEPARATE 1\n", "#define FFT_MULTIPLY 1\n",
     "#define FFT_FOLD 1\n", "#define FFT_FOLD 1\n#define FFT_REFLECT 1\n" };
   for (int axis = 0; axis < 2; ++axis)
@@ -275,11 +291,7 @@ bool vtkBloomPassFFT::Prepare(
       return false;
     }
   }
-  if (this->SpectraVersion != this->KernelsVersion)
-  {
-    this->MakeSpectra();
-    this->SpectraVersion = this->KernelsVersion;
-  }
+  this->ProgramsBuilt = true;
   return true;
 }
 

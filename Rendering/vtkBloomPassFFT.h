@@ -187,6 +187,8 @@ private:
   /// The padded grid of width x height images in `grid`, and why this context cannot use it
   /// (empty when it can).
   std::string MakeGrid(int width, int height, int grid[2]) const;
+  /// Build (or find) every program of the grid's transforms; false, with the reason in `why`.
+  bool BuildPrograms(const int grid[2], std::string& why);
   /// Upload the kernels and compute their spectra into SpectraBuffer.
   void MakeSpectra();
   int Uniform(unsigned int program, const char* name);
@@ -201,6 +203,7 @@ private:
   vtkMTimeType SpectraVersion = 0; ///< the kernels' version the spectra were made for; 0: none
   int Size[2] = { 0, 0 };          ///< the image
   int Grid[2] = { 0, 0 };          ///< NX, NY
+  bool ProgramsBuilt = false;      ///< BuildPrograms succeeded for Grid
   unsigned int SignalBuffer = 0;
   unsigned int SpectraBuffer = 0;
   unsigned int TwiddleBuffers[2] = { 0, 0 }; ///< per axis
