@@ -139,7 +139,8 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
      << this->Parameters->GetThresholdMode() << "\n#define MASK_BY_DEPTH "
      << (spec.ReadsSource && this->MaskSource ? 1 : 0) << "\n#define SANITIZE_SOURCE "
      << (spec.ReadsSource && this->SanitizeSource ? 1 : 0) << "\n#define EMISSION_IN_ALPHA "
-     << ((spec.ReadsSource || spec.Step == STEP_COMPOSITE) && this->EmissionInAlpha ? 1 : 0)
+     << (spec.ReadsSource && this->EmissionInAlpha ? 1 : 0) << "\n#define SCENE_ALPHA_CLAMPED "
+     << (spec.Step == STEP_COMPOSITE && this->EmissionInAlpha ? 1 : 0)
      << "\n#define SANITIZE_OUTPUT " << (this->SanitizeOutput ? 1 : 0)
      << "\n#define COMPOSITE_BLOOM " << (spec.CompositeBloom ? 1 : 0) << "\n#define DISCARD_ZERO "
      << (spec.DiscardZero ? 1 : 0) << "\n#define ZERO_BLOOM " << (spec.ZeroBloom ? 1 : 0) << "\n";

@@ -254,9 +254,9 @@ vec4 fetchSource(ivec2 q)
     value = vec4(0.0);
   }
 #endif
-#if EMISSION_IN_ALPHA && STEP != STEP_COMPOSITE
+#if EMISSION_IN_ALPHA
   // Selective bloom in one render: an emitting fragment's alpha is 1 + its weight
-  // (vtkBloomPassEmission.h). (The composite's source is the bloom; it reads the scene.)
+  // (vtkBloomPassEmission.h).
   value = vec4(value.rgb * clamp(value.a - 1.0, 0.0, 1.0), 0.0);
 #endif
   return value;
@@ -394,8 +394,8 @@ void main()
   result = sum + weight * texelFetch(addend, p, 0);
 #else // STEP_COMPOSITE
   vec4 base = texelFetch(scene, p, 0);
-#if EMISSION_IN_ALPHA
-  base.a = min(base.a, 1.0); // the emission's weight rode above 1
+#if SCENE_ALPHA_CLAMPED
+  base.a = min(base.a, 1.0); // selective bloom's weight rode above 1 (EMISSION_IN_ALPHA)
 #endif
 #if SANITIZE_OUTPUT
   base = finite(base);
