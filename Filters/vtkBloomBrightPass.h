@@ -38,6 +38,8 @@ inline decltype(auto) vtkBloomWithThresholdMode(int mode, F&& f)
       return f(std::integral_constant<int, T::HARD_LUMINANCE>());
     case T::PER_CHANNEL:
       return f(std::integral_constant<int, T::PER_CHANNEL>());
+    case T::EXCESS_KNEE:
+      return f(std::integral_constant<int, T::EXCESS_KNEE>());
     default:
       return f(std::integral_constant<int, T::NONE>());
   }
@@ -129,6 +131,23 @@ inline void vtkBloomBrightPass(
     case vtkImageBloomThreshold::HARD_LUMINANCE:
       factor = lum > t0 ? one : zero;
       break;
+    case vtkImageBloomThreshold::EXCESS_KNEE:
+    {
+      Real brightness = colour[0];
+      for (int c = 1; c < N; ++c)
+      {
+        brightness = std::max(brightness, colour[c]);
+      }
+      // The excess over T, its first 2k softened by a quadratic that starts at T.
+      const Real excess = brightness - t0;
+      Real soft = zero;
+      if (excess > zero)
+      {
+        soft = excess < Real(2) * k ? excess * excess / (Real(4) * k) : excess - k;
+      }
+      factor = brightness > zero ? soft / brightness : zero;
+      break;
+    }
     case vtkImageBloomThreshold::PER_CHANNEL:
       for (int c = 0; c < N; ++c)
       {
@@ -172,6 +191,7 @@ inline bool vtkBloomBrightPassIsZeroBelow(
       // Both terms of the factor <= 0, evaluated as the formula evaluates them.
       return k >= Real(0) && brightness - t0 + k <= Real(0) && brightness - t0 <= Real(0);
     case vtkImageBloomThreshold::PER_CHANNEL:
+    case vtkImageBloomThreshold::EXCESS_KNEE:
       return brightness <= t0;
     default:
       return false;

@@ -16,7 +16,8 @@ vtkStandardNewMacro(vtkBloomParameters);
 //------------------------------------------------------------------------------
 vtkBloomParameters::vtkBloomParameters()
 {
-  this->ThresholdMode = vtkImageBloomThreshold::SMOOTHSTEP_KNEE;
+  // Light, not white: only what is brighter than display white glows, by its excess.
+  this->ThresholdMode = vtkImageBloomThreshold::EXCESS_KNEE;
   this->Threshold = 1.0;
   this->Knee = 0.5;
   this->ClampLuminance = VTK_FLOAT_MAX;

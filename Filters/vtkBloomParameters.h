@@ -196,8 +196,12 @@ public:
   ///@}
 
   ///@{
-  /// Bright pass (see vtkImageBloomThreshold). Defaults: SMOOTHSTEP_KNEE, 1, 0.5, off.
-  vtkSetClampMacro(ThresholdMode, int, 0, 4);
+  /**
+   * Bright pass (see vtkImageBloomThreshold). Defaults: EXCESS_KNEE, 1, 0.5, off: light
+   * brighter than display white glows by its excess over 1 (its knee lies above 1), and a frame
+   * with nothing above 1 is left exactly as it is. The presets set their seeds' modes.
+   */
+  vtkSetClampMacro(ThresholdMode, int, 0, 5);
   vtkGetMacro(ThresholdMode, int);
   vtkSetMacro(Threshold, double);
   vtkGetMacro(Threshold, double);

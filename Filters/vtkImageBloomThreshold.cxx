@@ -94,6 +94,8 @@ const char* vtkImageBloomThreshold::GetModeName(int mode)
       return "PerChannel";
     case NONE:
       return "None";
+    case EXCESS_KNEE:
+      return "ExcessKnee";
     default:
       return "Unknown";
   }

@@ -14,6 +14,12 @@
  * - HARD_LUMINANCE (seed 002): c if L > T (strictly), else 0.
  * - PER_CHANNEL (seed 003): max(c_i - T, 0) per channel.
  * - NONE (seed 001): c unchanged.
+ * - EXCESS_KNEE (the default of vtkBloomParameters): c * e(B) / B, where e is the excess of B
+ *   over T softened by a quadratic knee that starts at T and does not reach below it:
+ *   e = 0 for B <= T, (B - T)^2 / (4k) for T < B < T + 2k, and B - T - k above (value and
+ *   slope continuous at T + 2k); with k = 0 it is the excess max(B - T, 0) itself. A colour no
+ *   channel of which exceeds T gives exactly 0, so at T = 1 display white and everything darker
+ *   never glow: only light brighter than display white does, by how much brighter it is.
  *
  * Before the threshold, ClampLuminance guards against fireflies: a pixel whose luminance
  * exceeds it is scaled down to it (hue preserved). Every mode but NONE clamps its result to
@@ -45,18 +51,20 @@ public:
     QUADRATIC_KNEE = 1,
     HARD_LUMINANCE = 2,
     PER_CHANNEL = 3,
-    NONE = 4
+    NONE = 4,
+    EXCESS_KNEE = 5
   };
 
   ///@{
-  /// Threshold mode. Default SMOOTHSTEP_KNEE.
-  vtkSetClampMacro(Mode, int, SMOOTHSTEP_KNEE, NONE);
+  /// Threshold mode. Default SMOOTHSTEP_KNEE (vtkBloomParameters' default is EXCESS_KNEE).
+  vtkSetClampMacro(Mode, int, SMOOTHSTEP_KNEE, EXCESS_KNEE);
   vtkGetMacro(Mode, int);
   void SetModeToSmoothstepKnee() { this->SetMode(SMOOTHSTEP_KNEE); }
   void SetModeToQuadraticKnee() { this->SetMode(QUADRATIC_KNEE); }
   void SetModeToHardLuminance() { this->SetMode(HARD_LUMINANCE); }
   void SetModeToPerChannel() { this->SetMode(PER_CHANNEL); }
   void SetModeToNone() { this->SetMode(NONE); }
+  void SetModeToExcessKnee() { this->SetMode(EXCESS_KNEE); }
   const char* GetModeAsString() { return vtkImageBloomThreshold::GetModeName(this->Mode); }
   static const char* GetModeName(int mode);
   ///@}

@@ -1,8 +1,10 @@
 #include "vtkBloomPass.h"
 
+#include "vtkBloomPassBackground.h"
 #include "vtkBloomPassChainRunner.h"
 #include "vtkBloomPassEmission.h"
 #include "vtkBloomPassFFT.h"
+#include "vtkBloomPassOverlay.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkDataArray.h"
@@ -62,7 +64,8 @@ public:
   vtkBloomPassResources Resources;
   vtkBloomPassChainRunner Runner;
   vtkBloomPassEmission Emission;
-  vtkBloomPassFFT FFT; ///< PSF mode's convolution
+  vtkBloomPassOverlay Overlay; ///< the delegate's annotations, drawn over the bloom
+  vtkBloomPassFFT FFT;         ///< PSF mode's convolution
 
   /// The bloom term of `source` (masked by the emitters' depth with `mask`): the chain, or in
   /// PSF mode the bright pass and its convolution; false when the bloom is skipped.
@@ -131,6 +134,10 @@ bool vtkBloomPass::vtkInternals::Prepare(
   this->Runner.Profiling = self->ProfilePasses;
   this->Runner.Profile.clear();
   this->Runner.EmissionInAlpha = false;
+  // An image (ApplyToImage): thresholded whole, its own background, into its own target.
+  this->Runner.ThresholdEmission = true;
+  this->Runner.CompositeOver = false;
+  res.BackgroundMode = vtkBloomPassResources::BACKGROUND_IN_SCENE;
   res.AllocateScene(w, h, emitters, samples);
   this->Runner.PSFBloom = nullptr;
   if (self->Parameters->GetBloomMode() == vtkBloomParameters::BLOOM_PSF)
@@ -269,20 +276,11 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
   state->vtkglViewport(0, 0, target.Size[0], target.Size[1]);
   state->vtkglScissor(0, 0, target.Size[0], target.Size[1]);
 
-  // Emitters shine on black: the renderer's background must not bloom with them.
-  double background[3], background2[3];
-  r->GetBackground(background);
-  r->GetBackground2(background2);
-  const double backgroundAlpha = r->GetBackgroundAlpha();
-  const bool gradient = r->GetGradientBackground();
-  const bool textured = r->GetTexturedBackground();
-  if (content == EMITTERS)
-  {
-    r->SetBackground(0.0, 0.0, 0.0);
-    r->SetBackgroundAlpha(0.0);
-    r->SetGradientBackground(false);
-    r->SetTexturedBackground(false);
-  }
+  // Emitters shine on black, and the scene renders over transparent black unless its
+  // background blooms: the composite puts it over the background (vtkBloomPassBackground).
+  const vtkBloomPassHiddenBackground hidden(r,
+    content == EMITTERS ||
+      this->Resources.BackgroundMode != vtkBloomPassResources::BACKGROUND_IN_SCENE);
   if (r->Transparent() || content == EMITTERS)
   {
     // The camera pass does not clear layered renderers; an offscreen target must start empty.
@@ -317,14 +315,6 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
   if (content != EMITTERS)
   {
     self->NumberOfRenderedProps += self->DelegatePass->GetNumberOfRenderedProps();
-  }
-  else
-  {
-    r->SetBackground(background);
-    r->SetBackground2(background2);
-    r->SetBackgroundAlpha(backgroundAlpha);
-    r->SetGradientBackground(gradient);
-    r->SetTexturedBackground(textured);
   }
 }
 
@@ -399,6 +389,13 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     return;
   }
   vtkRenderer* r = s->GetRenderer();
+  if (r->GetSelector())
+  {
+    // Hardware picking renders ids as colours: they reach the selector untouched.
+    this->DelegatePass->Render(s);
+    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    return;
+  }
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(r->GetRenderWindow());
   if (!window)
   {
@@ -430,6 +427,13 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     return;
   }
   in.Runner.GlowAlpha = true;
+  // Only light blooms: the emitters whatever their colour, not the background, not the
+  // annotations (drawn after the composite). A layer blooms over the layers below it.
+  in.Runner.ThresholdEmission = !selective || this->ThresholdEmitters;
+  in.Runner.CompositeOver = r->Transparent();
+  vtkBloomPassBackground::Plan(res, r, this->BloomBackground);
+  this->LastAnnotationsOverBloom =
+    !this->BloomAnnotations && in.Overlay.Detach(this->DelegatePass) > 0;
   if (this->CaptureResult)
   {
     res.Result.Allocate(window, w, h, GL_RGBA32F);
@@ -445,6 +449,10 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   }
   in.RenderDelegate(this, s, res.Scene, s->GetPropArray(), s->GetPropArrayCount(),
     inScene ? vtkInternals::SCENE_AND_EMISSION : vtkInternals::SCENE);
+  if (res.BackgroundMode == vtkBloomPassResources::BACKGROUND_TEXTURE)
+  {
+    vtkBloomPassBackground::Draw(res, r, w, h);
+  }
   this->SceneRendered(s, res.Scene.Color);
   if (this->ProfilePasses)
   {
@@ -487,6 +495,8 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     state->PopFramebufferBindings();
     in.Runner.Composite(nullptr, origin, bloom);
   }
+  // 4. The annotations, over the bloom.
+  this->NumberOfRenderedProps += in.Overlay.Render(s, x, y, w, h);
   in.Report(this);
   this->NumberOfPasses = in.Runner.Passes;
   if (this->ProfilePasses)
@@ -650,7 +660,18 @@ bool vtkBloomPass::ReadSceneImage(vtkImageData* image)
     // The emission rode on the alpha (1 + weight); the scene's own alpha is at most 1.
     vtkBloomPassDecodeEmission(image, false);
   }
+  // The frame as the renderer would have drawn it: the scene over its background.
+  vtkBloomPassBackground::PutOver(res, image);
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::SetSceneBackground(const double rgba[4])
+{
+  vtkBloomPassResources& res = this->Internals->Resources;
+  res.BackgroundMode = vtkBloomPassResources::BACKGROUND_COLOR;
+  std::copy(rgba, rgba + 4, res.BackgroundColor);
+  res.Background.Release(res.Context);
 }
 
 //------------------------------------------------------------------------------
@@ -740,6 +761,11 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "Emitters: " << this->Emitters->GetNumberOfItems() << "\n";
   os << indent << "EmitInSceneRender: " << (this->EmitInSceneRender ? "On" : "Off") << "\n";
+  os << indent << "ThresholdEmitters: " << (this->ThresholdEmitters ? "On" : "Off") << "\n";
+  os << indent << "BloomBackground: " << (this->BloomBackground ? "On" : "Off") << "\n";
+  os << indent << "BloomAnnotations: " << (this->BloomAnnotations ? "On" : "Off") << "\n";
+  os << indent << "LastAnnotationsOverBloom: " << (this->LastAnnotationsOverBloom ? "On" : "Off")
+     << "\n";
   os << indent << "LastEmissionInSceneRender: " << (this->LastEmissionInSceneRender ? "On" : "Off")
      << "\n";
   os << indent << "Quality: " << (this->Quality == QUALITY_FAST ? "Fast" : "Exact") << "\n";

@@ -51,6 +51,21 @@
  * is not behind the scene's). Both ways give the same image to float rounding without
  * multisampling (tested); GetLastEmissionInSceneRender() says which ran.
  *
+ * Light, not the frame. Only light blooms: what the bright pass lets through (at the defaults of
+ * vtkBloomParameters, colour above 1, by its excess) and the emitters. The renderer's background
+ * is not light: by default (BloomBackground off) the scene renders over transparent black, only
+ * it enters the bright pass, and the composite puts the scene and its glow over the background
+ * as the renderer draws it (solid, gradient or textured): out = keep scene + glow +
+ * (1 - a)(1 - g) background, with a the scene's coverage and g the glow's largest channel, so
+ * that a glow shows as colour over a light background instead of saturating it (Mol*'s
+ * premultiplied-over). Annotations are not light either: by default (BloomAnnotations off) the
+ * delegate's overlay step (text, scalar bars, corner annotations, legends, 2D widgets) is drawn
+ * after the composite, over the bloom, crisp. A frame with nothing above 1 and no emitter is
+ * then the renderer's own frame to float rounding. Renderers on higher layers (an orientation
+ * marker) render after this one and stay on top; a layered renderer with this pass blooms over
+ * the layers below it. While a vtkHardwareSelector renders (picking), the delegate renders
+ * directly, without bloom, so the ids reach the selector untouched.
+ *
  * Chain it before vtkToneMappingPass (tone mapping's delegate is this pass) to bloom in linear
  * HDR and tone-map afterwards. Resources are made on first use and remade when the viewport
  * size, the precision or the parameters change; ReleaseGraphicsResources frees them and
@@ -287,6 +302,44 @@ public:
   vtkGetMacro(LastEmissionInSceneRender, bool);
 
   ///@{
+  /**
+   * Whether the bright pass's threshold applies to the emitters (EMISSION_EMITTERS). Off (the
+   * default): an emitter is light whatever its colour, LDR included, and its colour enters the
+   * bloom whole. On: the parameters' threshold applies to it as to a whole scene.
+   */
+  vtkSetMacro(ThresholdEmitters, bool);
+  vtkGetMacro(ThresholdEmitters, bool);
+  vtkBooleanMacro(ThresholdEmitters, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Whether the renderer's background enters the bright pass like a surface of the scene (the
+   * behaviour of earlier versions). Off (the default): the background never blooms and the
+   * glow goes over it (see the class description). A layered renderer, which clears nothing,
+   * has no background of its own either way.
+   */
+  vtkSetMacro(BloomBackground, bool);
+  vtkGetMacro(BloomBackground, bool);
+  vtkBooleanMacro(BloomBackground, bool);
+  ///@}
+
+  ///@{
+  /**
+   * Whether the annotations (the delegate's overlay step: 2D actors and 2D widget
+   * representations) are part of the frame that blooms. Off (the default): they are drawn after
+   * the composite, over the bloom. The result images (ReadResultImage) hold the frame without
+   * them.
+   */
+  vtkSetMacro(BloomAnnotations, bool);
+  vtkGetMacro(BloomAnnotations, bool);
+  vtkBooleanMacro(BloomAnnotations, bool);
+  ///@}
+
+  /// Whether the last render drew the delegate's annotations over the bloom.
+  vtkGetMacro(LastAnnotationsOverBloom, bool);
+
+  ///@{
   /// The shader replacement that writes the emission (vtkOpenGLRenderPass's API).
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
@@ -433,12 +486,23 @@ protected:
    */
   virtual void SceneRendered(const vtkRenderState* s, vtkTextureObject* sceneColor);
 
+  /**
+   * For SceneRendered(): the scene just written has no background (premultiplied colour over
+   * transparent black, as IceT composites it), and the composite puts it over the solid
+   * background `rgba` (a colour and its alpha), as it does with the renderer's own.
+   */
+  void SetSceneBackground(const double rgba[4]);
+
   vtkSmartPointer<vtkBloomParameters> Parameters;
   vtkPropCollection* Emitters;
   int FloatPrecision;
   int EmissionSource;
   bool EmitInSceneRender = true;
   bool LastEmissionInSceneRender = false;
+  bool ThresholdEmitters = false;
+  bool BloomBackground = false;
+  bool BloomAnnotations = false;
+  bool LastAnnotationsOverBloom = false;
   int Quality;
   bool UseComputeShaders;
   bool SimulateComputeShaderFailure = false;

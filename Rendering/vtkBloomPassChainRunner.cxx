@@ -89,8 +89,11 @@ std::string vtkBloomPassChainRunner::ShaderConstants()
      << "\n#define MODE_QUADRATIC_KNEE " << vtkImageBloomThreshold::QUADRATIC_KNEE
      << "\n#define MODE_HARD_LUMINANCE " << vtkImageBloomThreshold::HARD_LUMINANCE
      << "\n#define MODE_PER_CHANNEL " << vtkImageBloomThreshold::PER_CHANNEL
-     << "\n#define MODE_NONE " << vtkImageBloomThreshold::NONE << "\n#define FLOAT_MAX "
-     << std::scientific << std::setprecision(9) << std::numeric_limits<float>::max() << "\n";
+     << "\n#define MODE_NONE " << vtkImageBloomThreshold::NONE << "\n#define MODE_EXCESS_KNEE "
+     << vtkImageBloomThreshold::EXCESS_KNEE << "\n#define BACKGROUND_COLOR "
+     << vtkBloomPassResources::BACKGROUND_COLOR << "\n#define BACKGROUND_TEXTURE "
+     << vtkBloomPassResources::BACKGROUND_TEXTURE << "\n#define FLOAT_MAX " << std::scientific
+     << std::setprecision(9) << std::numeric_limits<float>::max() << "\n";
   return os.str();
 }
 
@@ -135,11 +138,16 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
   {
     os << this->InteriorOf(*spec.Y).Defines("Y", this->Linear(spec, spec.Y));
   }
-  os << "#define STEP " << spec.Step << "\n#define THRESHOLD_MODE "
-     << this->Parameters->GetThresholdMode() << "\n#define MASK_BY_DEPTH "
-     << (spec.ReadsSource && this->MaskSource ? 1 : 0) << "\n#define SANITIZE_SOURCE "
-     << (spec.ReadsSource && this->SanitizeSource ? 1 : 0) << "\n#define EMISSION_IN_ALPHA "
-     << (spec.ReadsSource && this->EmissionInAlpha ? 1 : 0) << "\n#define SCENE_ALPHA_CLAMPED "
+  // Emitters are light whatever their colour: their emission is not thresholded.
+  const int mode = this->ThresholdEmission ? this->Parameters->GetThresholdMode()
+                                           : static_cast<int>(vtkImageBloomThreshold::NONE);
+  os << "#define STEP " << spec.Step << "\n#define THRESHOLD_MODE " << mode
+     << "\n#define SCENE_BACKGROUND "
+     << (spec.Step == STEP_COMPOSITE ? this->Resources.BackgroundMode : 0)
+     << "\n#define MASK_BY_DEPTH " << (spec.ReadsSource && this->MaskSource ? 1 : 0)
+     << "\n#define SANITIZE_SOURCE " << (spec.ReadsSource && this->SanitizeSource ? 1 : 0)
+     << "\n#define EMISSION_IN_ALPHA " << (spec.ReadsSource && this->EmissionInAlpha ? 1 : 0)
+     << "\n#define SCENE_ALPHA_CLAMPED "
      << (spec.Step == STEP_COMPOSITE && this->EmissionInAlpha ? 1 : 0)
      << "\n#define SANITIZE_OUTPUT " << (this->SanitizeOutput ? 1 : 0)
      << "\n#define COMPOSITE_BLOOM " << (spec.CompositeBloom ? 1 : 0) << "\n#define DISCARD_ZERO "
@@ -278,6 +286,13 @@ vtkBloomPassChainRunner::ImageTarget vtkBloomPassChainRunner::BeginPass(
     state->vtkglBlendEquation(GL_FUNC_ADD);
     state->vtkglBlendFunc(GL_ONE, GL_ONE);
   }
+  else if (!target && this->CompositeOver)
+  {
+    // Over the layers below, premultiplied (the scene was rendered over transparent black).
+    state->vtkglEnable(GL_BLEND);
+    state->vtkglBlendEquation(GL_FUNC_ADD);
+    state->vtkglBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  }
   else
   {
     state->vtkglDisable(GL_BLEND);
@@ -341,7 +356,11 @@ vtkBloomPassChainRunner::PassTextures vtkBloomPassChainRunner::PassTexturesOf(co
     spec.Y ? this->OperatorTexture(*spec.Y) : nullptr, spec.Addend,
     spec.Step == STEP_COMPOSITE ? this->Resources.Scene.Color.Get() : nullptr,
     mask ? this->Resources.Emitter.Depth.Get() : nullptr,
-    mask ? this->Resources.Scene.Depth.Get() : nullptr };
+    mask ? this->Resources.Scene.Depth.Get() : nullptr,
+    spec.Step == STEP_COMPOSITE &&
+        this->Resources.BackgroundMode == vtkBloomPassResources::BACKGROUND_TEXTURE
+      ? this->Resources.Background.Color.Get()
+      : nullptr };
   return t;
 }
 
@@ -421,6 +440,10 @@ void vtkBloomPassChainRunner::SetStepUniforms(Uniforms& u, int step)
     const double* tint = p->GetTint();
     setf("keep", p->GetCompositeMode() == vtkBloomParameters::LERP ? 1.0 - strength : 1.0);
     setf("glowAlpha", this->GlowAlpha ? 1.0 : 0.0);
+    if (this->Resources.BackgroundMode == vtkBloomPassResources::BACKGROUND_COLOR)
+    {
+      u.Float4("backgroundColor", this->Resources.BackgroundColor);
+    }
     const double strengthTint[3] = { strength * tint[0], strength * tint[1], strength * tint[2] };
     set3f("strengthTint", strengthTint);
     setf("largest",

@@ -74,6 +74,18 @@ public:
    * as min(alpha, 1). Set before Run().
    */
   bool EmissionInAlpha = false;
+  /**
+   * The bright pass applies the parameters' threshold (true), or takes the emission whole
+   * (false: selective bloom's emitters are light whatever their colour). Set before Run().
+   */
+  bool ThresholdEmission = true;
+  /**
+   * The pass into the framebuffer (the composite, or the copy of the captured result) goes
+   * over what the framebuffer holds, premultiplied (GL_ONE, GL_ONE_MINUS_SRC_ALPHA), instead of
+   * replacing it: a renderer on a higher layer, which clears nothing, blooms over the layers
+   * below. Such a pass is always a fragment pass.
+   */
+  bool CompositeOver = false;
   bool Restrict = false;
 
   /**
@@ -424,6 +436,7 @@ private:
     void Int2(const char* name, const int values[2]);
     void Float2(const char* name, const float values[2]);
     void Float3(const char* name, const double values[3]);
+    void Float4(const char* name, const float values[4]);
     void Ints(const char* name, int count, const int* values);
     void Floats(const char* name, int count, const float* values);
   };
@@ -503,9 +516,9 @@ private:
   /// The textures a pass reads, in a fixed order, and their samplers' names.
   struct PassTextures
   {
-    std::array<vtkTextureObject*, 7> Textures;
-    static constexpr const char* Samplers[7] = { "source", "xRows", "yRows", "addend", "scene",
-      "emitterDepth", "sceneDepth" };
+    std::array<vtkTextureObject*, 8> Textures;
+    static constexpr const char* Samplers[8] = { "source", "xRows", "yRows", "addend", "scene",
+      "emitterDepth", "sceneDepth", "background" };
   };
 
   /**

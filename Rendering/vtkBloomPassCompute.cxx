@@ -105,6 +105,20 @@ void vtkBloomPassChainRunner::Uniforms::Float3(const char* name, const double va
 }
 
 //------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::Uniforms::Float4(const char* name, const float values[4])
+{
+  const int at = this->Location(name);
+  if (at >= 0 && this->Program)
+  {
+    this->Program->SetUniform4f(name, values);
+  }
+  else if (at >= 0)
+  {
+    glUniform4f(at, values[0], values[1], values[2], values[3]);
+  }
+}
+
+//------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::Uniforms::Ints(const char* name, int count, const int* values)
 {
   const int at = this->Location(name);
@@ -152,7 +166,9 @@ vtkBloomPassChainRunner::ImageTarget vtkBloomPassChainRunner::ComputeTarget(
 {
   // The bright pass under an occlusion query counts fragments: it stays a fragment pass.
   ImageTarget image;
-  if (!this->UseCompute || (spec.DiscardZero && this->CountingSamples) || !this->ComputeSupported())
+  // A pass over the framebuffer's content blends: a fragment pass.
+  if (!this->UseCompute || (spec.DiscardZero && this->CountingSamples) ||
+    (!target && this->CompositeOver) || !this->ComputeSupported())
   {
     return image;
   }

@@ -290,5 +290,6 @@ void vtkBloomPassResources::ReleaseAll(vtkWindow* w)
   this->Emitter.ReleaseAll(w);
   this->Multisample.Release(w);
   this->Result.Release(w);
+  this->Background.Release(w);
   this->Context = nullptr;
 }

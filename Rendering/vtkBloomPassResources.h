@@ -120,6 +120,21 @@ public:
   int Samples = 0;
   vtkBloomPassTarget Result;
 
+  /**
+   * Where the composite finds the renderer's background (vtkBloomPassBackground.h): in the
+   * scene (BACKGROUND_IN_SCENE: it was rendered with it), a solid BackgroundColor (RGBA), or
+   * the Background target, drawn as the renderer draws a gradient or textured background.
+   */
+  enum BackgroundModes
+  {
+    BACKGROUND_IN_SCENE = 0,
+    BACKGROUND_COLOR = 1,
+    BACKGROUND_TEXTURE = 2
+  };
+  int BackgroundMode = BACKGROUND_IN_SCENE;
+  float BackgroundColor[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  vtkBloomPassTarget Background;
+
   // The chain and its resources, rebuilt when the size or the parameters change.
   vtkBloomChain Chain;
   vtkMTimeType ChainTime = 0;

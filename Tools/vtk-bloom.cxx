@@ -69,7 +69,8 @@ image: HDR bloom (vtkImageBloom). A preset is applied first; options then overri
                          (default: the fused float32 FAST chain, within 1e-5 relative L2 of it)
   --threshold T          bright-pass threshold, >= 0
   --knee K               soft knee relative to the threshold, 0..1
-  --mode M               smoothstep | quadratic | hard | per-channel | none
+  --mode M               excess (default: only what exceeds the threshold glows, by its
+                         excess) | smoothstep | quadratic | hard | per-channel | none
   --clamp-luminance L    firefly guard: largest luminance let through
   --strength S           bloom strength (additive) or blend factor (lerp), 0..1000
   --composite C          additive | lerp
@@ -130,8 +131,9 @@ render: render an example scene or your dataset headless with the GPU pass (vtkB
   --view V               iso (default) | +x | -x | +y | -y | +z | -z: the camera looks along V
   --azimuth A, --elevation E, --zoom Z    turn and zoom the camera after --view
   --background R,G,B     background colour (default 0.02,0.02,0.03)
-  Scenes choose their bloom parameters, datasets start from webgpu-market; the image options
-  above override them.
+  Scenes choose their bloom parameters; datasets start from vtkBloomParameters' defaults
+  (only light above 1 glows, and what --emit-range marks, whatever its colour); the image
+  options above override them. The background and the annotations never glow.
 
 view: the same in an interactive X window: sliders for threshold, strength and levels; keys
   b bloom on/off, p next preset, s PNG screenshot, e EXR of the float frame, h help, q quit.

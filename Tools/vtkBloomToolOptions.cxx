@@ -182,7 +182,8 @@ BloomOptions::BloomOptions(Arguments& args)
           { "quadratic", vtkImageBloomThreshold::QUADRATIC_KNEE },
           { "hard", vtkImageBloomThreshold::HARD_LUMINANCE },
           { "per-channel", vtkImageBloomThreshold::PER_CHANNEL },
-          { "none", vtkImageBloomThreshold::NONE } }));
+          { "none", vtkImageBloomThreshold::NONE },
+          { "excess", vtkImageBloomThreshold::EXCESS_KNEE } }));
   }
   if (args.Take("--clamp-luminance", v))
   {

@@ -6,7 +6,6 @@
 #include "vtkBloomToolImageIO.h"
 #include "vtkBloomToolRender.h"
 #include "vtkBloomVTKCompat.h"
-#include "vtkImageBloomThreshold.h"
 
 #include <vtkCallbackCommand.h>
 #include <vtkCommand.h>
@@ -45,6 +44,7 @@
 #include <iostream>
 #include <iterator>
 #include <sstream>
+#include <string>
 
 namespace vtkBloomTool
 {
@@ -82,8 +82,6 @@ private:
 };
 vtkStandardNewMacro(vtkBloomToolTimedPass);
 
-const char* const Presets[] = { "webgpu-market", "mip-atlas", "ping-pong", "crt-halfres" };
-
 const char* const HelpText = "b  bloom on / off\n"
                              "p  next preset\n"
                              "s  save a PNG screenshot\n"
@@ -109,7 +107,14 @@ struct Viewer
   RenderOptions Options;
   ErrorCollector Errors;
   bool Bloom = true;
-  int Preset = 0;
+  int Preset = 0; ///< 0: the parameters the view began with (Initial), i: preset i - 1
+  vtkNew<vtkBloomParameters> Initial;
+
+  std::string PresetName() const
+  {
+    return this->Preset == 0 ? std::string("as started")
+                             : vtkBloomParameters::GetPresetNames()[this->Preset - 1];
+  }
   int Snapshots = 0;
 
   void AddSlider(int index, const char* title, double lo, double hi, double value, double y)
@@ -180,7 +185,7 @@ struct Viewer
     text.precision(2);
     if (this->Bloom)
     {
-      text << "bloom " << Presets[this->Preset] << ": "
+      text << "bloom " << this->PresetName() << ": "
            << std::max(
                 0.0, this->TimedBloom->GetMilliseconds() - this->TimedScene->GetMilliseconds())
            << " ms / frame (scene " << this->TimedScene->GetMilliseconds() << " ms)";
@@ -203,12 +208,16 @@ struct Viewer
     }
     else if (key == "p")
     {
-      this->Preset = (this->Preset + 1) % 4;
-      const bool emitters = this->Pass->GetEmissionSource() == vtkBloomPass::EMISSION_EMITTERS;
-      this->Pass->SetPreset(Presets[this->Preset]);
-      if (emitters)
+      // The presets vtkBloomParameters names, then back to the parameters the view began with.
+      const int count = static_cast<int>(vtkBloomParameters::GetPresetNames().size());
+      this->Preset = (this->Preset + 1) % (count + 1);
+      if (this->Preset == 0)
       {
-        this->Pass->GetParameters()->SetThresholdMode(vtkImageBloomThreshold::NONE);
+        this->Pass->GetParameters()->DeepCopy(this->Initial);
+      }
+      else
+      {
+        this->Pass->SetPreset(this->PresetName().c_str());
       }
       this->SyncSliders();
     }
@@ -355,6 +364,7 @@ int View(const std::string& input, const RenderOptions& options, const std::stri
     TurnCamera(viewer.Renderer, options.Data);
   }
   options.ConfigureBloom(viewer.Pass);
+  viewer.Initial->DeepCopy(viewer.Pass->GetParameters());
 
   viewer.Status->GetTextProperty()->SetFontSize(14);
   viewer.Status->GetTextProperty()->SetColor(0.75, 0.75, 0.75);

@@ -47,22 +47,33 @@ void vtkPVBloomPass::SceneRendered(const vtkRenderState*, vtkTextureObject* scen
   {
     return; // not the displaying process, or IceT reduced the image: the scene as rendered
   }
-  // IceT composites over transparent black: the view's background goes behind it here, as a
-  // serial render clears to it.
+  // IceT composites over transparent black: the scene without its background, as the pass
+  // renders it by default, and the composite puts it over the view's background. Where the
+  // background blooms (BloomBackground), it goes behind the scene here, as a serial render
+  // clears to it.
   const float* background = this->CompositeBackground;
-  const size_t count = 4 * static_cast<size_t>(width) * height;
-  this->Pixels.resize(count);
   const float* top = composite->GetPointer(0);
-  for (size_t i = 0; i < count; i += 4)
+  if (this->BloomBackground)
   {
-    const float behind = 1.0f - top[i + 3];
-    for (size_t c = 0; c < 4; ++c)
+    const size_t count = 4 * static_cast<size_t>(width) * height;
+    this->Pixels.resize(count);
+    for (size_t i = 0; i < count; i += 4)
     {
-      this->Pixels[i + c] = top[i + c] + behind * background[c];
+      const float behind = 1.0f - top[i + 3];
+      for (size_t c = 0; c < 4; ++c)
+      {
+        this->Pixels[i + c] = top[i + c] + behind * background[c];
+      }
     }
+    top = this->Pixels.data();
+  }
+  else
+  {
+    const double rgba[4] = { background[0], background[1], background[2], background[3] };
+    this->SetSceneBackground(rgba);
   }
   sceneColor->Activate(); // rows of RGBA floats are 16-byte aligned: any unpack alignment
-  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, this->Pixels.data());
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, width, height, GL_RGBA, GL_FLOAT, top);
   sceneColor->Deactivate();
   this->LastSceneWasComposited = true;
 }

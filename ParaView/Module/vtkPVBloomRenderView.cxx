@@ -70,6 +70,18 @@ int vtkPVBloomRenderView::GetBloomFloatPrecision()
 }
 
 //------------------------------------------------------------------------------
+void vtkPVBloomRenderView::SetBloomBackground(bool bloom)
+{
+  this->BloomPass->SetBloomBackground(bloom);
+}
+
+//------------------------------------------------------------------------------
+bool vtkPVBloomRenderView::GetBloomBackground()
+{
+  return this->BloomPass->GetBloomBackground();
+}
+
+//------------------------------------------------------------------------------
 bool vtkPVBloomRenderView::GetBloomLastSceneWasComposited()
 {
   return this->BloomPass->GetLastSceneWasComposited();

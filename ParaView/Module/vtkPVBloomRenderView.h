@@ -70,6 +70,10 @@ public:
   /// Precision of the pass's targets: 16 (half floats, default) or 32 (floats).
   void SetBloomFloatPrecision(int bits);
   int GetBloomFloatPrecision();
+
+  /// Whether the view's background blooms like a surface (vtkBloomPass::BloomBackground).
+  void SetBloomBackground(bool bloom);
+  bool GetBloomBackground();
   ///@}
 
   ///@{

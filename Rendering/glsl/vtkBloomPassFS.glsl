@@ -141,6 +141,11 @@ uniform float keep;
 uniform vec3 strengthTint;
 uniform float glowAlpha; // 1: the glow raises a transparent scene's alpha; 0: alpha is kept
 uniform float largest; // largest finite value of the output target
+#if SCENE_BACKGROUND == BACKGROUND_TEXTURE
+uniform sampler2D background; // the renderer's gradient or textured background
+#elif SCENE_BACKGROUND == BACKGROUND_COLOR
+uniform vec4 backgroundColor; // the renderer's solid background
+#endif
 #if ZERO_BLOOM
 uniform float zeroBloom;
 #endif
@@ -304,6 +309,17 @@ vec3 brightPass(vec3 c)
   factor = max(q, brightness - threshold) / max(brightness, 1e-5);
 #elif THRESHOLD_MODE == MODE_HARD_LUMINANCE
   factor = lum > threshold ? 1.0 : 0.0;
+#elif THRESHOLD_MODE == MODE_EXCESS_KNEE
+  // The excess of the brightest channel over the threshold, its first 2k softened by a
+  // quadratic that starts at the threshold: nothing at or below it glows.
+  float brightness = max(c.r, max(c.g, c.b));
+  float excess = brightness - threshold;
+  float soft = 0.0;
+  if (excess > 0.0)
+  {
+    soft = excess < 2.0 * k ? excess * excess / (4.0 * k) : excess - k;
+  }
+  factor = brightness > 0.0 ? soft / brightness : 0.0;
 #elif THRESHOLD_MODE == MODE_PER_CHANNEL
   return max(c - vec3(threshold), vec3(0.0));
 #endif
@@ -313,6 +329,26 @@ vec3 brightPass(vec3 c)
 #endif
 
 #if STEP == STEP_COMPOSITE
+// SCENE_BACKGROUND: the scene was rendered over transparent black (the background is not
+// light), premultiplied. It goes over the background, and the glow, whose largest channel
+// `coverage` is, goes over the background too (Mol*'s premultiplied-over): on a light
+// background the halo shows as colour where added light would saturate. Without it, or with
+// no glow (coverage 0), this is the scene as the renderer would have drawn it over its
+// background, and over black or transparent black the glow is added as before.
+vec4 overBackground(vec4 base, float coverage, ivec2 p)
+{
+#if SCENE_BACKGROUND == BACKGROUND_TEXTURE
+  vec4 behind = texelFetch(background, p, 0);
+#elif SCENE_BACKGROUND == BACKGROUND_COLOR
+  vec4 behind = backgroundColor;
+#endif
+#if SCENE_BACKGROUND
+  float uncovered = max(1.0 - base.a, 0.0);
+  base = vec4(base.rgb + uncovered * (1.0 - coverage) * behind.rgb, base.a + uncovered * behind.a);
+#endif
+  return base;
+}
+
 vec4 finite(vec4 v)
 {
   for (int i = 0; i < 4; ++i)
@@ -414,10 +450,12 @@ void main()
   // image, as vtkImageBloom), alpha is the scene's exactly.
   vec3 glow = strengthTint * bloom;
   float coverage = clamp(max(max(glow.r, glow.g), glow.b), 0.0, 1.0);
+  base = overBackground(base, coverage, p);
   result = vec4(keep * base.rgb + glow, base.a + glowAlpha * max(1.0 - base.a, 0.0) * coverage);
 #else
   // No bloom (nothing passed the bright pass, or the effect is off): keep * in + 0, as
   // vtkImageBloom composites a skipped bloom.
+  base = overBackground(base, 0.0, p);
   result = vec4(keep * base.rgb + vec3(0.0), base.a);
 #endif
 #if SANITIZE_OUTPUT

@@ -267,13 +267,24 @@ std::vector<GenericCase> GenericCases()
 {
   std::vector<GenericCase> cases;
   {
-    // The documented defaults: smoothstep T 1 knee 0.5, start level 1, 5 levels, 13-tap,
-    // sampled Gaussian sigma 1 with radius ceil(3 sigma) = 3, tent cascade, additive, as they
-    // apply at the reference height (the test sets ReferenceHeight 0: sizes in pixels).
+    // The documented defaults: the excess knee at T 1 knee 0.5 (only light above 1 glows),
+    // start level 1, 5 levels, 13-tap, sampled Gaussian sigma 1 with radius ceil(3 sigma) = 3,
+    // tent cascade, additive, as they apply at the reference height (the test sets
+    // ReferenceHeight 0: sizes in pixels).
     GenericCase c;
     c.Name = "defaults";
+    c.Ref.Mode = vtkBloomRef::EXCESS_KNEE;
     c.Ref.BlurHalfKernel = HalfGaussian(1.0, 3, vtkBloomRef::SAMPLED);
     c.Configure = [](vtkImageBloom*) {};
+    cases.push_back(c);
+  }
+  {
+    // The defaults before the excess knee: the smoothstep knee from T - k to T + k.
+    GenericCase c;
+    c.Name = "smoothstep-knee";
+    c.Ref.BlurHalfKernel = HalfGaussian(1.0, 3, vtkBloomRef::SAMPLED);
+    c.Configure = [](vtkImageBloom* b)
+    { b->GetParameters()->SetThresholdMode(vtkImageBloomThreshold::SMOOTHSTEP_KNEE); };
     cases.push_back(c);
   }
   {

@@ -10,7 +10,11 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 
-// An offscreen window with one renderer whose pass is bloom(render steps).
+// An offscreen window with one renderer whose pass is bloom(render steps). The suites that use
+// it compare the pass with vtkImageBloom applied to the whole float frame, which knows no
+// background: here the background is part of that frame and blooms as the filter blooms it
+// (BloomBackground on). TestBloomPassLight.cxx and the gallery test the default, where it does
+// not.
 struct BloomWindow
 {
   vtkNew<vtkRenderWindow> Window;
@@ -25,6 +29,7 @@ struct BloomWindow
     this->Window->SetSize(width, height);
     this->Window->AddRenderer(this->Renderer);
     this->Bloom->SetDelegatePass(this->Steps);
+    this->Bloom->BloomBackgroundOn();
     this->Renderer->SetPass(this->Bloom);
   }
   ~BloomWindow() { this->Window->ReleaseGraphicsResources(this->Window); }

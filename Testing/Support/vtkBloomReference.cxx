@@ -366,6 +366,22 @@ Pixel BrightPass(
   {
     factor = lum > threshold ? 1.0 : 0.0;
   }
+  else if (mode == EXCESS_KNEE)
+  {
+    // e(B) as the documentation defines it, piece by piece: 0 up to T, the quadratic
+    // (B - T)^2 / 4k up to T + 2k, the line B - T - k beyond; the colour is scaled to it.
+    const double bright = n == 1 ? p[0] : std::max(p[0], std::max(p[1], p[2]));
+    double excess = 0.0;
+    if (bright >= threshold + 2.0 * k)
+    {
+      excess = bright - threshold - k;
+    }
+    else if (bright > threshold)
+    {
+      excess = (bright - threshold) * (bright - threshold) / (4.0 * k);
+    }
+    factor = bright > 0.0 ? excess / bright : 0.0;
+  }
   else if (mode == PER_CHANNEL)
   {
     for (int c = 0; c < n; ++c)

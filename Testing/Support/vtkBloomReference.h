@@ -119,7 +119,8 @@ enum ThresholdMode
   QUADRATIC_KNEE = 1,
   HARD_LUMINANCE = 2,
   PER_CHANNEL = 3,
-  NONE = 4
+  NONE = 4,
+  EXCESS_KNEE = 5
 };
 /// Rec. 709 luminance of RGB.
 double Luminance(const Pixel& p);
