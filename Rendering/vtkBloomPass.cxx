@@ -4,8 +4,8 @@
 #include "vtkBloomPassChainRunner.h"
 #include "vtkBloomPassEmission.h"
 #include "vtkBloomPassFFT.h"
-#include "vtkBloomPassOverlay.h"
 #include "vtkBloomPassResources.h"
+#include "vtkBloomPassSteps.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkDataArray.h"
 #include "vtkImageBloom.h"
@@ -14,8 +14,10 @@
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
 #include "vtkOpenGLError.h"
+#include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
 #include "vtkPointData.h"
 #include "vtkProp.h"
@@ -64,8 +66,47 @@ public:
   vtkBloomPassResources Resources;
   vtkBloomPassChainRunner Runner;
   vtkBloomPassEmission Emission;
-  vtkBloomPassOverlay Overlay; ///< the delegate's annotations, drawn over the bloom
-  vtkBloomPassFFT FFT;         ///< PSF mode's convolution
+  vtkBloomPassSteps Steps;       ///< the delegate's overlay (over the bloom) and translucency
+  std::string BackgroundWarning; ///< why the background blooms, said once
+
+  // Where the delegate's frame cannot be put over the background afterwards, the background
+  // stays in the frame (it is the renderer's frame still): said once per reason.
+  void WarnBackgroundInScene(vtkBloomPass* self, bool oit, vtkRenderPass* processing)
+  {
+    std::string why;
+    if (processing)
+    {
+      why = std::string("The delegate's ") + processing->GetClassName() +
+        " processes the whole frame, background included";
+    }
+    else if (oit)
+    {
+      why = "Translucent geometry without depth peeling (order-independent transparency) "
+            "leaves no coverage to put the background under";
+    }
+    if (!why.empty() && why != this->BackgroundWarning)
+    {
+      vtkWarningWithObjectMacro(self, << why << ": the background is part of the frame that "
+                                      << "blooms (turn on the renderer's UseDepthPeeling, or "
+                                      << "put the pass inside the other, to keep it out).");
+    }
+    this->BackgroundWarning = why;
+  }
+  vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA; ///< the renderer's FXAA, made on first use
+
+  void ApplyFXAA(vtkOpenGLRenderer* renderer)
+  {
+    if (!this->FXAA)
+    {
+      this->FXAA = vtkSmartPointer<vtkOpenGLFXAAFilter>::New();
+    }
+    if (renderer->GetFXAAOptions())
+    {
+      this->FXAA->UpdateConfiguration(renderer->GetFXAAOptions());
+    }
+    this->FXAA->Execute(renderer);
+  }
+  vtkBloomPassFFT FFT; ///< PSF mode's convolution
 
   /// The bloom term of `source` (masked by the emitters' depth with `mask`): the chain, or in
   /// PSF mode the bright pass and its convolution; false when the bloom is skipped.
@@ -78,8 +119,8 @@ public:
   vtkMTimeType KernelsVersion = 0;
   std::string PSFError; ///< the last reason PSF mode could not run, said once
 
-  bool Prepare(
-    vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples, bool emitters);
+  bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples,
+    bool emitters, int precision);
 
   /// What the delegate renders: the scene, the scene and its emission, or the emitters alone.
   enum Content
@@ -101,6 +142,11 @@ public:
 
   void ReleaseAll(vtkWindow* w)
   {
+    if (this->FXAA)
+    {
+      this->FXAA->ReleaseGraphicsResources();
+    }
+    this->Steps.ReleaseGraphicsResources(w);
     this->FFT.ReleaseGraphicsResources(w);
     this->Runner.ReleaseGraphicsResources(w);
     this->Resources.ReleaseAll(w);
@@ -108,8 +154,8 @@ public:
 };
 
 //------------------------------------------------------------------------------
-bool vtkBloomPass::vtkInternals::Prepare(
-  vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples, bool emitters)
+bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w,
+  int h, int samples, bool emitters, int precision)
 {
   vtkBloomPassResources& res = this->Resources;
   if (res.Context && res.Context != window)
@@ -117,7 +163,8 @@ bool vtkBloomPass::vtkInternals::Prepare(
     self->ReleaseGraphicsResources(res.Context);
   }
   res.Context = window;
-  const unsigned int format = self->FloatPrecision == FLOAT32 ? GL_RGBA32F : GL_RGBA16F;
+  self->LastFloatPrecision = precision;
+  const unsigned int format = precision == FLOAT32 ? GL_RGBA32F : GL_RGBA16F;
   if (format != res.Format)
   {
     this->ReleaseAll(window);
@@ -322,7 +369,7 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
 vtkBloomPass::vtkBloomPass()
   : Parameters(vtkSmartPointer<vtkBloomParameters>::New())
   , Emitters(vtkPropCollection::New())
-  , FloatPrecision(FLOAT16)
+  , FloatPrecision(FLOAT_AUTOMATIC)
   , EmissionSource(EMISSION_SCENE)
   , Quality(QUALITY_EXACT)
   , UseComputeShaders(true)
@@ -366,6 +413,21 @@ void vtkBloomPass::SetParameters(vtkBloomParameters* parameters)
 }
 
 //------------------------------------------------------------------------------
+void vtkBloomPass::SetFloatPrecision(int bits)
+{
+  if (bits != FLOAT_AUTOMATIC && bits != FLOAT16 && bits != FLOAT32)
+  {
+    vtkErrorMacro(<< "FloatPrecision must be 0 (automatic), 16 or 32, not " << bits << ".");
+    return;
+  }
+  if (bits != this->FloatPrecision)
+  {
+    this->FloatPrecision = bits;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
 bool vtkBloomPass::SetPreset(const char* name)
 {
   const std::string error = vtkBloomParameters::CheckPresetName(name);
@@ -391,9 +453,13 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   vtkRenderer* r = s->GetRenderer();
   if (r->GetSelector())
   {
-    // Hardware picking renders ids as colours: they reach the selector untouched.
-    this->DelegatePass->Render(s);
-    this->NumberOfRenderedProps = this->DelegatePass->GetNumberOfRenderedProps();
+    // Hardware picking renders ids as colours, and only the renderer's own path tells the
+    // selector which prop it draws (a pass, this one's delegate included, does not): the ids
+    // reach the selector through that path, untouched.
+    vtkSmartPointer<vtkRenderPass> keep(this); // the renderer may hold the only reference
+    r->SetPass(nullptr);
+    r->DeviceRender();
+    r->SetPass(this);
     return;
   }
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(r->GetRenderWindow());
@@ -422,7 +488,13 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     in.Emission.Plan(this->Emitters, s->GetPropArray(), s->GetPropArrayCount(), this->DelegatePass,
       this->EmitInSceneRender);
   this->LastEmissionInSceneRender = inScene;
-  if (!in.Prepare(this, window, w, h, samples, selective && !inScene))
+  // The renderer's FXAA, applied here, or a pass around this one processes the frame further.
+  const bool fxaa = this->ApplyRendererFXAA && r->GetUseFXAA() && r->GetPass() == this;
+  const bool processed = fxaa || r->GetPass() != this;
+  const int precision = this->FloatPrecision != FLOAT_AUTOMATIC ? this->FloatPrecision
+    : processed                                                 ? FLOAT32
+                                                                : FLOAT16;
+  if (!in.Prepare(this, window, w, h, samples, selective && !inScene, precision))
   {
     return;
   }
@@ -431,9 +503,16 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // annotations (drawn after the composite). A layer blooms over the layers below it.
   in.Runner.ThresholdEmission = !selective || this->ThresholdEmitters;
   in.Runner.CompositeOver = r->Transparent();
-  vtkBloomPassBackground::Plan(res, r, this->BloomBackground);
   this->LastAnnotationsOverBloom =
-    !this->BloomAnnotations && in.Overlay.Detach(this->DelegatePass) > 0;
+    !this->BloomAnnotations && in.Steps.DetachOverlay(this->DelegatePass) > 0;
+  const bool oit =
+    in.Steps.WrapTranslucency(s, this->DelegatePass) == vtkBloomPassSteps::ORDER_INDEPENDENT;
+  vtkRenderPass* processing = vtkBloomPassSteps::FindImageProcessing(this->DelegatePass);
+  if (!this->BloomBackground && !r->Transparent())
+  {
+    in.WarnBackgroundInScene(this, oit, processing);
+  }
+  vtkBloomPassBackground::Plan(res, r, this->BloomBackground || oit || processing);
   if (this->CaptureResult)
   {
     res.Result.Allocate(window, w, h, GL_RGBA32F);
@@ -495,8 +574,15 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     state->PopFramebufferBindings();
     in.Runner.Composite(nullptr, origin, bloom);
   }
-  // 4. The annotations, over the bloom.
-  this->NumberOfRenderedProps += in.Overlay.Render(s, x, y, w, h);
+  // 4. The renderer's FXAA, which VTK applies only where a renderer has no pass: where this
+  // pass is the renderer's, as the renderer applies it, to the frame without its annotations.
+  // Inside other passes (ParaView's own FXAA pass, a tone mapping) FXAA is theirs to apply.
+  if (fxaa)
+  {
+    in.ApplyFXAA(static_cast<vtkOpenGLRenderer*>(r));
+  }
+  // 5. The annotations, over the bloom; the delegate's steps as they were.
+  this->NumberOfRenderedProps += in.Steps.RenderOverlay(s, x, y, w, h);
   in.Report(this);
   this->NumberOfPasses = in.Runner.Passes;
   if (this->ProfilePasses)
@@ -593,7 +679,9 @@ bool vtkBloomPass::ApplyToImage(
   const vtkBloomPassSavedState saved(state);
   vtkInternals& in = *this->Internals;
   vtkBloomPassResources& res = in.Resources;
-  if (!in.Prepare(this, window, w, h, 0, false))
+  // An image is not processed further: automatic precision is the half floats'.
+  if (!in.Prepare(this, window, w, h, 0, false,
+        this->FloatPrecision == FLOAT_AUTOMATIC ? FLOAT16 : this->FloatPrecision))
   {
     return false;
   }
@@ -756,6 +844,7 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FloatPrecision: " << this->FloatPrecision << "\n";
+  os << indent << "LastFloatPrecision: " << this->LastFloatPrecision << "\n";
   os << indent
      << "EmissionSource: " << (this->EmissionSource == EMISSION_EMITTERS ? "Emitters" : "Scene")
      << "\n";

@@ -64,7 +64,12 @@
  * then the renderer's own frame to float rounding. Renderers on higher layers (an orientation
  * marker) render after this one and stay on top; a layered renderer with this pass blooms over
  * the layers below it. While a vtkHardwareSelector renders (picking), the delegate renders
- * directly, without bloom, so the ids reach the selector untouched.
+ * directly, without bloom, so the ids reach the selector untouched. Translucent geometry is
+ * drawn as the renderer draws it without a pass: a vtkRenderStepsPass's plain translucent step
+ * is wrapped, while the scene renders, in depth peeling (the renderer's UseDepthPeeling, its
+ * peels and occlusion ratio) or in order-independent transparency. VTK applies a renderer's
+ * FXAA (UseFXAA) only where the renderer has no pass: where this pass is the renderer's own, it
+ * applies it as the renderer would, after the composite and before the annotations.
  *
  * Chain it before vtkToneMappingPass (tone mapping's delegate is this pass) to bloom in linear
  * HDR and tone-map afterwards. Resources are made on first use and remade when the viewport
@@ -183,16 +188,26 @@ public:
   bool SetPreset(const char* name);
 
   ///@{
-  /// Precision of every target: 16-bit half floats (default) or 32-bit floats.
+  /**
+   * Precision of the scene's targets: FLOAT16 (half floats), FLOAT32, or FLOAT_AUTOMATIC (the
+   * default): half floats where this pass is the renderer's own and composites the final frame,
+   * 32-bit floats where the frame is processed further, by a pass around this one (tone
+   * mapping's curve) or by the renderer's FXAA (its edge search), which would turn a half
+   * float's rounding into steps of several levels. Any other value is refused with an error.
+   * GetLastFloatPrecision() is what the last render used (16 or 32).
+   */
   enum
   {
+    FLOAT_AUTOMATIC = 0,
     FLOAT16 = 16,
     FLOAT32 = 32
   };
-  vtkSetClampMacro(FloatPrecision, int, FLOAT16, FLOAT32);
+  void SetFloatPrecision(int bits);
   vtkGetMacro(FloatPrecision, int);
+  void SetFloatPrecisionToAutomatic() { this->SetFloatPrecision(FLOAT_AUTOMATIC); }
   void SetFloatPrecisionTo16Bit() { this->SetFloatPrecision(FLOAT16); }
   void SetFloatPrecisionTo32Bit() { this->SetFloatPrecision(FLOAT32); }
+  vtkGetMacro(LastFloatPrecision, int);
   ///@}
 
   ///@{
@@ -496,6 +511,7 @@ protected:
   vtkSmartPointer<vtkBloomParameters> Parameters;
   vtkPropCollection* Emitters;
   int FloatPrecision;
+  int LastFloatPrecision = FLOAT16;
   int EmissionSource;
   bool EmitInSceneRender = true;
   bool LastEmissionInSceneRender = false;
@@ -503,6 +519,9 @@ protected:
   bool BloomBackground = false;
   bool BloomAnnotations = false;
   bool LastAnnotationsOverBloom = false;
+  /// Apply the renderer's FXAA where this pass is the renderer's (see the class description);
+  /// off where the application applies it after the render (ParaView's vtkPVBloomPass).
+  bool ApplyRendererFXAA = true;
   int Quality;
   bool UseComputeShaders;
   bool SimulateComputeShaderFailure = false;

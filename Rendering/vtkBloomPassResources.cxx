@@ -95,17 +95,40 @@ bool vtkBloomPassTarget::Read(vtkOpenGLRenderWindow* context, vtkImageData* imag
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassSceneTarget::AllocateWithDepth(
-  vtkOpenGLRenderWindow* context, int width, int height, unsigned int format)
+unsigned int vtkBloomPassDepthFormat(vtkOpenGLRenderWindow* context)
 {
-  if (this->Color && this->Size[0] == width && this->Size[1] == height)
+  // The window's own depth format, as VTK's translucent passes allocate theirs
+  // (vtkOrderIndependentTranslucentPass blits the scene's depth into a texture of that format,
+  // and a blit between depth formats that differ is an error).
+  if (context->GetStencilCapable())
+  {
+    return GL_DEPTH24_STENCIL8;
+  }
+  return context->GetDepthBufferSize() == 32 ? GL_DEPTH_COMPONENT32 : GL_DEPTH_COMPONENT24;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassSceneTarget::AllocateWithDepth(vtkOpenGLRenderWindow* context, int width,
+  int height, unsigned int format, unsigned int depthFormat)
+{
+  if (this->Color && this->Size[0] == width && this->Size[1] == height &&
+    this->DepthFormat == depthFormat)
   {
     return;
   }
   this->Allocate(context, width, height, format);
   this->Depth = vtkSmartPointer<vtkTextureObject>::New();
   this->Depth->SetContext(context);
-  this->Depth->AllocateDepth(width, height, vtkTextureObject::Float32);
+  if (depthFormat == GL_DEPTH24_STENCIL8)
+  {
+    this->Depth->AllocateDepthStencil(width, height);
+  }
+  else
+  {
+    this->Depth->AllocateDepth(width, height,
+      depthFormat == GL_DEPTH_COMPONENT32 ? vtkTextureObject::Fixed32 : vtkTextureObject::Fixed24);
+  }
+  this->DepthFormat = depthFormat;
   context->GetState()->PushFramebufferBindings();
   this->FBO->Bind();
   this->FBO->AddDepthAttachment(this->Depth);
@@ -124,11 +147,11 @@ void vtkBloomPassSceneTarget::ReleaseAll(vtkWindow* window)
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassMultisampleTarget::Allocate(
-  vtkOpenGLRenderWindow* context, int width, int height, unsigned int format, int samples)
+void vtkBloomPassMultisampleTarget::Allocate(vtkOpenGLRenderWindow* context, int width, int height,
+  unsigned int format, unsigned int depthFormat, int samples)
 {
   if (this->FBO && this->Size[0] == width && this->Size[1] == height && this->Samples == samples &&
-    this->Format == format)
+    this->Format == format && this->DepthFormat == depthFormat)
   {
     return;
   }
@@ -139,7 +162,7 @@ void vtkBloomPassMultisampleTarget::Allocate(
   // The depth's format is the scene target's, as a depth resolve requires.
   this->Depth = vtkSmartPointer<vtkRenderbuffer>::New();
   this->Depth->SetContext(context);
-  this->Depth->Create(GL_DEPTH_COMPONENT32F, width, height, samples);
+  this->Depth->Create(depthFormat, width, height, samples);
   this->FBO = vtkSmartPointer<vtkOpenGLFramebufferObject>::New();
   this->FBO->SetContext(context);
   context->GetState()->PushFramebufferBindings();
@@ -152,6 +175,7 @@ void vtkBloomPassMultisampleTarget::Allocate(
   this->Size[1] = height;
   this->Samples = samples;
   this->Format = format;
+  this->DepthFormat = depthFormat;
 }
 
 //------------------------------------------------------------------------------
@@ -192,19 +216,21 @@ void vtkBloomPassMultisampleTarget::Resolve(
 //------------------------------------------------------------------------------
 void vtkBloomPassResources::AllocateScene(int width, int height, bool emitters, int samples)
 {
+  const unsigned int depthFormat = vtkBloomPassDepthFormat(this->Context);
   this->Samples = samples > 1 ? samples : 0;
   if (this->Samples)
   {
-    this->Multisample.Allocate(this->Context, width, height, this->Format, this->Samples);
+    this->Multisample.Allocate(
+      this->Context, width, height, this->Format, depthFormat, this->Samples);
   }
   else
   {
     this->Multisample.Release(this->Context);
   }
-  this->Scene.AllocateWithDepth(this->Context, width, height, this->Format);
+  this->Scene.AllocateWithDepth(this->Context, width, height, this->Format, depthFormat);
   if (emitters)
   {
-    this->Emitter.AllocateWithDepth(this->Context, width, height, this->Format);
+    this->Emitter.AllocateWithDepth(this->Context, width, height, this->Format, depthFormat);
   }
   else
   {

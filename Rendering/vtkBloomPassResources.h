@@ -71,13 +71,18 @@ struct vtkBloomPassTarget
 };
 
 //------------------------------------------------------------------------------
+/// The depth format of the scene's targets: the window's (vtkBloomPassDepthFormat).
+unsigned int vtkBloomPassDepthFormat(vtkOpenGLRenderWindow* context);
+
+//------------------------------------------------------------------------------
 // A float colour target with a depth texture, for the delegate's render.
 struct vtkBloomPassSceneTarget : vtkBloomPassTarget
 {
   vtkSmartPointer<vtkTextureObject> Depth;
+  unsigned int DepthFormat = 0;
 
-  void AllocateWithDepth(
-    vtkOpenGLRenderWindow* context, int width, int height, unsigned int format);
+  void AllocateWithDepth(vtkOpenGLRenderWindow* context, int width, int height, unsigned int format,
+    unsigned int depthFormat);
   void ReleaseAll(vtkWindow* window);
 };
 
@@ -92,10 +97,12 @@ struct vtkBloomPassMultisampleTarget
   int Size[2] = { 0, 0 };
   int Samples = 0;
   unsigned int Format = 0;
+  unsigned int DepthFormat = 0;
 
-  /// Make it at width x height with `samples` samples of `format`, unless it already is.
-  void Allocate(
-    vtkOpenGLRenderWindow* context, int width, int height, unsigned int format, int samples);
+  /// Make it at width x height with `samples` samples of `format` and `depthFormat`, unless
+  /// it already is.
+  void Allocate(vtkOpenGLRenderWindow* context, int width, int height, unsigned int format,
+    unsigned int depthFormat, int samples);
   void Release(vtkWindow* window);
 
   /**

@@ -49,3 +49,19 @@ vtkbloom_add_gtest(TestBloomPassMotion OPENGL
   LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom
     VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonDataModel VTK::CommonCore)
 vtk_module_autoinit(TARGETS TestBloomPassMotion MODULES VTK::RenderingOpenGL2)
+
+# The gallery: the pass at its defaults on the scenes users build (backgrounds, annotations,
+# viewports, layers, widgets, depth peeling, volumes, FXAA, tone mapping, SSAO, picking, ...),
+# each against the same frame without the pass, and one emitter's glow (docs' gallery).
+if (TARGET VTK::InteractionWidgets AND TARGET VTK::RenderingFreeType AND
+    TARGET VTK::RenderingAnnotation)
+  vtkbloom_add_gtest(TestBloomPassGallery OPENGL
+    SOURCES Rendering/TestBloomPassGallery.cxx Support/vtkBloomGallery.cxx
+    LIBRARIES VTKBloom::RenderingBloom VTKBloom::FiltersBloom VTK::InteractionWidgets
+      VTK::InteractionStyle VTK::RenderingAnnotation VTK::RenderingFreeType
+      VTK::RenderingVolumeOpenGL2 VTK::RenderingVolume VTK::ImagingCore VTK::IOImage
+      VTK::FiltersCore VTK::FiltersSources VTK::RenderingOpenGL2 VTK::RenderingCore
+      VTK::CommonDataModel VTK::CommonCore)
+  vtk_module_autoinit(TARGETS TestBloomPassGallery MODULES VTK::RenderingOpenGL2
+    VTK::RenderingVolumeOpenGL2 VTK::RenderingFreeType VTK::InteractionStyle)
+endif ()

@@ -11,7 +11,11 @@
 vtkStandardNewMacro(vtkPVBloomPass);
 
 //------------------------------------------------------------------------------
-vtkPVBloomPass::vtkPVBloomPass() = default;
+vtkPVBloomPass::vtkPVBloomPass()
+{
+  // ParaView's synchronized renderers apply the view's FXAA after the render.
+  this->ApplyRendererFXAA = false;
+}
 
 //------------------------------------------------------------------------------
 vtkPVBloomPass::~vtkPVBloomPass() = default;

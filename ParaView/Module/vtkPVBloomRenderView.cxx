@@ -4,6 +4,7 @@
 #include "vtkIceTSynchronizedRenderers.h"
 #include "vtkMultiProcessController.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenGLFXAAPass.h"
 #include "vtkPVImageBloom.h"
 #include "vtkPVSynchronizedRenderer.h"
 #include "vtkProcessModule.h"
@@ -167,6 +168,23 @@ void vtkPVBloomRenderView::AboutToRenderOnLocalProcess(bool interactive)
   else if (!want && slot == bloom)
   {
     sync->SetImageProcessingPass(nullptr);
+  }
+  this->AvoidSecondFXAA();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVBloomRenderView::AvoidSecondFXAA()
+{
+  // With FXAA on, vtkPVSynchronizedRenderer::SetupPasses wraps a pass in the image-processing
+  // slot in a vtkOpenGLFXAAPass, and vtkSynchronizedRenderers applies FXAA again after the
+  // render (from the renderer's UseFXAA). Without a pass in the slot only the second runs. The
+  // bloom alone in the slot would make the frame anti-aliased twice where the view without it
+  // is anti-aliased once: the renderer renders the bloom directly instead.
+  vtkRenderer* renderer = this->GetRenderer();
+  auto* fxaa = vtkOpenGLFXAAPass::SafeDownCast(renderer->GetPass());
+  if (fxaa && fxaa->GetDelegatePass() == this->BloomPass.GetPointer())
+  {
+    renderer->SetPass(this->BloomPass);
   }
 }
 

@@ -98,6 +98,8 @@ protected:
 
   /// Whether this process shows the image that the bloom must process.
   bool LocalProcessDisplaysImage();
+  /// FXAA once, as in the view without bloom (see the implementation).
+  void AvoidSecondFXAA();
 
   /// On every rank: IceT's render pass and colour format for the coming render.
   void UpdateFloatComposite();

@@ -6,7 +6,8 @@ The scene: a sphere split into pieces over the ranks (each rank renders its own)
 and in front of it three small bright spheres, unlit (ambient 1), on a black background, in a
 "Render View (Bloom)". Colours stay at or below 1, so the image that IceT composites in 8 bits
 under MPI is the scene the serial float target holds; the bright spheres pass the threshold
-(0.6) and bloom over the dim one and the background.
+(0.6, the smoothstep knee: the view's default, the excess knee at 1, would bloom nothing here)
+and bloom over the dim one and the background.
 """
 import os
 import sys
@@ -28,6 +29,7 @@ view.UseColorPaletteForBackground = 0
 view.Background = [0.0, 0.0, 0.0]
 view.UseBloom = use_bloom
 view.BloomPreset = preset
+view.BloomThresholdMode = 0  # the smoothstep knee: these colours stay at or below 1
 view.BloomThreshold = 0.6
 view.BloomKnee = 0.5
 view.BloomStrength = 1.0

@@ -39,7 +39,6 @@ label.FontSize = 20
 label.Color = [0.3, 0.6, 1.0]
 lamp = Sphere(Center=[1.4, 0.62, 0.0], Radius=0.12, ThetaResolution=32, PhiResolution=32)
 glow = Show(lamp, view)
-ColorBy(glow, None)
 glow.Ambient = 1.0
 glow.Diffuse = 0.0
 glow.AmbientColor = [4.0, 2.0, 0.8]

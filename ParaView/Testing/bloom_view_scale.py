@@ -23,6 +23,7 @@ view = CreateView('BloomRenderView')
 view.OrientationAxesVisibility = 0
 view.UseColorPaletteForBackground = 0
 view.Background = [0.0, 0.0, 0.0]
+view.BloomThresholdMode = 0  # the smoothstep knee: these colours stay at or below 1
 view.BloomThreshold = 0.6
 view.BloomKnee = 0.5
 view.BloomStrength = 1.0

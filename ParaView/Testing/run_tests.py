@@ -18,6 +18,11 @@ number of failed checks. Run by scripts/test.sh (the ParaView leg).
 5. HDR under MPI: bloom_view_hdr.py's scene reaches 6 and blooms only above 1. With 3 ranks
    and IceT compositing float colour (the view's BloomCompositeFloatColor) the image equals
    the serial one within 1e-3 relative L2; with IceT's 8-bit composite it does not.
+6. Light, not the frame: bloom_view_light.py's figure (a colour-mapped sphere, a text, the
+   colour legend, the orientation axes) at the view's defaults equals the view with bloom off
+   within one level on the white palette and on a dark background, also with FXAA or tone
+   mapping on; an HDR lamp beside the text glows on both backgrounds, and the text's pixels
+   stay as they are (the annotations are drawn over the bloom).
 """
 import os
 import signal
@@ -280,6 +285,32 @@ if len(hdr) == 4:
     clamped = relative_l2(clamped_hdr, serial_hdr)
     check(clamped > 0.1, 'IceT\'s 8-bit composite loses the HDR bloom (against serial: %.2e)'
           % clamped)
+
+# 6. Light, not the frame: the figure blooms only its lamp, the annotations stay above the glow.
+light = os.path.join(out, 'light')
+status, log = pvbatch(1, 'bloom_view_light.py', light)
+check(status == 0, 'bloom_view_light.py (exit %d)' % status)
+if status == 0:
+    def shots(name):
+        return [load_png(os.path.join(light, '%s-%d.png' % (name, b))) for b in (0, 1)]
+
+    for name in ('white', 'dark', 'fxaa-nolamp', 'tonemap-nolamp'):
+        off, on = shots(name)
+        worst = float(np.abs(on - off).max())
+        check(worst <= 1, '%s figure, nothing above 1: bloom on equals off, max %g levels'
+              % (name, worst))
+    for name in ('lamp-white', 'lamp-dark', 'fxaa', 'tonemap'):
+        off, on = shots(name)
+        glowing = int((np.abs(on - off).max(axis=-1) > 8).sum())
+        check(glowing > 150, '%s: the lamp glows (%d pixels more than 8 levels)' % (name, glowing))
+    # The text's core: where its blue covers the frame without annotations almost wholly.
+    plain, bare = shots('dark')[0], shots('nolabel-dark')[0]
+    core = (plain[..., 2] - bare[..., 2]) >= 245
+    lit, unlit = shots('lamp-dark')[1], shots('dark')[1]
+    worst = float(np.abs(lit[core] - unlit[core]).max()) if core.any() else -1.0
+    check(core.sum() > 20 and 0 <= worst <= 2,
+          'the annotations are drawn over the glow: %d text pixels, max %g levels'
+          % (int(core.sum()), worst))
 
 print('run_tests: %d failure(s)' % failures)
 sys.exit(min(failures, 100))

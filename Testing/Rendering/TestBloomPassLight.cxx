@@ -313,3 +313,27 @@ TEST(RenderingBloomPassLight, AnLDREmitterGlows)
   EXPECT_LE(LargestDifference(figure.Render(true), plain), 1);
   EXPECT_TRUE(figure.W.Bloom->GetLastBloomSkipped());
 }
+
+//------------------------------------------------------------------------------
+// Translucent geometry is drawn as the renderer draws it without a pass (order-independent
+// transparency, or depth peeling), over a light background: two overlapping translucent
+// spheres in front of an opaque one equal the plain frame within one level, both ways.
+TEST(RenderingBloomPassLight, TranslucentGeometryIsThePlainFrame)
+{
+  for (const bool peeling : { false, true })
+  {
+    const double background[3] = { 0.95, 0.95, 0.9 };
+    Figure figure(background, false);
+    const double centres[2][3] = { { 0.2, 0.1, 1.0 }, { 0.7, -0.1, 1.4 } };
+    const double colours[2][3] = { { 0.2, 0.5, 0.9 }, { 0.9, 0.3, 0.2 } };
+    for (int i = 0; i < 2; ++i)
+    {
+      vtkSmartPointer<vtkActor> glass = Sphere(centres[i], 0.6, colours[i]);
+      glass->GetProperty()->SetOpacity(0.4);
+      figure.W.Renderer->AddActor(glass);
+    }
+    figure.W.Renderer->SetUseDepthPeeling(peeling);
+    const std::vector<int> plain = figure.Render(false);
+    EXPECT_LE(LargestDifference(figure.Render(true), plain), 1) << "depth peeling " << peeling;
+  }
+}

@@ -1,0 +1,109 @@
+/**
+ * @file   vtkBloomPassSteps.h
+ * @brief  (private to vtkBloomPass) the steps of the delegate that the pass adjusts while it
+ *         renders: its overlay, drawn over the bloom, and its translucency, drawn as the renderer
+ *         draws it.
+ *
+ * The steps are found through the delegate: the OverlayPass and TranslucentPass of a
+ * vtkRenderStepsPass, or a vtkOverlayPass in a vtkSequencePass, through the delegates of
+ * vtkCameraPass and of image-processing passes (vtkSSAOPass, vtkToneMappingPass, ...).
+ *
+ * Overlay. Annotations are not light: text, scalar bars, corner annotations, legends, logos and
+ * 2D widget representations are the props' overlay, which the delegate draws in its overlay step
+ * (vtkOverlayPass). DetachOverlay() takes that step out before the scene renders, and
+ * RenderOverlay() draws it after the composite, over the bloom, then puts it back. A delegate with
+ * no overlay step of its own (ParaView's, whose annotations a renderer of their own draws above
+ * the bloom) has nothing to detach.
+ *
+ * Translucency. vtkOpenGLRenderer draws translucent geometry through depth peeling
+ * (UseDepthPeeling: dual depth peeling where supported) or order-independent transparency; a
+ * vtkRenderStepsPass draws it with a plain vtkTranslucentPass, which blends in the props' order.
+ * WrapTranslucency() wraps such a plain step as the renderer wraps its own while the scene renders
+ * (with the renderer's peels and occlusion ratio), so that the bloomed frame's translucency is the
+ * frame the renderer draws without a pass. A step the user set up otherwise is left as it is.
+ */
+
+#ifndef vtkBloomPassSteps_h
+#define vtkBloomPassSteps_h
+
+#include "vtkSmartPointer.h" // For the detached steps
+
+#include <vector>
+
+class vtkRenderPass;
+class vtkRenderState;
+class vtkRenderStepsPass;
+class vtkSequencePass;
+class vtkTranslucentPass;
+class vtkWindow;
+
+class vtkBloomPassSteps
+{
+public:
+  vtkBloomPassSteps();
+  ~vtkBloomPassSteps();
+  vtkBloomPassSteps(const vtkBloomPassSteps&) = delete;
+  vtkBloomPassSteps& operator=(const vtkBloomPassSteps&) = delete;
+
+  /// Take the overlay steps out of `delegate`; returns how many were found.
+  int DetachOverlay(vtkRenderPass* delegate);
+
+  /**
+   * Render the detached overlay steps for `s` into the bound framebuffer at the viewport
+   * (x, y, width, height), over what it holds, then put them back. Returns the props rendered.
+   */
+  int RenderOverlay(const vtkRenderState* s, int x, int y, int width, int height);
+
+  /**
+   * Where `s` has translucent geometry, wrap the first plain translucent step of `delegate` in
+   * the renderer's depth peeling or order-independent transparency; returns which (none where
+   * nothing was wrapped). Order-independent transparency's last blend leaves an alpha that is
+   * not the scene's coverage (it multiplies the transmittance by its complement), so a scene
+   * drawn with it cannot be put over its background afterwards.
+   */
+  enum Translucency
+  {
+    NO_TRANSLUCENCY,
+    ORDER_INDEPENDENT,
+    DEPTH_PEELING
+  };
+  Translucency WrapTranslucency(const vtkRenderState* s, vtkRenderPass* delegate);
+
+  /**
+   * The first image-processing pass among the delegate's steps (vtkSSAOPass, vtkToneMappingPass,
+   * ...), or null: it processes the frame, background included, so that the background cannot
+   * be put under the scene afterwards.
+   */
+  static vtkRenderPass* FindImageProcessing(vtkRenderPass* delegate);
+
+  /// Put every detached or wrapped step back.
+  void Restore();
+
+  /// Free the wrappers' textures and framebuffers.
+  void ReleaseGraphicsResources(vtkWindow* window);
+
+private:
+  /// Calls `visit` on each pass reachable from `pass` (with its sequence and index, if any).
+  template <typename Visit>
+  static void Walk(
+    vtkRenderPass* pass, vtkSequencePass* sequence, int index, int depth, const Visit& visit);
+
+  struct Slot
+  {
+    vtkRenderStepsPass* Steps = nullptr; ///< its OverlayPass or TranslucentPass, or
+    vtkSequencePass* Sequence = nullptr; ///< item Index of its passes
+    int Index = -1;
+    vtkSmartPointer<vtkRenderPass> Pass; ///< the original step
+  };
+  std::vector<Slot> Overlays;
+  std::vector<Slot> Translucents;
+  vtkSmartPointer<vtkSequencePass> Empty; ///< stands in for an overlay taken from a sequence
+  /// The renderer's kind of translucency around the first plain translucent step, kept while
+  /// the kind (Peeling: depth peeling, else OIT) and the step stay the same.
+  vtkSmartPointer<vtkRenderPass> Wrapper;
+  vtkRenderPass* Wrapped = nullptr;
+  bool Peeling = false;
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkBloomPassSteps.h

@@ -1,0 +1,1040 @@
+// The gallery: vtkBloomPass at its defaults on the scenes users build (white, gradient and
+// textured backgrounds, lit and colour-mapped surfaces, text, scalar bars, corner annotations,
+// legends, a slider widget, several viewports, layers, an orientation marker, depth peeling and
+// order-independent translucency, a volume, FXAA, tone mapping, SSAO, hardware picking, a
+// resize, glyphs, point sprites, wide lines, a shader replacement, multisampling). Nothing in
+// them is light, so, for every configuration:
+//  (a) the frame with the pass equals the frame without it (the same window with the user's
+//      own pipeline) within one 8-bit level, and no pixel is more than 8 levels off;
+//  (b) the frame with the defaults before lights-only bloom is measured against it (the
+//      "before" figure; asserted above 0 % on white, the bug that was fixed);
+//  (c) one small HDR emitter, placed a few pixels from an annotation, glows in a ring around
+//      its footprint (mean change above 10 levels), stays in its viewport, and leaves the
+//      annotations' opaque pixels unchanged (2 levels) while its glow reaches below them; their
+//      anti-aliased edges let the glow through by no more than their coverage;
+//  (d) on white, the emitter's halo contrasts with the background at least half as much as on
+//      black (an additive glow clipped to white would not show at all).
+// The float scene is checked to hold nothing above 1, and the pass to raise no OpenGL error.
+// Each configuration prints one table line, appends it to $VTKBLOOM_GALLERY_CSV when set, and
+// writes `<configuration>.png` (plain | bloom with the emitter) to $VTKBLOOM_GALLERY_PNG_DIR;
+// $VTKBLOOM_GALLERY_DEBUG_DIR receives plain | after and plain | before.
+#include "vtkBloomGallery.h"
+
+#include "vtkActor.h"
+#include "vtkActorCollection.h"
+#include "vtkAxesActor.h"
+#include "vtkCamera.h"
+#include "vtkColorTransferFunction.h"
+#include "vtkConeSource.h"
+#include "vtkCoordinate.h"
+#include "vtkElevationFilter.h"
+#include "vtkGlyph3DMapper.h"
+#include "vtkHardwareSelector.h"
+#include "vtkImageData.h"
+#include "vtkInformation.h"
+#include "vtkNew.h"
+#include "vtkOrientationMarkerWidget.h"
+#include "vtkPiecewiseFunction.h"
+#include "vtkPointData.h"
+#include "vtkPointGaussianMapper.h"
+#include "vtkPolyDataMapper.h"
+#include "vtkProperty.h"
+#include "vtkProperty2D.h"
+#include "vtkRTAnalyticSource.h"
+#include "vtkRenderStepsPass.h"
+#include "vtkRenderWindowInteractor.h"
+#include "vtkSSAOPass.h"
+#include "vtkSelection.h"
+#include "vtkSelectionNode.h"
+#include "vtkShaderProperty.h"
+#include "vtkSliderRepresentation2D.h"
+#include "vtkSliderWidget.h"
+#include "vtkSmartVolumeMapper.h"
+#include "vtkSphereSource.h"
+#include "vtkTextProperty.h"
+#include "vtkTexture.h"
+#include "vtkToneMappingPass.h"
+#include "vtkUnsignedCharArray.h"
+#include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <limits>
+#include <string>
+
+using namespace vtkBloomGallery;
+
+namespace
+{
+const double Dark[3] = { 0.1, 0.1, 0.12 };
+const double White[3] = { 1.0, 1.0, 1.0 };
+const double Grey[3] = { 0.7, 0.7, 0.7 };
+// Where the delegate's frame cannot be put over its background afterwards (order-independent
+// transparency, an image-processing pass inside the bloom), the pass keeps the background in
+// the frame that blooms and says so: its glow is added to the background, which on white shows
+// nothing. Those configurations are shown over a mid grey, as a user of them would choose.
+const double MidGrey[3] = { 0.45, 0.45, 0.48 };
+const double Copper[3] = { 0.85, 0.5, 0.3 };
+const double Teal[3] = { 0.2, 0.6, 0.65 };
+
+//------------------------------------------------------------------------------
+// Scene helpers.
+
+/// A new scene with one window.
+Scene Start(int width = 320, int height = 240, int samples = 0)
+{
+  Scene scene;
+  scene.Window = MakeWindow(width, height, samples);
+  return scene;
+}
+
+/// A renderer with a solid background, or a gradient where `top` is given (VTK draws
+/// Background at the bottom and Background2 at the top).
+vtkSmartPointer<vtkRenderer> NewRenderer(const double bottom[3], const double* top = nullptr)
+{
+  auto renderer = vtkSmartPointer<vtkRenderer>::New();
+  renderer->SetBackground(bottom[0], bottom[1], bottom[2]);
+  if (top)
+  {
+    renderer->SetBackground2(top[0], top[1], top[2]);
+    renderer->GradientBackgroundOn();
+  }
+  return renderer;
+}
+
+/// The everyday content: a grey sphere and a colour-mapped one, side by side, camera reset.
+void AddSpheres(vtkRenderer* renderer)
+{
+  const double left[3] = { -1.2, 0.0, 0.0 }, right[3] = { 1.2, 0.0, 0.0 };
+  renderer->AddActor(LitSphere(left, 1.0, Grey));
+  renderer->AddActor(ColourMappedSphere(right, 1.0));
+  renderer->ResetCamera();
+}
+
+/// A floor under the spheres, seen from a little above, as a user would turn the camera.
+void AddFloor(vtkRenderer* renderer)
+{
+  const double floor[3] = { 0.95, 0.95, 0.95 };
+  renderer->AddActor(GroundPlane(3.0, -1.0, floor));
+  renderer->ResetCamera();
+  renderer->GetActiveCamera()->Elevation(30.0);
+  renderer->GetActiveCamera()->OrthogonalizeViewUp();
+  renderer->ResetCamera();
+}
+
+/// An annotation prop added to `renderer` and listed as the scene's annotation.
+void Annotate(Scene& scene, vtkRenderer* renderer, vtkSmartPointer<vtkProp> prop)
+{
+  renderer->AddViewProp(prop);
+  scene.Annotations.push_back(prop);
+}
+
+/// The emitter in view `view`, centred at (x, y) in normalized viewport coordinates. The
+/// positions are chosen a few pixels from an annotation, so that the glow reaches below it.
+void Emit(Scene& scene, int view, double x, double y)
+{
+  scene.EmitterView = view;
+  scene.EmitterAt[0] = x;
+  scene.EmitterAt[1] = y;
+}
+
+/// The emitter just above a label at TextLabel(..., 0.03, 0.04, ...) (or the lower left corner
+/// annotation): its edge 5 pixels above the text in a 240 pixel high viewport.
+void EmitAboveLabel(Scene& scene, int view)
+{
+  Emit(scene, view, 0.1, 0.165);
+}
+
+/// A soft light checkerboard, as a textured background.
+vtkSmartPointer<vtkTexture> LightTexture()
+{
+  vtkNew<vtkImageData> image;
+  image->SetDimensions(64, 64, 1);
+  image->AllocateScalars(VTK_UNSIGNED_CHAR, 3);
+  auto* rgb = static_cast<unsigned char*>(image->GetScalarPointer());
+  for (int j = 0; j < 64; ++j)
+  {
+    for (int i = 0; i < 64; ++i, rgb += 3)
+    {
+      const bool odd = ((i / 8) + (j / 8)) % 2 == 1;
+      rgb[0] = odd ? 235 : 210;
+      rgb[1] = odd ? 230 : 215;
+      rgb[2] = odd ? 220 : 225;
+    }
+  }
+  auto texture = vtkSmartPointer<vtkTexture>::New();
+  texture->SetInputData(image);
+  texture->InterpolateOn();
+  return texture;
+}
+
+//------------------------------------------------------------------------------
+// Backgrounds and annotations.
+
+Scene WhiteBackground()
+{
+  Scene scene = Start();
+  auto renderer = NewRenderer(White);
+  AddBloomView(scene, renderer);
+  AddSpheres(renderer);
+  Annotate(scene, renderer, TextLabel("Spheres", 0.03, 0.04, Dark));
+  Annotate(scene, renderer, ScalarBar(Dark));
+  EmitAboveLabel(scene, 0);
+  return scene;
+}
+
+Scene LightGradient()
+{
+  Scene scene = Start();
+  const double bottom[3] = { 0.72, 0.78, 0.88 };
+  auto renderer = NewRenderer(bottom, White);
+  AddBloomView(scene, renderer);
+  AddSpheres(renderer);
+  AddFloor(renderer);
+  Annotate(scene, renderer, CornerText(Dark));
+  EmitAboveLabel(scene, 0); // above "lower left"
+  return scene;
+}
+
+Scene ParaViewGradient()
+{
+  Scene scene = Start();
+  const double bottom[3] = { 0.32, 0.34, 0.43 }, top[3] = { 0.0, 0.0, 0.16 };
+  auto renderer = NewRenderer(bottom, top);
+  AddBloomView(scene, renderer);
+  AddSpheres(renderer);
+  Annotate(scene, renderer, ScalarBar(White));
+  Annotate(scene, renderer, Legend(White));
+  Emit(scene, 0, 0.315, 0.85); // right of the legend
+  return scene;
+}
+
+Scene TexturedBackground()
+{
+  Scene scene = Start();
+  auto renderer = NewRenderer(White);
+  renderer->SetBackgroundTexture(LightTexture());
+  renderer->TexturedBackgroundOn();
+  AddBloomView(scene, renderer);
+  AddSpheres(renderer);
+  Annotate(scene, renderer, TextLabel("Textured", 0.03, 0.04, Dark));
+  EmitAboveLabel(scene, 0);
+  return scene;
+}
+
+Scene BlackBackground()
+{
+  Scene scene = Start();
+  const double black[3] = { 0.0, 0.0, 0.0 };
+  auto renderer = NewRenderer(black);
+  AddBloomView(scene, renderer);
+  AddSpheres(renderer);
+  Annotate(scene, renderer, TextLabel("Spheres", 0.03, 0.04, White));
+  Annotate(scene, renderer, ScalarBar(White));
+  EmitAboveLabel(scene, 0);
+  return scene;
+}
+
+/// A slider widget (its 2D representation), a corner annotation and a legend on light grey.
+Scene AnnotationWidgets()
+{
+  Scene scene = Start();
+  const double light[3] = { 0.9, 0.9, 0.9 };
+  auto renderer = NewRenderer(light);
+  AddBloomView(scene, renderer);
+  AddSpheres(renderer);
+  Annotate(scene, renderer, CornerText(Dark));
+  Annotate(scene, renderer, Legend(Dark));
+  auto slider = vtkSmartPointer<vtkSliderRepresentation2D>::New();
+  slider->SetMinimumValue(0.0);
+  slider->SetMaximumValue(10.0);
+  slider->SetValue(4.0);
+  slider->SetTitleText("Iso value");
+  slider->GetPoint1Coordinate()->SetCoordinateSystemToNormalizedDisplay();
+  slider->GetPoint1Coordinate()->SetValue(0.3, 0.1);
+  slider->GetPoint2Coordinate()->SetCoordinateSystemToNormalizedDisplay();
+  slider->GetPoint2Coordinate()->SetValue(0.7, 0.1);
+  slider->GetTitleProperty()->SetColor(Dark[0], Dark[1], Dark[2]);
+  slider->GetLabelProperty()->SetColor(Dark[0], Dark[1], Dark[2]);
+  slider->GetTubeProperty()->SetColor(0.3, 0.3, 0.35);
+  slider->GetSliderProperty()->SetColor(0.2, 0.4, 0.8);
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  interactor->SetRenderWindow(scene.Window);
+  interactor->Initialize();
+  auto widget = vtkSmartPointer<vtkSliderWidget>::New();
+  widget->SetInteractor(interactor);
+  widget->SetCurrentRenderer(renderer);
+  widget->SetRepresentation(slider);
+  widget->SetAnimationModeToAnimate();
+  widget->EnabledOn();
+  scene.Annotations.push_back(slider);
+  scene.Keep.push_back(widget);
+  scene.Keep.push_back(interactor.GetPointer());
+  Emit(scene, 0, 0.5, 0.19); // above the slider
+  return scene;
+}
+
+//------------------------------------------------------------------------------
+// Several renderers.
+
+/// 2 x 2 viewports, each renderer with its own pass and background; the emitter in one.
+Scene Viewports2x2()
+{
+  Scene scene = Start(480, 360);
+  const double bottom[3] = { 0.72, 0.78, 0.88 }, pvBottom[3] = { 0.32, 0.34, 0.43 },
+               pvTop[3] = { 0.0, 0.0, 0.16 }, black[3] = { 0.0, 0.0, 0.0 };
+  vtkSmartPointer<vtkRenderer> renderers[4] = { NewRenderer(White), NewRenderer(bottom, White),
+    NewRenderer(pvBottom, pvTop), NewRenderer(black) };
+  for (int i = 0; i < 4; ++i)
+  {
+    const double x = 0.5 * (i % 2), y = 0.5 * (i / 2);
+    renderers[i]->SetViewport(x, y, x + 0.5, y + 0.5);
+    AddBloomView(scene, renderers[i]);
+    AddSpheres(renderers[i]);
+    Annotate(scene, renderers[i], TextLabel("view", 0.04, 0.05, i < 2 ? Dark : White));
+  }
+  EmitAboveLabel(scene, 1);
+  return scene;
+}
+
+/// Two layers sharing a camera: layer 1 holds a highlight drawn over layer 0.
+Scene Layers(bool bloom0, bool bloom1, int emitterLayer)
+{
+  Scene scene = Start();
+  scene.Window->SetNumberOfLayers(2);
+  auto below = NewRenderer(White);
+  AddSpheres(below);
+  vtkNew<vtkRenderer> above;
+  above->SetLayer(1);
+  above->SetActiveCamera(below->GetActiveCamera());
+  const double at[3] = { 0.0, -1.1, 0.6 };
+  above->AddActor(LitSphere(at, 0.35, Teal));
+  scene.Window->AddRenderer(below);
+  scene.Window->AddRenderer(above);
+  if (bloom0)
+  {
+    AddBloomView(scene, below);
+  }
+  if (bloom1)
+  {
+    AddBloomView(scene, above);
+  }
+  // What lies on top must stay crisp: layer 1's sphere where layer 0 glows, or the label of
+  // layer 1 (drawn after its own composite) where layer 1 glows.
+  if (emitterLayer == 0)
+  {
+    scene.Annotations.push_back(above->GetActors()->GetLastActor());
+  }
+  if (bloom1)
+  {
+    Annotate(scene, above, TextLabel("layer 1", 0.03, 0.04, Dark));
+  }
+  // The views are layer 0's (where it blooms), then layer 1's.
+  if (emitterLayer == 0)
+  {
+    Emit(scene, 0, 0.585, 0.28); // right of layer 1's sphere
+  }
+  else
+  {
+    EmitAboveLabel(scene, bloom0 ? 1 : 0);
+  }
+  return scene;
+}
+
+/// An orientation marker (a renderer of its own on the layer above) over a bloomed renderer.
+Scene OrientationMarker()
+{
+  Scene scene = Start();
+  const double bottom[3] = { 0.32, 0.34, 0.43 }, top[3] = { 0.0, 0.0, 0.16 };
+  auto renderer = NewRenderer(bottom, top);
+  AddBloomView(scene, renderer);
+  AddSpheres(renderer);
+  vtkNew<vtkRenderWindowInteractor> interactor;
+  interactor->SetRenderWindow(scene.Window);
+  interactor->Initialize();
+  auto axes = vtkSmartPointer<vtkAxesActor>::New();
+  auto marker = vtkSmartPointer<vtkOrientationMarkerWidget>::New();
+  marker->SetOrientationMarker(axes);
+  marker->SetInteractor(interactor);
+  marker->SetViewport(0.0, 0.0, 0.35, 0.35);
+  marker->SetEnabled(1);
+  marker->InteractiveOff();
+  scene.Annotations.push_back(axes);
+  scene.Keep.push_back(marker);
+  scene.Keep.push_back(interactor.GetPointer());
+  Emit(scene, 0, 0.297, 0.235); // right of the axes
+  return scene;
+}
+
+//------------------------------------------------------------------------------
+// Rendering features.
+
+/// Translucent spheres over an opaque floor: depth peeled (with or without multisampling), or
+/// through VTK's default order-independent translucency.
+Scene Translucent(bool peeling, int samples)
+{
+  Scene scene = Start(320, 240, samples);
+  auto renderer = NewRenderer(peeling ? White : MidGrey);
+  renderer->SetUseDepthPeeling(peeling);
+  renderer->SetMaximumNumberOfPeels(8);
+  renderer->SetOcclusionRatio(0.0);
+  AddBloomView(scene, renderer);
+  const double centres[3][3] = { { -1.0, 0.0, 0.0 }, { 0.0, 0.3, 0.4 }, { 1.0, 0.0, 0.0 } };
+  const double* colours[3] = { Copper, Teal, Grey };
+  for (int i = 0; i < 3; ++i)
+  {
+    auto sphere = LitSphere(centres[i], 0.8, colours[i]);
+    sphere->GetProperty()->SetOpacity(0.45);
+    renderer->AddActor(sphere);
+  }
+  AddFloor(renderer);
+  Annotate(
+    scene, renderer, TextLabel(peeling ? "Peeled" : "OIT", 0.03, 0.04, peeling ? Dark : White));
+  EmitAboveLabel(scene, 0);
+  if (!peeling && samples > 0)
+  {
+    scene.MaxLevels = 2.0;
+    scene.MaxLevelsWhy = "VTK blends the translucent layers and their weights into the "
+                         "window's 8-bit samples, rounding each before the resolve; the pass "
+                         "blends and resolves them in float (the edges of the translucent "
+                         "spheres).";
+  }
+  return scene;
+}
+
+/// vtkRTAnalyticSource through vtkSmartVolumeMapper, a cool-to-warm transfer function.
+Scene Volume()
+{
+  Scene scene = Start();
+  const double bottom[3] = { 0.32, 0.34, 0.43 }, top[3] = { 0.0, 0.0, 0.16 };
+  auto renderer = NewRenderer(bottom, top);
+  AddBloomView(scene, renderer);
+  vtkNew<vtkRTAnalyticSource> wavelet;
+  wavelet->SetWholeExtent(-10, 10, -10, 10, -10, 10);
+  vtkNew<vtkSmartVolumeMapper> mapper;
+  mapper->SetInputConnection(wavelet->GetOutputPort());
+  vtkNew<vtkColorTransferFunction> colours;
+  colours->AddRGBPoint(37.0, 0.23, 0.30, 0.75);
+  colours->AddRGBPoint(157.0, 0.87, 0.87, 0.87);
+  colours->AddRGBPoint(277.0, 0.71, 0.02, 0.15);
+  vtkNew<vtkPiecewiseFunction> opacity;
+  opacity->AddPoint(37.0, 0.0);
+  opacity->AddPoint(277.0, 0.6);
+  vtkNew<vtkVolume> volume;
+  volume->SetMapper(mapper);
+  volume->GetProperty()->SetColor(colours);
+  volume->GetProperty()->SetScalarOpacity(opacity);
+  volume->GetProperty()->SetInterpolationTypeToLinear();
+  renderer->AddVolume(volume);
+  renderer->ResetCamera();
+  Annotate(scene, renderer, ScalarBar(White));
+  Emit(scene, 0, 0.83, 0.5); // left of the scalar bar
+  return scene;
+}
+
+/// The renderer's own FXAA, which VTK runs on the 8-bit frame before volumes and annotations.
+Scene FXAA()
+{
+  Scene scene = Start();
+  const double bottom[3] = { 0.72, 0.78, 0.88 };
+  auto renderer = NewRenderer(bottom, White);
+  renderer->UseFXAAOn();
+  AddBloomView(scene, renderer);
+  AddSpheres(renderer);
+  Annotate(scene, renderer, TextLabel("FXAA", 0.03, 0.04, Dark));
+  EmitAboveLabel(scene, 0);
+  return scene;
+}
+
+/// vtkToneMappingPass over the bloom; plain is the user's tone mapping over the steps.
+Scene ToneMapping()
+{
+  Scene scene = Start();
+  const double light[3] = { 0.85, 0.85, 0.85 };
+  auto renderer = NewRenderer(light);
+  View& view = AddBloomView(scene, renderer);
+  auto steps = vtkRenderStepsPass::SafeDownCast(view.Bloom->GetDelegatePass());
+  vtkNew<vtkToneMappingPass> toneMapping;
+  toneMapping->SetToneMappingType(vtkToneMappingPass::GenericFilmic);
+  toneMapping->SetDelegatePass(view.Bloom);
+  renderer->SetPass(toneMapping);
+  vtkSmartPointer<vtkToneMappingPass> tm = toneMapping.GetPointer();
+  vtkSmartPointer<vtkBloomPass> bloom = view.Bloom;
+  vtkSmartPointer<vtkRenderStepsPass> plain = steps;
+  view.Use = [tm, bloom, plain](bool on)
+  { tm->SetDelegatePass(on ? static_cast<vtkRenderPass*>(bloom) : plain.GetPointer()); };
+  AddSpheres(renderer);
+  Annotate(scene, renderer, TextLabel("Tone mapped", 0.03, 0.04, Dark));
+  // The annotations are tone mapped with the frame, after their compositing: what their edges
+  // let through is not linear in their coverage.
+  scene.LinearOverlay = false;
+  EmitAboveLabel(scene, 0);
+  return scene;
+}
+
+/// vtkSSAOPass under the bloom; plain is the user's SSAO alone.
+Scene SSAO()
+{
+  Scene scene = Start();
+  auto renderer = NewRenderer(MidGrey);
+  View& view = AddBloomView(scene, renderer);
+  vtkNew<vtkSSAOPass> ssao;
+  ssao->SetDelegatePass(view.Bloom->GetDelegatePass());
+  ssao->SetRadius(0.5);
+  ssao->SetBias(0.01);
+  ssao->SetKernelSize(32);
+  ssao->BlurOn();
+  view.Bloom->SetDelegatePass(ssao);
+  vtkSmartPointer<vtkSSAOPass> plain = ssao.GetPointer();
+  vtkSmartPointer<vtkBloomPass> bloom = view.Bloom;
+  vtkSmartPointer<vtkRenderer> r = renderer;
+  view.Use = [r, bloom, plain](bool on)
+  { r->SetPass(on ? static_cast<vtkRenderPass*>(bloom) : plain.GetPointer()); };
+  AddSpheres(renderer);
+  AddFloor(renderer);
+  Annotate(scene, renderer, TextLabel("SSAO", 0.03, 0.04, White));
+  EmitAboveLabel(scene, 0);
+  return scene;
+}
+
+/// A vtkHardwareSelector picks the colour-mapped sphere while the pass is on.
+Scene HardwarePicking()
+{
+  Scene scene = Start();
+  auto renderer = NewRenderer(White);
+  AddBloomView(scene, renderer);
+  AddSpheres(renderer);
+  Annotate(scene, renderer, TextLabel("Pick", 0.03, 0.04, Dark));
+  EmitAboveLabel(scene, 0);
+  vtkSmartPointer<vtkProp> expected = renderer->GetActors()->GetLastActor();
+  scene.Prepare = [expected](Scene& s)
+  {
+    vtkRenderer* r = s.Views[0].Renderer;
+    s.Window->Render();
+    ASSERT_EQ(r->GetPass(), s.Views[0].Bloom.GetPointer());
+    r->SetWorldPoint(1.2, 0.0, 0.0, 1.0);
+    r->WorldToDisplay();
+    const double* d = r->GetDisplayPoint();
+    vtkNew<vtkHardwareSelector> selector;
+    selector->SetRenderer(r);
+    selector->SetFieldAssociation(vtkDataObject::FIELD_ASSOCIATION_CELLS);
+    selector->SetArea(static_cast<unsigned int>(d[0]) - 3, static_cast<unsigned int>(d[1]) - 3,
+      static_cast<unsigned int>(d[0]) + 3, static_cast<unsigned int>(d[1]) + 3);
+    vtkSmartPointer<vtkSelection> selection;
+    selection.TakeReference(selector->Select());
+    ASSERT_TRUE(selection != nullptr);
+    ASSERT_EQ(selection->GetNumberOfNodes(), 1u);
+    vtkInformation* node = selection->GetNode(0)->GetProperties();
+    EXPECT_EQ(vtkProp::SafeDownCast(node->Get(vtkSelectionNode::PROP())), expected.GetPointer())
+      << "the selector must pick the colour-mapped sphere through the bloom pass";
+  };
+  return scene;
+}
+
+/// The window is rendered at one size, then resized: the pass remakes its targets.
+Scene ResizedWindow()
+{
+  Scene scene = Start(240, 180);
+  auto renderer = NewRenderer(White);
+  AddBloomView(scene, renderer);
+  AddSpheres(renderer);
+  Annotate(scene, renderer, TextLabel("Resized", 0.03, 0.04, Dark));
+  Annotate(scene, renderer, ScalarBar(Dark));
+  EmitAboveLabel(scene, 0);
+  scene.Prepare = [](Scene& s)
+  {
+    s.Window->Render();
+    s.Window->SetSize(360, 270);
+  };
+  return scene;
+}
+
+//------------------------------------------------------------------------------
+// Geometry that is not plain triangles.
+
+/// The points of a sphere, coloured by elevation: the input of the glyph and point cases.
+vtkSmartPointer<vtkElevationFilter> ElevatedPoints(int resolution)
+{
+  vtkNew<vtkSphereSource> sphere;
+  sphere->SetRadius(1.2);
+  sphere->SetThetaResolution(resolution);
+  sphere->SetPhiResolution(resolution);
+  auto elevation = vtkSmartPointer<vtkElevationFilter>::New();
+  elevation->SetInputConnection(sphere->GetOutputPort());
+  elevation->SetLowPoint(0.0, -1.2, 0.0);
+  elevation->SetHighPoint(0.0, 1.2, 0.0);
+  return elevation;
+}
+
+/// A scene around one actor, on a background, with a label; the emitter near the label.
+Scene AroundActor(vtkActor* actor, const double background[3], const char* label)
+{
+  Scene scene = Start();
+  auto renderer = NewRenderer(background);
+  AddBloomView(scene, renderer);
+  actor->GetProperty()->SetSpecular(0.0);
+  renderer->AddActor(actor);
+  renderer->ResetCamera();
+  Annotate(scene, renderer, TextLabel(label, 0.03, 0.04, Dark));
+  EmitAboveLabel(scene, 0);
+  return scene;
+}
+
+/// Cones oriented along the normals by vtkGlyph3DMapper, colour mapped.
+Scene Glyphs()
+{
+  vtkNew<vtkConeSource> cone;
+  cone->SetResolution(12);
+  vtkNew<vtkGlyph3DMapper> mapper;
+  mapper->SetInputConnection(ElevatedPoints(14)->GetOutputPort());
+  mapper->SetSourceConnection(cone->GetOutputPort());
+  mapper->SetScaleFactor(0.25);
+  mapper->SetOrientationArray("Normals");
+  mapper->OrientOn();
+  mapper->SetScalarRange(0.0, 1.0);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  return AroundActor(actor, White, "Glyphs");
+}
+
+/// Gaussian point sprites (vtkPointGaussianMapper, not emissive: alpha blended).
+Scene PointGaussian()
+{
+  vtkNew<vtkPointGaussianMapper> mapper;
+  mapper->SetInputConnection(ElevatedPoints(24)->GetOutputPort());
+  mapper->SetScaleFactor(0.12);
+  mapper->EmissiveOff();
+  mapper->SetScalarRange(0.0, 1.0);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  const double light[3] = { 0.92, 0.94, 0.97 };
+  Scene scene = AroundActor(actor, light, "Splats");
+  scene.MaxLevels = 3.0;
+  scene.MaxLevelsWhy = "VTK blends the overlapping splats in the window's 8-bit framebuffer, "
+                       "rounding at every layer; the pass blends them in float. Against the "
+                       "same splats blended in a float framebuffer it is within one level.";
+  scene.FloatReference = true;
+  return scene;
+}
+
+/// Points rendered as lit spheres (point sprites of the polydata mapper).
+Scene PointsAsSpheres()
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(ElevatedPoints(18)->GetOutputPort());
+  mapper->SetScalarRange(0.0, 1.0);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetRepresentationToPoints();
+  actor->GetProperty()->SetPointSize(9.0);
+  actor->GetProperty()->RenderPointsAsSpheresOn();
+  return AroundActor(actor, White, "Points");
+}
+
+/// A sphere's wireframe in lines four pixels wide, flat or as tubes.
+Scene WideLines(bool tubes)
+{
+  vtkNew<vtkPolyDataMapper> mapper;
+  mapper->SetInputConnection(ElevatedPoints(16)->GetOutputPort());
+  mapper->SetScalarRange(0.0, 1.0);
+  vtkNew<vtkActor> actor;
+  actor->SetMapper(mapper);
+  actor->GetProperty()->SetRepresentationToWireframe();
+  actor->GetProperty()->SetLineWidth(4.0);
+  actor->GetProperty()->SetRenderLinesAsTubes(tubes);
+  return AroundActor(actor, White, tubes ? "Tubes" : "Lines");
+}
+
+/// A user's fragment shader replacement that tints the colour-mapped sphere.
+Scene ShaderReplacement()
+{
+  Scene scene = Start();
+  const double bottom[3] = { 0.32, 0.34, 0.43 }, top[3] = { 0.0, 0.0, 0.16 };
+  auto renderer = NewRenderer(bottom, top);
+  AddBloomView(scene, renderer);
+  AddSpheres(renderer);
+  vtkActor* tinted = renderer->GetActors()->GetLastActor();
+  tinted->GetShaderProperty()->AddFragmentShaderReplacement("//VTK::Light::Impl", false,
+    "//VTK::Light::Impl\n  fragOutput0.rgb *= vec3(1.0, 0.85, 0.7);\n", false);
+  Annotate(scene, renderer, TextLabel("Tinted", 0.03, 0.04, White));
+  EmitAboveLabel(scene, 0);
+  return scene;
+}
+
+/// A window with 4 samples: the pass renders the scene multisampled too.
+Scene Multisampled()
+{
+  Scene scene = Start(320, 240, 4);
+  auto renderer = NewRenderer(White);
+  AddBloomView(scene, renderer);
+  AddSpheres(renderer);
+  Annotate(scene, renderer, TextLabel("MSAA 4", 0.03, 0.04, Dark));
+  Annotate(scene, renderer, ScalarBar(Dark));
+  EmitAboveLabel(scene, 0);
+  return scene;
+}
+
+//------------------------------------------------------------------------------
+// The gallery's table of configurations.
+
+struct Case
+{
+  const char* Name;
+  Scene (*Build)();
+};
+
+void PrintTo(const Case& c, std::ostream* os)
+{
+  *os << c.Name;
+}
+
+const Case Cases[] = {
+  { "white_background", WhiteBackground },
+  { "light_gradient", LightGradient },
+  { "paraview_gradient", ParaViewGradient },
+  { "textured_background", TexturedBackground },
+  { "black_background", BlackBackground },
+  { "annotation_widgets", AnnotationWidgets },
+  { "viewports_2x2", Viewports2x2 },
+  { "layers_bloom_layer0", [] { return Layers(true, false, 0); } },
+  { "layers_bloom_layer1", [] { return Layers(false, true, 1); } },
+  { "layers_bloom_both", [] { return Layers(true, true, 0); } },
+  { "orientation_marker", OrientationMarker },
+  { "depth_peeling", [] { return Translucent(true, 0); } },
+  { "depth_peeling_msaa4", [] { return Translucent(true, 4); } },
+  { "translucent_oit_msaa4", [] { return Translucent(false, 4); } },
+  { "volume", Volume },
+  { "fxaa", FXAA },
+  { "tone_mapping", ToneMapping },
+  { "ssao", SSAO },
+  { "hardware_picking", HardwarePicking },
+  { "resized_window", ResizedWindow },
+  { "glyphs", Glyphs },
+  { "point_gaussian", PointGaussian },
+  { "points_as_spheres", PointsAsSpheres },
+  { "wide_lines", [] { return WideLines(false); } },
+  { "lines_as_tubes", [] { return WideLines(true); } },
+  { "shader_replacement", ShaderReplacement },
+  { "msaa4", Multisampled },
+};
+
+//------------------------------------------------------------------------------
+// Measuring one configuration.
+
+/// The frames of a configuration (8-bit RGB of the whole window).
+struct Frames
+{
+  Frame After;                  ///< the pass at its defaults
+  Frame Plain;                  ///< the same pipeline without the bloom
+  Frame Before;                 ///< the pass at the defaults before lights-only bloom
+  Frame Bare;                   ///< plain, annotations hidden
+  Frame AfterBare;              ///< the pass, annotations hidden
+  Frame Glow;                   ///< the pass at its defaults, the emitter added
+  Frame PlainGlow;              ///< plain, the emitter added
+  Frame GlowBare;               ///< the pass, the emitter added, annotations hidden
+  std::vector<char> Core;       ///< the annotations' own pixels (> 100 levels over plain)
+  std::vector<double> Coverage; ///< the annotations' coverage (AnnotationCoverage)
+};
+
+/// What the gallery reports and asserts.
+struct Figures
+{
+  double BeforePercent = 0.0; ///< before: % of pixels more than 8 levels from plain
+  double AfterPercent = 0.0;  ///< after: the same
+  double AfterMax = 0.0;      ///< after: the largest difference, in levels
+  double SceneMax = 0.0;      ///< the largest float colour of the scenes that bloomed
+  double GlowRing = 0.0;      ///< mean change in the ring around the emitter, in levels
+  long RingPixels = 0;
+  long FootprintPixels = 0;
+  /// The annotations' core, where they cover all (to one level): max change with the emitter.
+  double Annotations = std::numeric_limits<double>::quiet_NaN();
+  /// The same over every core pixel, anti-aliased edges included (the glow shows through).
+  double AnnotationEdges = std::numeric_limits<double>::quiet_NaN();
+  /// Over every pixel an annotation covers: max of the change beyond (1 - coverage) times the
+  /// change below it (what drawing the annotations over the glow lets through), in levels.
+  double OverExcess = std::numeric_limits<double>::quiet_NaN();
+  double UnderAnnotations = 0.0; ///< max change in the core with the annotations hidden
+  long AnnotationPixels = 0;
+  long OpaquePixels = 0;
+  double OutsideViewport = 0.0; ///< max change outside the emitter's viewport
+  double AfterVsFloat = 0.0;    ///< after against the plain frame in float (FloatReference)
+  int BloomErrors = 0;          ///< OpenGL errors raised by the measured renders with the pass
+  int PlainErrors = 0;          ///< and by those without it (VTK's own, where there are any)
+};
+
+void ShowAnnotations(Scene& scene, bool show)
+{
+  for (auto& prop : scene.Annotations)
+  {
+    prop->SetVisibility(show);
+  }
+}
+
+/// (a), (b) and the annotations' own pixels: the frames without the emitter.
+void RenderWithoutEmitter(Scene& scene, Frames& frames, Figures& figures)
+{
+  UseBloom(scene, true);
+  frames.After = Grab(scene.Window, &figures.BloomErrors);
+  for (View& view : scene.Views)
+  {
+    figures.SceneMax = std::max(figures.SceneMax, SceneMaximum(view.Bloom));
+  }
+  UseBloom(scene, false);
+  frames.Plain = Grab(scene.Window, &figures.PlainErrors);
+  UseOldDefaults(scene, true);
+  UseBloom(scene, true);
+  frames.Before = Grab(scene.Window, &figures.BloomErrors);
+  UseOldDefaults(scene, false);
+  if (!scene.Annotations.empty())
+  {
+    ShowAnnotations(scene, false);
+    UseBloom(scene, false);
+    frames.Bare = Grab(scene.Window, &figures.PlainErrors);
+    UseBloom(scene, true);
+    frames.AfterBare = Grab(scene.Window, &figures.BloomErrors);
+    ShowAnnotations(scene, true);
+    // The annotations' core: where they cover what lies below them by far.
+    frames.Core = DifferenceMask(frames.Plain, frames.Bare, 100.0);
+    figures.AnnotationPixels = Count(frames.Core);
+    frames.Coverage = AnnotationCoverage(scene);
+  }
+  if (scene.FloatReference)
+  {
+    figures.AfterVsFloat = MaxLevels(frames.After, GrabFloatPlain(scene));
+  }
+  figures.AfterPercent = PercentOver(frames.After, frames.Plain, 8.0);
+  figures.AfterMax = MaxLevels(frames.After, frames.Plain);
+  figures.BeforePercent = PercentOver(frames.Before, frames.Plain, 8.0);
+}
+
+/// (c) for the annotations: their opaque core unchanged by the glow, their edges showing it
+/// through no more than their coverage lets them.
+void MeasureAnnotations(const Frames& frames, Figures& figures)
+{
+  std::vector<char> opaque = frames.Core;
+  for (size_t p = 0; p < opaque.size(); ++p)
+  {
+    opaque[p] = opaque[p] && frames.Coverage[p] >= 0.995 ? 1 : 0;
+  }
+  figures.OpaquePixels = Count(opaque);
+  figures.Annotations = MaxOver(frames.Glow, frames.After, opaque);
+  figures.AnnotationEdges = MaxOver(frames.Glow, frames.After, frames.Core);
+  figures.UnderAnnotations = MaxOver(frames.GlowBare, frames.AfterBare, frames.Core);
+  figures.OverExcess = 0.0;
+  for (size_t p = 0; p < opaque.size(); ++p)
+  {
+    if (frames.Coverage[p] > 0.02)
+    {
+      const vtkIdType id = static_cast<vtkIdType>(p);
+      const double change = Difference(frames.Glow, frames.After, id);
+      const double below = Difference(frames.GlowBare, frames.AfterBare, id);
+      figures.OverExcess =
+        std::max(figures.OverExcess, change - (1.0 - frames.Coverage[p]) * below);
+    }
+  }
+}
+
+/// (c): the frames with the emitter, and where it glows.
+void RenderWithEmitter(Scene& scene, Frames& frames, Figures& figures)
+{
+  vtkRenderer* renderer = scene.Views[scene.EmitterView].Renderer;
+  auto emitter = Emitter(renderer, scene.EmitterAt, scene.EmitterPixels, scene.EmitterTowardCamera);
+  renderer->AddActor(emitter);
+  UseBloom(scene, true);
+  frames.Glow = Grab(scene.Window, &figures.BloomErrors);
+  UseBloom(scene, false);
+  frames.PlainGlow = Grab(scene.Window, &figures.PlainErrors);
+  if (!scene.Annotations.empty())
+  {
+    ShowAnnotations(scene, false);
+    UseBloom(scene, true);
+    frames.GlowBare = Grab(scene.Window, &figures.BloomErrors);
+    ShowAnnotations(scene, true);
+  }
+  renderer->RemoveActor(emitter);
+  UseBloom(scene, true);
+
+  int dims[3];
+  frames.After->GetDimensions(dims);
+  const std::vector<char> footprint = DifferenceMask(frames.PlainGlow, frames.Plain, 8.0);
+  const std::vector<char> ring = Ring(footprint, dims[0], dims[1], 2.0, 8.0);
+  figures.FootprintPixels = Count(footprint);
+  figures.RingPixels = Count(ring);
+  figures.GlowRing = MeanOver(frames.Glow, frames.After, ring);
+  figures.OutsideViewport =
+    MaxOver(frames.Glow, frames.After, OutsideViewport(frames.After, renderer));
+  if (!scene.Annotations.empty())
+  {
+    // Unchanged where they are drawn, though the glow reaches below them.
+    MeasureAnnotations(frames, figures);
+  }
+}
+
+/// A figure for the table: "-" where there is none.
+std::string Levels(double value)
+{
+  char text[32];
+  std::snprintf(text, sizeof(text), "%.0f", value);
+  return std::isnan(value) ? std::string("-") : std::string(text);
+}
+
+/// The table line, the CSV line and the PNG of one configuration.
+void Report(const std::string& name, const Frames& frames, const Figures& figures)
+{
+  char line[512];
+  std::snprintf(line, sizeof(line),
+    "[ gallery ] %-20s before %6.2f %% | after %5.2f %% max %2.0f | glow %5.1f | annotations "
+    "opaque %s (%ld px) edges %s over+%s below %3.0f | scene max %.4f | GL errors %d/%d",
+    name.c_str(), figures.BeforePercent, figures.AfterPercent, figures.AfterMax, figures.GlowRing,
+    Levels(figures.Annotations).c_str(), figures.OpaquePixels,
+    Levels(figures.AnnotationEdges).c_str(), Levels(figures.OverExcess).c_str(),
+    figures.UnderAnnotations, figures.SceneMax, figures.BloomErrors, figures.PlainErrors);
+  std::cout << line << std::endl;
+  if (const char* csv = std::getenv("VTKBLOOM_GALLERY_CSV"))
+  {
+    AppendCSV(csv, name,
+      { figures.BeforePercent, figures.AfterPercent, figures.AfterMax, figures.GlowRing,
+        figures.Annotations });
+  }
+  if (const char* dir = std::getenv("VTKBLOOM_GALLERY_PNG_DIR"))
+  {
+    WriteSideBySide(frames.Plain, frames.Glow, std::string(dir) + "/" + name + ".png");
+  }
+  // For diagnosing a difference: plain | after, and plain | before.
+  if (const char* dir = std::getenv("VTKBLOOM_GALLERY_DEBUG_DIR"))
+  {
+    const std::string stem = std::string(dir) + "/" + name;
+    WriteSideBySide(frames.Plain, frames.After, stem + "-plain-after.png");
+    WriteSideBySide(frames.Plain, frames.Before, stem + "-plain-before.png");
+  }
+}
+
+//------------------------------------------------------------------------------
+class RenderingGallery : public testing::TestWithParam<Case>
+{
+};
+
+// (a) nothing is light: the frame is the plain frame; (b) before, measured; (c) one emitter
+// glows and leaves the annotations alone.
+TEST_P(RenderingGallery, NothingIsLightAndAnEmitterGlows)
+{
+  Scene scene = GetParam().Build();
+  scene.Name = GetParam().Name;
+  if (scene.Prepare)
+  {
+    scene.Prepare(scene);
+  }
+  ASSERT_FALSE(HasFatalFailure());
+  Frames frames;
+  Figures figures;
+  RenderWithoutEmitter(scene, frames, figures);
+  RenderWithEmitter(scene, frames, figures);
+  Report(scene.Name, frames, figures);
+
+  if (scene.CheckSceneRange)
+  {
+    EXPECT_GE(figures.SceneMax, 0.0) << "the pass's float scene could not be read";
+    EXPECT_LE(figures.SceneMax, 1.0 + 1e-3) << "the scene must hold nothing above 1";
+  }
+  EXPECT_LE(figures.AfterMax, scene.MaxLevels)
+    << "nothing is light: the pass must leave the frame as it was. " << scene.MaxLevelsWhy;
+  EXPECT_EQ(figures.AfterPercent, 0.0);
+  EXPECT_LE(figures.AfterVsFloat, 1.0) << "against the plain frame in float";
+  // Per frame: the pass may not add to the errors VTK raises without it.
+  const int bloomFrames = scene.Annotations.empty() ? 3 : 5;
+  const int plainFrames = scene.Annotations.empty() ? 2 : 3;
+  EXPECT_LE(figures.BloomErrors * plainFrames, figures.PlainErrors * bloomFrames)
+    << "the pass must raise no OpenGL error of its own";
+  EXPECT_GT(figures.FootprintPixels, 20) << "the emitter must be visible";
+  EXPECT_GT(figures.GlowRing, 10.0) << "the emitter must glow";
+  EXPECT_LE(figures.OutsideViewport, 1.0) << "the glow must stay in its viewport";
+  if (!scene.Annotations.empty())
+  {
+    EXPECT_GT(figures.AnnotationPixels, 20) << "the annotations must be visible";
+    EXPECT_GT(figures.UnderAnnotations, 8.0) << "the emitter must be near enough to the "
+                                                "annotations for its glow to reach them";
+    EXPECT_GT(figures.OpaquePixels, 20) << "the annotations must have opaque pixels";
+    EXPECT_LE(figures.Annotations, 2.0) << "the annotations must be drawn over the glow";
+    // Anti-aliased edges let through what lies below them, (1 - coverage) of it: no more. The
+    // 3 levels are the rounding of the four 8-bit frames and of the coverage.
+    if (scene.LinearOverlay)
+    {
+      EXPECT_LE(figures.OverExcess, 3.0) << "the annotations' edges must be over the glow";
+    }
+  }
+  if (scene.Name == "white_background")
+  {
+    EXPECT_GT(figures.BeforePercent, 0.0) << "before, the white background bloomed";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Rendering, RenderingGallery, testing::ValuesIn(Cases),
+  [](const testing::TestParamInfo<Case>& info) { return std::string(info.param.Name); });
+}
+
+//------------------------------------------------------------------------------
+// (d) The halo over a light background. An additive glow over white is clipped to white and
+// vanishes; the default composite puts the glow over the background (premultiplied over), so
+// that it shows as colour. The contrast is the mean largest-channel |out - background| over
+// the ring around the emitter, where the plain frame is background.
+namespace
+{
+Frame Flat(vtkImageData* like, const double rgb[3])
+{
+  auto flat = Frame::New();
+  flat->DeepCopy(like);
+  vtkDataArray* scalars = flat->GetPointData()->GetScalars();
+  for (vtkIdType p = 0; p < scalars->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      scalars->SetComponent(p, c, std::round(255.0 * rgb[c]));
+    }
+  }
+  return flat;
+}
+
+double HaloContrast(const double background[3], bool oldDefaults)
+{
+  Scene scene = WhiteBackground();
+  vtkRenderer* renderer = scene.Views[0].Renderer;
+  renderer->SetBackground(background[0], background[1], background[2]);
+  UseOldDefaults(scene, oldDefaults);
+  UseBloom(scene, false);
+  Frame plain = Grab(scene.Window);
+  renderer->AddActor(
+    Emitter(renderer, scene.EmitterAt, scene.EmitterPixels, scene.EmitterTowardCamera));
+  UseBloom(scene, true);
+  Frame glow = Grab(scene.Window);
+  UseBloom(scene, false);
+  Frame plainGlow = Grab(scene.Window);
+  int dims[3];
+  plain->GetDimensions(dims);
+  Frame flat = Flat(plain, background);
+  std::vector<char> ring = Ring(DifferenceMask(plainGlow, plain, 8.0), dims[0], dims[1], 2.0, 8.0);
+  const std::vector<char> notBackground = DifferenceMask(plain, flat, 1.0);
+  for (size_t p = 0; p < ring.size(); ++p)
+  {
+    ring[p] = ring[p] && !notBackground[p] ? 1 : 0;
+  }
+  EXPECT_GT(Count(ring), 20) << "the ring must lie over the background";
+  return MeanOver(glow, flat, ring);
+}
+}
+
+TEST(RenderingGalleryHalo, ShowsOverWhiteAsOverBlack)
+{
+  const double black[3] = { 0.0, 0.0, 0.0 };
+  const double onWhite = HaloContrast(White, false);
+  const double onBlack = HaloContrast(black, false);
+  const double additiveOnWhite = HaloContrast(White, true);
+  std::cout << "[ gallery ] halo contrast (levels): on white " << onWhite << ", on black "
+            << onBlack << ", on white before (additive, background bloomed) " << additiveOnWhite
+            << std::endl;
+  EXPECT_GT(onBlack, 10.0);
+  EXPECT_GE(onWhite, 0.5 * onBlack);
+}
