@@ -35,13 +35,16 @@ vtkbloom_add_gtest(TestBloomPassRegion OPENGL
 vtk_module_autoinit(TARGETS TestBloomPassRegion MODULES VTK::RenderingOpenGL2)
 
 # Light, not the frame (issue 35): the defaults, the background, the annotations, emitters.
-vtkbloom_add_gtest(TestBloomPassLight OPENGL
-  SOURCES Rendering/TestBloomPassLight.cxx
-  LIBRARIES VTKBloom::RenderingBloom VTKBloom::FiltersBloom VTK::RenderingFreeType
-    VTK::RenderingOpenGL2 VTK::RenderingCore VTK::FiltersSources VTK::CommonDataModel
-    VTK::CommonCore)
-vtk_module_autoinit(TARGETS TestBloomPassLight
-  MODULES VTK::RenderingOpenGL2 VTK::RenderingFreeType)
+# Text needs VTK's FreeType module (every VTK the scripts build or install has it).
+if (TARGET VTK::RenderingFreeType)
+  vtkbloom_add_gtest(TestBloomPassLight OPENGL
+    SOURCES Rendering/TestBloomPassLight.cxx
+    LIBRARIES VTKBloom::RenderingBloom VTKBloom::FiltersBloom VTK::RenderingFreeType
+      VTK::RenderingOpenGL2 VTK::RenderingCore VTK::FiltersSources VTK::CommonDataModel
+      VTK::CommonCore)
+  vtk_module_autoinit(TARGETS TestBloomPassLight
+    MODULES VTK::RenderingOpenGL2 VTK::RenderingFreeType)
+endif ()
 
 # Temporal stability: the bloom's energy under sub-pixel camera motion against the scene's.
 vtkbloom_add_gtest(TestBloomPassMotion OPENGL

@@ -54,6 +54,9 @@ modules=(
   RenderingOpenGL2 InteractionStyle TestingRendering
   # `vtk-bloom render FILE`: VTK's XML and legacy readers, contours, volumes.
   IOXML IOLegacy FiltersCore FiltersGeometry RenderingVolume RenderingVolumeOpenGL2
+  # The scenes users build (TestBloomPassLight, TestBloomPassGallery): text, scalar bars,
+  # corner annotations, legends, 2D widgets.
+  RenderingFreeType RenderingAnnotation InteractionWidgets
 )
 if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "${modules[*]}" ]; then
   log "using the cached $name VTK in $prefix"
@@ -89,7 +92,7 @@ fi
 packages=(
   dpkg-dev build-essential cmake ninja-build ccache "${gl_packages[@]}"
   zlib1g-dev libpng-dev libjpeg-dev libtiff-dev libdouble-conversion-dev liblz4-dev
-  liblzma-dev libutfcpp-dev libexpat1-dev libeigen3-dev
+  liblzma-dev libutfcpp-dev libexpat1-dev libeigen3-dev libfreetype-dev
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -127,7 +130,7 @@ cp "$root/scripts/lib/osmesa-vtkglew.cmake" "$vtkglew/CMakeLists.txt"
 module_args=()
 for m in "${modules[@]}"; do module_args+=("-DVTK_MODULE_ENABLE_VTK_$m=YES"); done
 external_args=()
-for lib in zlib png jpeg tiff doubleconversion lz4 lzma utf8 expat eigen; do
+for lib in zlib png jpeg tiff doubleconversion lz4 lzma utf8 expat eigen freetype; do
   external_args+=("-DVTK_MODULE_USE_EXTERNAL_VTK_$lib=ON")
 done
 launcher=()
