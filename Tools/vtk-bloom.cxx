@@ -69,8 +69,8 @@ image: HDR bloom (vtkImageBloom). A preset is applied first; options then overri
                          (default: the fused float32 FAST chain, within 1e-5 relative L2 of it)
   --threshold T          bright-pass threshold, >= 0
   --knee K               soft knee relative to the threshold, 0..1
-  --mode M               excess (default: only what exceeds the threshold glows, by its
-                         excess) | smoothstep | quadratic | hard | per-channel | none
+  --mode M               excess | smoothstep | quadratic | hard | per-channel | none
+                         (excess: only what exceeds the threshold glows, by its excess)
   --clamp-luminance L    firefly guard: largest luminance let through
   --strength S           bloom strength (additive) or blend factor (lerp), 0..1000
   --composite C          additive | lerp

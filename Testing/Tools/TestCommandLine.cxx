@@ -24,7 +24,9 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <iterator>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -84,6 +86,35 @@ TEST(CommandLine, OptionsOverrideThePreset)
   const Pixels in = ReadEXR(input), p1 = ReadEXR(a), p0 = ReadEXR(b);
   EXPECT_EQ(RelativeL2(p0, in), 0.0);
   EXPECT_GT(RelativeL2(p1, in), 1e-3);
+}
+
+// --mode excess: nothing at or below the threshold glows (the input is written unchanged when
+// no channel exceeds it), and what exceeds it does.
+TEST(CommandLine, ExcessModeBloomsOnlyWhatExceedsTheThreshold)
+{
+  VTKBLOOM_REQUIRE_DATA(input, "presets/example_161x91.exr");
+  const Pixels in = ReadEXR(input);
+  float brightest = 0.0f;
+  for (size_t i = 0; i < in.Rgba.size(); ++i)
+  {
+    brightest = i % 4 == 3 ? brightest : std::max(brightest, in.Rgba[i]);
+  }
+  auto threshold = [](float t)
+  {
+    std::ostringstream os;
+    os << std::setprecision(9) << t; // the float exactly
+    return os.str();
+  };
+  const std::string above = vtkBloomTest::OutputPath("cli-excess-above.exr");
+  const std::string below = vtkBloomTest::OutputPath("cli-excess-below.exr");
+  ASSERT_EQ(RunTool("image --mode excess --threshold " + threshold(brightest) + " " + Quote(input) +
+              " " + Quote(above)),
+    0);
+  ASSERT_EQ(RunTool("image --mode excess --threshold " + threshold(0.5f * brightest) + " " +
+              Quote(input) + " " + Quote(below)),
+    0);
+  EXPECT_EQ(RelativeL2(ReadEXR(above), in), 0.0);
+  EXPECT_GT(RelativeL2(ReadEXR(below), in), 1e-4);
 }
 
 // Sum of colour channel c of an image.
