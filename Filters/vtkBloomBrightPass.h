@@ -62,6 +62,68 @@ inline void vtkBloomMapNonFinite(Real* colour, double ceiling)
   }
 }
 
+///@{
+/**
+ * std::max and std::min written as selects, as the standard defines them (the first argument
+ * unless the comparison says otherwise), so that they also take GCC vector types lane by lane.
+ */
+template <typename Real>
+inline Real vtkBloomMax(Real a, Real b)
+{
+  return a < b ? b : a;
+}
+template <typename Real>
+inline Real vtkBloomMin(Real a, Real b)
+{
+  return b < a ? b : a;
+}
+///@}
+
+/**
+ * The factor by which vtkBloomBrightPass scales a finite colour of luminance `lum` and largest
+ * value `brightness` that the firefly guard left as it is, for the modes that scale the colour
+ * (SMOOTHSTEP_KNEE, QUADRATIC_KNEE, HARD_LUMINANCE, EXCESS_KNEE; 1 for the others). It is never
+ * negative, so the bright pass keeps a value > 0 exactly when brightness * factor > 0.
+ * Real is float or double, or a GCC vector of them (every lane computed as a scalar would be:
+ * the formulas are written with selects, which for a scalar evaluate only the branch taken).
+ */
+template <typename Real, typename Scalar>
+inline Real vtkBloomBrightPassFactor(Real lum, Real brightness, int mode, Scalar t0, Scalar k)
+{
+  const Real zero = Real{}, one = zero + Scalar(1);
+  switch (mode)
+  {
+    case vtkImageBloomThreshold::SMOOTHSTEP_KNEE:
+      if (k > Scalar(0))
+      {
+        const Scalar edge0 = t0 - k, edge1 = t0 + k;
+        const Real t = vtkBloomMin(vtkBloomMax((lum - edge0) / (edge1 - edge0), zero), one);
+        return t * t * (Scalar(3) - Scalar(2) * t);
+      }
+      // knee 0 is the step lum >= T; smoothstep(T, T, x) is undefined.
+      return lum >= t0 ? one : zero;
+    case vtkImageBloomThreshold::QUADRATIC_KNEE:
+    {
+      Real q = vtkBloomMin(vtkBloomMax(brightness - t0 + k, zero), zero + Scalar(2) * k);
+      q = q * q / (Scalar(4) * k + Scalar(1e-5));
+      return vtkBloomMax(q, brightness - t0) / vtkBloomMax(brightness, zero + Scalar(1e-5));
+    }
+    case vtkImageBloomThreshold::HARD_LUMINANCE:
+      return lum > t0 ? one : zero;
+    case vtkImageBloomThreshold::EXCESS_KNEE:
+    {
+      // The excess over T, its first 2k softened by a quadratic that starts at T.
+      const Real excess = brightness - t0;
+      const Real soft = excess > zero
+        ? (excess < Scalar(2) * k ? excess * excess / (Scalar(4) * k) : excess - k)
+        : zero;
+      return brightness > zero ? soft / brightness : zero;
+    }
+    default:
+      return one;
+  }
+}
+
 /**
  * vtkImageBloomThreshold::BrightPass for N colour values (see that class for the formulas), in
  * the arithmetic of Real: double for the reference chain and the filters, float for the fused
@@ -83,7 +145,7 @@ inline void vtkBloomBrightPass(
         static_cast<Real>(vtkBloomKernels::LuminanceB) * colour[2]
                   : colour[0];
   };
-  const Real zero(0), one(1);
+  const Real zero(0);
   const Real clampLum = static_cast<Real>(clampLuminance);
   const Real t0 = static_cast<Real>(threshold);
 
@@ -99,64 +161,21 @@ inline void vtkBloomBrightPass(
     lum = luminance();
   }
 
-  const Real k = static_cast<Real>(threshold * knee);
-  Real factor = one;
-  switch (mode)
+  if (mode == vtkImageBloomThreshold::PER_CHANNEL)
   {
-    case vtkImageBloomThreshold::SMOOTHSTEP_KNEE:
-      if (k > zero)
-      {
-        const Real edge0 = t0 - k, edge1 = t0 + k;
-        const Real t = std::min(std::max((lum - edge0) / (edge1 - edge0), zero), one);
-        factor = t * t * (Real(3) - Real(2) * t);
-      }
-      else
-      {
-        // knee 0 is the step lum >= T; smoothstep(T, T, x) is undefined.
-        factor = lum >= t0 ? one : zero;
-      }
-      break;
-    case vtkImageBloomThreshold::QUADRATIC_KNEE:
+    for (int c = 0; c < N; ++c)
     {
-      Real brightness = colour[0];
-      for (int c = 1; c < N; ++c)
-      {
-        brightness = std::max(brightness, colour[c]);
-      }
-      Real q = std::min(std::max(brightness - t0 + k, zero), Real(2) * k);
-      q = q * q / (Real(4) * k + Real(1e-5));
-      factor = std::max(q, brightness - t0) / std::max(brightness, Real(1e-5));
-      break;
+      colour[c] = std::max(colour[c] - t0, zero);
     }
-    case vtkImageBloomThreshold::HARD_LUMINANCE:
-      factor = lum > t0 ? one : zero;
-      break;
-    case vtkImageBloomThreshold::EXCESS_KNEE:
-    {
-      Real brightness = colour[0];
-      for (int c = 1; c < N; ++c)
-      {
-        brightness = std::max(brightness, colour[c]);
-      }
-      // The excess over T, its first 2k softened by a quadratic that starts at T.
-      const Real excess = brightness - t0;
-      Real soft = zero;
-      if (excess > zero)
-      {
-        soft = excess < Real(2) * k ? excess * excess / (Real(4) * k) : excess - k;
-      }
-      factor = brightness > zero ? soft / brightness : zero;
-      break;
-    }
-    case vtkImageBloomThreshold::PER_CHANNEL:
-      for (int c = 0; c < N; ++c)
-      {
-        colour[c] = std::max(colour[c] - t0, zero);
-      }
-      return;
-    default:
-      break;
+    return;
   }
+  Real brightness = colour[0];
+  for (int c = 1; c < N; ++c)
+  {
+    brightness = std::max(brightness, colour[c]);
+  }
+  const Real factor = vtkBloomBrightPassFactor<Real, Real>(
+    lum, brightness, mode, t0, static_cast<Real>(threshold * knee));
   for (int c = 0; c < N; ++c)
   {
     colour[c] = std::max(colour[c] * factor, zero);

@@ -8,6 +8,7 @@
 #include "vtkBloomKernels.h"
 #include "vtkBloomLinearOperator.h"
 #include "vtkBloomParameters.h"
+#include "vtkBloomStatisticsRows.h"
 #include "vtkDataArray.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"

@@ -56,8 +56,9 @@
 #ifndef vtkBloomFastChain_h
 #define vtkBloomFastChain_h
 
-#include "vtkSmartPointer.h" // For the recycled output array
-#include "vtkType.h"         // For vtkMTimeType
+#include "vtkBloomStatistics.h" // For the statistics measured in the composite
+#include "vtkSmartPointer.h"    // For the recycled output array
+#include "vtkType.h"            // For vtkMTimeType
 
 class vtkBloomChain;
 class vtkBloomParameters;
@@ -106,6 +107,8 @@ struct vtkBloomFastChainParameters
   int ConvolutionMode = 0;
   /// When Chain was built: the FFT convolutions of its blurs are kept until it changes.
   vtkMTimeType ChainTime = 0;
+  /// Measure vtkImageBloom's statistics in the composite (vtkBloomStatisticsRows.h).
+  bool MeasureStatistics = false;
 };
 
 /// What the last Execute did (for tests and the benchmark).
@@ -118,6 +121,10 @@ struct vtkBloomFastChainReport
   size_t WorkspaceBytes = 0;      ///< bytes of intermediate buffers held
   bool UsedAVX2 = false;          ///< the passes compiled for AVX2 ran
   int FFTBlurs = 0;               ///< level blur axes run through the FFT
+  /// The statistics below were measured (MeasureStatistics, and the composite ran).
+  bool StatisticsMeasured = false;
+  vtkBloomLuminanceStatistics StatisticsIn, StatisticsOut;
+  vtkIdType BrightPixels = 0;
 };
 
 class vtkBloomFastChain

@@ -141,9 +141,12 @@ void CompositeSpans(const T* src, const float* bloom, int b0, int b1, const floa
 }
 
 // Pass 4: out = keep * in + (S t bloom + 0) over outExt, the bloom row interpolated per row.
+// With `statistics`, each input row and the output row written from it are measured there,
+// while they are in the cache (float images; a row copied from the input is measured once).
 template <typename T, int NC, int C, bool Sanitize>
 void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inExt[6], bool clean,
-  const std::vector<Source>& sources, const float st[3], T* out, const int outExt[6])
+  const std::vector<Source>& sources, const float st[3], T* out, const int outExt[6],
+  vtkBloomStatisticsRows* statistics)
 {
   constexpr int L = Lanes<C>();
   const int inW = inExt[1] - inExt[0] + 1;
@@ -186,6 +189,8 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
     std::vector<RowRing<L>> Rings;
   };
   vtkSMPThreadLocal<Scratch> scratch;
+  vtkSMPThreadLocal<vtkBloomStatisticsRows> measured(
+    statistics ? *statistics : vtkBloomStatisticsRows());
   vtkSMPTools::For(outExt[2], outExt[3] + 1, RowGrain(outExt[3] - outExt[2] + 1),
     [&](int begin, int end)
     {
@@ -242,14 +247,31 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
         const T* src = in + (static_cast<size_t>(j) * inW + x0) * NC;
         T* dst = out + static_cast<size_t>(y - outExt[2]) * outW * NC;
         const size_t n = static_cast<size_t>(outW) * NC;
-        if (stream && copyIsComposite && b0 >= b1)
+        const bool copy = copyIsComposite && b0 >= b1; // dst is src, bit for bit
+        if (stream && copy)
         {
           StreamCopy(reinterpret_cast<float*>(dst), reinterpret_cast<const float*>(src), n);
-          continue;
         }
-        CompositeSpans<T, NC, C, Sanitize>(src, bloom.data() + static_cast<size_t>(x0) * L, b0 - x0,
-          b1 - x0, stL, stFlat.data(), colour.data(), keep, clean, outW, dst);
+        else
+        {
+          CompositeSpans<T, NC, C, Sanitize>(src, bloom.data() + static_cast<size_t>(x0) * L,
+            b0 - x0, b1 - x0, stL, stFlat.data(), colour.data(), keep, clean, outW, dst);
+        }
+        if constexpr (std::is_same<T, float>::value)
+        {
+          if (statistics)
+          {
+            measured.Local().AddRow(src, copy ? nullptr : dst, outW, NC);
+          }
+        }
       }
       StoreFence();
     });
+  if (statistics)
+  {
+    for (const vtkBloomStatisticsRows& m : measured)
+    {
+      statistics->Merge(m);
+    }
+  }
 }

@@ -527,12 +527,26 @@ void Run(const vtkBloomFastChainParameters& p, vtkImageData* input, const int ou
   vtkDataArray* scalars = OutputScalars(ws, inScalars, nc, tuples);
   output->GetPointData()->SetScalars(scalars);
   T* out = static_cast<T*>(scalars->GetVoidPointer(0));
+  std::unique_ptr<vtkBloomStatisticsRows> statistics;
+  if (p.MeasureStatistics && std::is_same<T, float>::value)
+  {
+    statistics.reset(
+      new vtkBloomStatisticsRows(p.ThresholdMode, p.Threshold, p.Knee, p.ClampLuminance));
+  }
   WithComponents<C>(nc,
     [&](auto components)
     {
       constexpr int NC = decltype(components)::value;
       p.SanitizeNonFinite
-        ? Composite<T, NC, C, true>(p, in, inExt, clean, sources, st, out, outExt)
-        : Composite<T, NC, C, false>(p, in, inExt, clean, sources, st, out, outExt);
+        ? Composite<T, NC, C, true>(p, in, inExt, clean, sources, st, out, outExt, statistics.get())
+        : Composite<T, NC, C, false>(
+            p, in, inExt, clean, sources, st, out, outExt, statistics.get());
     });
+  if (statistics)
+  {
+    report.StatisticsMeasured = true;
+    report.StatisticsIn = statistics->In();
+    report.StatisticsOut = statistics->Out();
+    report.BrightPixels = statistics->BrightPixels();
+  }
 }

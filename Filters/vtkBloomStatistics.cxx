@@ -1,6 +1,7 @@
 #include "vtkBloomStatistics.h"
 
 #include "vtkBloomBrightPass.h"
+#include "vtkBloomExactSum.h"
 #include "vtkBloomKernels.h"
 #include "vtkImageBloomThreshold.h"
 #include "vtkImageData.h"
@@ -26,183 +27,49 @@ double PixelLuminance(const T* v, int nc)
                  : static_cast<double>(v[0]);
 }
 
-// The exact sum of doubles, rounded once to nearest (ties to even): Neal's small
-// superaccumulator (R. M. Neal, "Fast exact summation using small and large superaccumulators",
-// arXiv:1505.05571, 2015). Every finite double is m 2^(p - 1074) with an integer m < 2^53 and
-// 0 <= p < 2046; it is added, with its sign, as three 32-bit pieces into 64-bit chunks that hold
-// the bits of weight 2^(32 k - 1074). A chunk absorbs 2^31 additions before it could overflow,
-// and Normalize() carries every chunk into the next, so nothing is ever rounded: cancellation
-// loses nothing (an image whose values cancel sums to 0, and one changed pixel shows in the sum
-// exactly) and the result does not depend on the order of additions. Non-finite values are
-// summed apart and make the result non-finite.
-class ExactSum
+// L of the n pixels of a row (nc components) into `out`, and `peak` raised to their maximum
+// (NaN is ignored). The component count is a constant in each loop, so the loops vectorize.
+template <int NC, typename T>
+void RowLuminances(const T* __restrict row, int n, double* __restrict out, double& peak)
 {
-public:
-  void Add(double x)
+  double p = peak;
+  for (int i = 0; i < n; ++i)
   {
-    std::uint64_t bits;
-    std::memcpy(&bits, &x, sizeof(bits));
-    const int biased = static_cast<int>((bits >> 52) & 0x7FF);
-    if (biased == 0x7FF)
-    {
-      this->Special += x;
-      return;
-    }
-    std::uint64_t m = bits & ((std::uint64_t(1) << 52) - 1);
-    int p = 0; // subnormals and zero: m 2^-1074
-    if (biased != 0)
-    {
-      m |= std::uint64_t(1) << 52;
-      p = biased - 1;
-    }
-    const int k = p >> 5, r = p & 31;
-    // The bits of m 2^r (at most 84): 0-31, 32-63, 64 and above.
-    const std::int64_t low = static_cast<std::int64_t>((m << r) & 0xFFFFFFFFu);
-    const std::int64_t middle = static_cast<std::int64_t>((m >> (32 - r)) & 0xFFFFFFFFu);
-    const std::int64_t high = static_cast<std::int64_t>((m >> 32) >> (32 - r));
-    if (bits >> 63)
-    {
-      this->Chunks[k] -= low;
-      this->Chunks[k + 1] -= middle;
-      this->Chunks[k + 2] -= high;
-    }
-    else
-    {
-      this->Chunks[k] += low;
-      this->Chunks[k + 1] += middle;
-      this->Chunks[k + 2] += high;
-    }
+    const double l = PixelLuminance(row + static_cast<size_t>(i) * NC, NC);
+    out[i] = l;
+    p = l > p ? l : p;
   }
+  peak = p;
+}
 
-  /// Add another sum; `other` must be normalized (Normalize()).
-  void Add(const ExactSum& other)
-  {
-    for (int i = 0; i < NumberOfChunks; ++i)
-    {
-      this->Chunks[i] += other.Chunks[i];
-    }
-    this->Special += other.Special;
-    this->Normalize();
-  }
-
-  /// Carry every chunk into the next: chunks 0..n-2 in [0, 2^32), the last one signed.
-  void Normalize()
-  {
-    for (int i = 0; i + 1 < NumberOfChunks; ++i)
-    {
-      const std::int64_t low = this->Chunks[i] & 0xFFFFFFFF;
-      this->Chunks[i + 1] += (this->Chunks[i] - low) / 4294967296LL; // exact
-      this->Chunks[i] = low;
-    }
-  }
-
-  double Get() const
-  {
-    if (this->Special != 0.0) // Inf, -Inf or NaN
-    {
-      return this->Special;
-    }
-    ExactSum n = *this;
-    n.Normalize();
-    const bool negative = n.Chunks[NumberOfChunks - 1] < 0;
-    if (negative)
-    {
-      for (std::int64_t& c : n.Chunks)
-      {
-        c = -c;
-      }
-      n.Normalize();
-    }
-    // N = sum of Chunks[i] 2^(32 i), now non-negative with every chunk in [0, 2^32).
-    int t = NumberOfChunks - 1;
-    while (t >= 0 && n.Chunks[t] == 0)
-    {
-      --t;
-    }
-    if (t < 0)
-    {
-      return 0.0;
-    }
-    auto chunk = [&n](int i) { return i >= 0 ? static_cast<std::uint64_t>(n.Chunks[i]) : 0u; };
-    double result;
-    if (t <= 1 && chunk(1) < (std::uint64_t(1) << 21))
-    {
-      // N < 2^53: N 2^-1074 is a double (subnormal or small normal), exactly.
-      result = std::ldexp(static_cast<double>((chunk(1) << 32) | chunk(0)), -1074);
-    }
-    else
-    {
-      // The window of chunks t, t-1, t-2 holds 64 + b bits, b the bit length of chunk t;
-      // keep the top 53, round to nearest even with the bits below and every lower chunk.
-      const std::uint64_t top = (chunk(t) << 32) | chunk(t - 1), bottom = chunk(t - 2);
-      int b = 0;
-      while ((chunk(t) >> b) != 0)
-      {
-        ++b;
-      }
-      bool sticky = false;
-      for (int i = 0; i < t - 2; ++i)
-      {
-        sticky = sticky || n.Chunks[i] != 0;
-      }
-      const int drop = b + 11; // 12..43 bits of the window below the 53 kept
-      std::uint64_t mantissa, rest, half;
-      if (drop >= 32)
-      {
-        mantissa = top >> (drop - 32);
-        rest = ((top & ((std::uint64_t(1) << (drop - 32)) - 1)) << 32) | bottom;
-      }
-      else
-      {
-        mantissa = (top << (32 - drop)) | (bottom >> drop);
-        rest = bottom & ((std::uint64_t(1) << drop) - 1);
-      }
-      half = std::uint64_t(1) << (drop - 1);
-      if (rest > half || (rest == half && (sticky || (mantissa & 1))))
-      {
-        ++mantissa; // 2^53 is still exact in a double
-      }
-      result = std::ldexp(static_cast<double>(mantissa), drop + 32 * (t - 2) - 1074);
-    }
-    return negative ? -result : result;
-  }
-
-private:
-  // Chunk k holds bits of weight 2^(32 k - 1074); the largest double reaches chunk 65, and the
-  // rest is room for carries.
-  static constexpr int NumberOfChunks = 68;
-  std::int64_t Chunks[NumberOfChunks] = {};
-  double Special = 0.0;
-};
-
-// Add a row's luminances to `energy` (normalized after each row, so that a chunk never takes
-// more than one row of additions) and raise `peak` to their maximum. Even and odd pixels go to
-// two sums, added at the end of the row, so that consecutive additions, which often touch the
-// same chunks, do not wait on each other; the sum is exact either way.
 template <typename T>
-void MeasureRow(const T* row, int n, int nc, ExactSum& energy, double& peak)
+void RowLuminances(const T* row, int n, int nc, double* out, double& peak)
 {
-  ExactSum odd;
-  double peakOdd = peak;
-  int i = 0;
-  for (; i + 1 < n; i += 2)
+  switch (nc)
   {
-    const double a = PixelLuminance(row + static_cast<size_t>(i) * nc, nc);
-    const double b = PixelLuminance(row + static_cast<size_t>(i + 1) * nc, nc);
-    energy.Add(a);
-    odd.Add(b);
-    peak = a > peak ? a : peak; // NaN is ignored
-    peakOdd = b > peakOdd ? b : peakOdd;
+    case 1:
+      RowLuminances<1>(row, n, out, peak);
+      break;
+    case 2:
+      RowLuminances<2>(row, n, out, peak);
+      break;
+    case 3:
+      RowLuminances<3>(row, n, out, peak);
+      break;
+    default:
+      RowLuminances<4>(row, n, out, peak);
+      break;
   }
-  if (i < n)
-  {
-    const double a = PixelLuminance(row + static_cast<size_t>(i) * nc, nc);
-    energy.Add(a);
-    peak = a > peak ? a : peak;
-  }
-  peak = peakOdd > peak ? peakOdd : peak;
-  odd.Normalize();
-  energy.Add(odd); // normalizes
+}
+
+// Add a row's luminances to `energy` and raise `peak` to their maximum; `scratch` holds them.
+template <typename T>
+void MeasureRow(
+  const T* row, int n, int nc, vtkBloomExactSum& energy, double& peak, std::vector<double>& scratch)
+{
+  scratch.resize(static_cast<size_t>(n));
+  RowLuminances(row, n, nc, scratch.data(), peak);
+  energy.AddRow(scratch.data(), n);
 }
 
 template <int Colours, int Mode, typename T>
@@ -294,22 +161,25 @@ vtkBloomLuminanceStatistics vtkBloomMeasureLuminance(vtkImageData* image, const 
   const int nc = image->GetNumberOfScalarComponents();
   const bool isFloat = image->GetScalarType() == VTK_FLOAT;
   // One exact sum per thread: exact sums do not depend on how the rows are shared out.
-  vtkSMPThreadLocal<ExactSum> energies;
+  vtkSMPThreadLocal<vtkBloomExactSum> energies;
   vtkSMPThreadLocal<double> peaks(-std::numeric_limits<double>::infinity());
+  vtkSMPThreadLocal<std::vector<double>> scratch;
   ForEachRow(image, extent,
     [&](vtkIdType, void* row)
     {
       if (isFloat)
       {
-        MeasureRow(static_cast<const float*>(row), n, nc, energies.Local(), peaks.Local());
+        MeasureRow(
+          static_cast<const float*>(row), n, nc, energies.Local(), peaks.Local(), scratch.Local());
       }
       else
       {
-        MeasureRow(static_cast<const double*>(row), n, nc, energies.Local(), peaks.Local());
+        MeasureRow(
+          static_cast<const double*>(row), n, nc, energies.Local(), peaks.Local(), scratch.Local());
       }
     });
-  ExactSum total;
-  for (const ExactSum& energy : energies)
+  vtkBloomExactSum total;
+  for (const vtkBloomExactSum& energy : energies)
   {
     total.Add(energy);
   }

@@ -158,9 +158,11 @@ int vtkImageBloom::RequestData(
   const int height = inExt[3] - inExt[2] + 1;
   this->UpdateChain(width, height);
   int levelsUsed = 0;
-  if (this->ExecutionMode == FAST && this->ExecuteFast(input, outInfo, output, levelsUsed))
+  bool measured = false;
+  if (this->ExecutionMode == FAST &&
+    this->ExecuteFast(input, outInfo, output, levelsUsed, measured))
   {
-    this->ComputeOutputStatistics(input, output, levelsUsed);
+    this->ComputeOutputStatistics(input, output, levelsUsed, measured);
     this->UpdateProgress(1.0);
     return 1;
   }
@@ -183,8 +185,8 @@ int vtkImageBloom::RequestData(
   {
     this->UpsampleStep(levels, width, height, bloom); // 4. up and accumulate
   }
-  this->Composite(input, bright ? &bloom : nullptr, output); // 5. composite
-  this->ComputeOutputStatistics(input, output, levelsUsed);  // 6. statistics
+  this->Composite(input, bright ? &bloom : nullptr, output);       // 5. composite
+  this->ComputeOutputStatistics(input, output, levelsUsed, false); // 6. statistics
   this->UpdateProgress(1.0);
   return 1;
 }
@@ -236,8 +238,8 @@ void vtkImageBloom::UpdateChain(int width, int height)
 }
 
 //------------------------------------------------------------------------------
-bool vtkImageBloom::ExecuteFast(
-  vtkImageData* input, vtkInformation* outInfo, vtkImageData* output, int& levelsUsed)
+bool vtkImageBloom::ExecuteFast(vtkImageData* input, vtkInformation* outInfo, vtkImageData* output,
+  int& levelsUsed, bool& measured)
 {
   int inExt[6];
   input->GetExtent(inExt);
@@ -247,6 +249,7 @@ bool vtkImageBloom::ExecuteFast(
   p.Set(this->Parameters, this->Chain, width, height);
   p.UseAVX2 = this->UseAVX2;
   p.ChainTime = this->ChainTime.GetMTime();
+  p.MeasureStatistics = this->ComputeStatistics;
   if (!vtkBloomFastChain::Supports(p, input))
   {
     return false;
@@ -267,6 +270,15 @@ bool vtkImageBloom::ExecuteFast(
   this->LastWorkspaceBytes = static_cast<vtkIdType>(report.WorkspaceBytes);
   this->LastRunUsedAVX2 = report.UsedAVX2;
   this->LastFFTBlurs = report.FFTBlurs;
+  measured = report.StatisticsMeasured;
+  if (measured)
+  {
+    this->EnergyIn = report.StatisticsIn.Energy;
+    this->EnergyOut = report.StatisticsOut.Energy;
+    this->PeakLuminanceIn = report.StatisticsIn.Peak;
+    this->PeakLuminanceOut = report.StatisticsOut.Peak;
+    this->NumberOfBrightPixels = report.BrightPixels;
+  }
   return true;
 }
 
@@ -283,7 +295,7 @@ void vtkImageBloom::ResetStatistics()
 
 //------------------------------------------------------------------------------
 void vtkImageBloom::ComputeOutputStatistics(
-  vtkImageData* input, vtkImageData* output, int levelsUsed)
+  vtkImageData* input, vtkImageData* output, int levelsUsed, bool measured)
 {
   // The executive initializes the output (field data included) before every execution, so
   // with statistics off there is nothing stale to remove.
@@ -291,18 +303,25 @@ void vtkImageBloom::ComputeOutputStatistics(
   {
     return;
   }
-  // Over the output extent: the input there is what the output piece was composited from.
-  int ext[6];
-  output->GetExtent(ext);
-  const vtkBloomLuminanceStatistics in = vtkBloomMeasureLuminance(input, ext);
-  const vtkBloomLuminanceStatistics out = vtkBloomMeasureLuminance(output, ext);
-  this->EnergyIn = in.Energy;
-  this->EnergyOut = out.Energy;
-  this->PeakLuminanceIn = in.Peak;
-  this->PeakLuminanceOut = out.Peak;
-  this->NumberOfBrightPixels = vtkBloomCountBrightPixels(input, ext,
-    this->Parameters->GetThresholdMode(), this->Parameters->GetThreshold(),
-    this->Parameters->GetKnee(), this->Parameters->GetClampLuminance());
+  if (!measured)
+  {
+    // Over the output extent: the input there is what the output piece was composited from.
+    // An output that shares the input's scalars (the pass-through) is measured once.
+    int ext[6];
+    output->GetExtent(ext);
+    const vtkBloomLuminanceStatistics in = vtkBloomMeasureLuminance(input, ext);
+    const bool shared =
+      output->GetPointData()->GetScalars() == input->GetPointData()->GetScalars() &&
+      std::equal(ext, ext + 6, input->GetExtent());
+    const vtkBloomLuminanceStatistics out = shared ? in : vtkBloomMeasureLuminance(output, ext);
+    this->EnergyIn = in.Energy;
+    this->EnergyOut = out.Energy;
+    this->PeakLuminanceIn = in.Peak;
+    this->PeakLuminanceOut = out.Peak;
+    this->NumberOfBrightPixels = vtkBloomCountBrightPixels(input, ext,
+      this->Parameters->GetThresholdMode(), this->Parameters->GetThreshold(),
+      this->Parameters->GetKnee(), this->Parameters->GetClampLuminance());
+  }
   this->NumberOfLevelsUsed = levelsUsed;
 
   vtkFieldData* fd = output->GetFieldData();

@@ -428,14 +428,15 @@ protected:
    * The steps of RequestData. CheckInput: vtkErrorMacro and false for input the filter cannot
    * use. UpdateChain: rebuild the operators when a parameter or the size changed.
    * ExecuteFast: the fused float32 chain, false when it does not apply (see the class
-   * description), with the number of levels it used. The REFERENCE chain, in double: ThresholdStep
+   * description), with the number of levels it used and, in `measured`, whether its composite
+   * measured the statistics (then already set). The REFERENCE chain, in double: ThresholdStep
    * (the bright pass at the start level into levels[0]; false, with levelsUsed, when there is
    * nothing to bloom), DownsampleStep, BlurStep and UpsampleStep (up and accumulate into `bloom`).
    */
   bool CheckInput(vtkImageData* input);
   void UpdateChain(int width, int height);
-  bool ExecuteFast(
-    vtkImageData* input, vtkInformation* outInfo, vtkImageData* output, int& levelsUsed);
+  bool ExecuteFast(vtkImageData* input, vtkInformation* outInfo, vtkImageData* output,
+    int& levelsUsed, bool& measured);
   bool ThresholdStep(vtkImageData* input, std::vector<vtkBloomBuffer>& levels, int& levelsUsed);
   void DownsampleStep(std::vector<vtkBloomBuffer>& levels);
   void BlurStep(std::vector<vtkBloomBuffer>& levels);
@@ -462,8 +463,12 @@ protected:
   /// Zero every statistic.
   void ResetStatistics();
 
-  /// Measure the statistics over the output's extent and attach them to its field data.
-  void ComputeOutputStatistics(vtkImageData* input, vtkImageData* output, int levelsUsed);
+  /**
+   * Measure the statistics over the output's extent (unless the chain has, `measured`) and
+   * attach them to its field data.
+   */
+  void ComputeOutputStatistics(
+    vtkImageData* input, vtkImageData* output, int levelsUsed, bool measured);
 
   vtkSmartPointer<vtkBloomParameters> Parameters;
   bool ComputeStatistics;

@@ -159,7 +159,7 @@ int vtkImageBloom::ExecutePSF(vtkImageData* input, vtkInformation* outInfo, vtkI
   }
   this->UpdateProgress(0.8);
   this->Composite(input, skip ? nullptr : &bloom, output);
-  this->ComputeOutputStatistics(input, output, 0);
+  this->ComputeOutputStatistics(input, output, 0, false);
   this->UpdateProgress(1.0);
   return 1;
 }

@@ -15,3 +15,9 @@ foreach (test IN ITEMS TestNumericsGaussian TestNumericsHardCases)
     LIBRARIES vtkbloom_hardcases vtkbloom_reference VTKBloom::FiltersBloom VTKBloom::IOOpenEXR
       OpenEXR::OpenEXR VTK::CommonExecutionModel VTK::CommonDataModel VTK::CommonCore)
 endforeach ()
+
+# The exact summation behind the energy statistics, compiled in (it is internal to the module).
+vtkbloom_add_gtest(TestNumericsExactSum
+  SOURCES "${CMAKE_CURRENT_LIST_DIR}/Numerics/TestNumericsExactSum.cxx"
+    "${CMAKE_SOURCE_DIR}/Filters/vtkBloomExactSum.cxx")
+target_include_directories(TestNumericsExactSum PRIVATE "${CMAKE_SOURCE_DIR}/Filters")

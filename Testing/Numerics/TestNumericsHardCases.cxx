@@ -430,3 +430,69 @@ TEST(NumericsHardCases, ThresholdEdgeAndNegativeInput)
     }
   }
 }
+
+// FAST measures the statistics in its composite, four pixels at a time (vtkBloomStatisticsRows);
+// REFERENCE measures them in passes of their own. Over hostile inputs (NaN, +-Inf, fireflies
+// above the clamp, negative and subnormal values, every component count, widths that leave a
+// remainder of 1-3 pixels), every threshold mode, knee 0 and a bloom that covers part of the
+// frame, the input side (EnergyIn, PeakLuminanceIn, NumberOfBrightPixels) is the same bit for
+// bit, and FAST's output side equals the separate passes run over FAST's output.
+TEST(NumericsHardCases, StatisticsInTheCompositeEqualSeparatePasses)
+{
+  const float inf = std::numeric_limits<float>::infinity();
+  const float specials[] = { std::numeric_limits<float>::quiet_NaN(), inf, -inf, 1e30f, -3.0f,
+    1e-40f, 0.95f, 1.0f, 1.05f, 2.5f };
+  int checked = 0;
+  for (int nc = 1; nc <= 4; ++nc)
+  {
+    for (int width : { 37, 66, 131 })
+    {
+      const int height = 23;
+      auto input = vtkSmartPointer<vtkImageData>::New();
+      input->SetDimensions(width, height, 1);
+      input->AllocateScalars(VTK_FLOAT, nc);
+      float* p = static_cast<float*>(input->GetScalarPointer());
+      for (vtkIdType i = 0; i < static_cast<vtkIdType>(width) * height * nc; ++i)
+      {
+        // A dim field, a lamp in one corner, and the special values scattered.
+        const vtkIdType pixel = i / nc, x = pixel % width, y = pixel / width;
+        p[i] = 0.3f * static_cast<float>((i * 7919) % 101) / 101.0f;
+        p[i] = x < 6 && y < 5 ? 3.0f + static_cast<float>(i % 5) : p[i];
+        p[i] = i % 29 == 0 ? specials[(i / 29) % 10] : p[i];
+      }
+      for (int mode = 0; mode <= 5; ++mode)
+      {
+        for (double knee : { 0.0, 0.5 })
+        {
+          vtkNew<vtkImageBloom> fast, reference, output;
+          for (vtkImageBloom* b : { fast.Get(), reference.Get() })
+          {
+            b->SetThresholdMode(mode);
+            b->SetThreshold(0.9);
+            b->SetKnee(knee);
+            b->GetParameters()->SetClampLuminance(20.0);
+            b->SetInputData(input);
+          }
+          reference->SetExecutionMode(vtkImageBloom::REFERENCE);
+          fast->Update();
+          reference->Update();
+          ASSERT_TRUE(fast->GetLastRunWasFast());
+          const std::string what =
+            "nc " + std::to_string(nc) + ", width " + std::to_string(width) + ", mode " +
+            std::to_string(mode) + ", knee " + std::to_string(knee);
+          auto same = [](double a, double b) { return a == b || (a != a && b != b); };
+          EXPECT_TRUE(same(fast->GetEnergyIn(), reference->GetEnergyIn())) << what;
+          EXPECT_EQ(fast->GetPeakLuminanceIn(), reference->GetPeakLuminanceIn()) << what;
+          EXPECT_EQ(fast->GetNumberOfBrightPixels(), reference->GetNumberOfBrightPixels()) << what;
+          output->SetExecutionMode(vtkImageBloom::REFERENCE);
+          output->SetInputData(fast->GetOutput());
+          output->Update();
+          EXPECT_TRUE(same(fast->GetEnergyOut(), output->GetEnergyIn())) << what;
+          EXPECT_EQ(fast->GetPeakLuminanceOut(), output->GetPeakLuminanceIn()) << what;
+          ++checked;
+        }
+      }
+    }
+  }
+  EXPECT_EQ(checked, 4 * 3 * 6 * 2);
+}

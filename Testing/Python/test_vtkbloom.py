@@ -2,6 +2,7 @@
 """Tests of the vtkbloom Python package: parameters, presets, errors, numpy round trips and
 the bloom statistics, checked against independent numpy computations."""
 
+import math
 import os
 import tempfile
 import unittest
@@ -231,6 +232,44 @@ class Statistics(unittest.TestCase):
         self.assertGreater(bloom.GetNumberOfBrightPixels(), 0)
         self.assertEqual(bloom.GetNumberOfLevelsUsed(), 5)
         self.assertGreater(bloom.GetEnergyOut(), bloom.GetEnergyIn())
+
+    def test_energies_are_exact_sums(self):
+        # The energies are the exact sums of the pixels' luminances, rounded once: math.fsum
+        # (exact, correctly rounded) of L computed in float64 in the filter's order,
+        # (0.2126 R + 0.7152 G) + 0.0722 B, to the last bit. Each row holds pixels p and -p
+        # (whose luminances cancel exactly) and a few values 1e-20 to 1e-30, so any rounding
+        # before the end shows; rows are longer than 2048 pixels; most rows are copied by the
+        # additive composite (only one lamp blooms), and a lerp composites every row.
+        rng = np.random.default_rng(11)
+        h, pairs, small = 120, 1200, 100
+        rows = []
+        for y in range(h):
+            p = np.where(rng.uniform(size=(pairs, 3)) < 0.5, -1.0, 1.0) * rng.uniform(
+                0.01, 0.3, size=(pairs, 3))
+            if y == h - 3:
+                p[0] = 500.0  # a lamp (its negative is dark)
+            t = np.where(rng.uniform(size=(small, 3)) < 0.5, -1.0, 1.0) * 10.0 ** rng.uniform(
+                -30.0, -20.0, size=(small, 3))
+            rows.append(rng.permutation(np.concatenate([p, -p, t])))
+        rgb = np.stack(rows)
+        scene = np.concatenate([rgb, np.ones(rgb.shape[:2] + (1,))], axis=2).astype(np.float32)
+
+        def luminance(a):
+            a = a.astype(np.float64)
+            return (0.2126 * a[..., 0] + 0.7152 * a[..., 1]) + 0.0722 * a[..., 2]
+
+        for preset in ("webgpu-market", "mip-atlas"):
+            bloom = self.bloom(scene, preset)
+            out = array_from_image(bloom.GetOutput())
+            lum_in, lum_out = luminance(scene), luminance(out)
+            self.assertEqual(bloom.GetEnergyIn(), math.fsum(lum_in.ravel()), preset)
+            self.assertEqual(bloom.GetEnergyOut(), math.fsum(lum_out.ravel()), preset)
+            self.assertEqual(bloom.GetPeakLuminanceIn(), lum_in.max(), preset)
+            self.assertEqual(bloom.GetPeakLuminanceOut(), lum_out.max(), preset)
+            self.assertNotEqual(bloom.GetEnergyOut(), bloom.GetEnergyIn(), preset)
+        self.assertLess(abs(bloom.GetEnergyIn()), 1e-18)  # only the small values are left
+        # webgpu-market's smoothstep knee reaches down to 0.4: only the lamp is bright.
+        self.assertEqual(self.bloom(scene).GetNumberOfBrightPixels(), 1)
 
     def test_statistics_are_field_data(self):
         bloom = self.bloom(hdr_scene(), "mip-atlas")

@@ -1,0 +1,149 @@
+// vtkBloomExactSum, the exact summation behind vtkImageBloom's energies: the fast row path
+// (fixed point in a window below each block's largest exponent) against the one-by-one
+// superaccumulator, and both against sums whose exact value is known.
+
+#include "vtkBloomExactSum.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <random>
+#include <vector>
+
+namespace
+{
+double OneByOne(const std::vector<double>& v)
+{
+  vtkBloomExactSum s;
+  for (double x : v)
+  {
+    s.Add(x);
+  }
+  return s.Get();
+}
+
+double ByRow(const std::vector<double>& v)
+{
+  vtkBloomExactSum s;
+  s.AddRow(v.data(), static_cast<int>(v.size()));
+  return s.Get();
+}
+
+// Bit-for-bit equality (NaN equals NaN, -0 differs from +0).
+bool Same(double a, double b)
+{
+  return std::memcmp(&a, &b, sizeof(a)) == 0 || (std::isnan(a) && std::isnan(b));
+}
+
+// Values of one kind: uniform [0, 1); signed over 200 binades; signed over the whole finite
+// range, subnormals included; random finite bit patterns; small subnormals only; near the
+// largest double; a near-cancelling mix (x and -x with one tiny leftover).
+std::vector<double> Values(int kind, int n, std::mt19937_64& g)
+{
+  std::vector<double> v(n);
+  for (double& x : v)
+  {
+    const double r = std::ldexp(static_cast<double>(g() >> 11), -53);
+    const double sign = (g() & 1) ? -1.0 : 1.0;
+    switch (kind)
+    {
+      case 0:
+        x = r;
+        break;
+      case 1:
+        x = sign * std::ldexp(r, static_cast<int>(g() % 200) - 100);
+        break;
+      case 2:
+        x = sign * std::ldexp(r, static_cast<int>(g() % 2100) - 1074);
+        break;
+      case 3:
+      {
+        const std::uint64_t bits = g();
+        std::memcpy(&x, &bits, sizeof(x));
+        x = std::isfinite(x) ? x : 0.0;
+        break;
+      }
+      case 4:
+        x = sign * std::ldexp(static_cast<double>(g() % 1000), -1074);
+        break;
+      default:
+        x = sign * std::numeric_limits<double>::max() * r;
+        break;
+    }
+  }
+  return v;
+}
+}
+
+// The row path gives the one-by-one sum to the last bit, for every kind of value and for
+// lengths around the 2048-value blocks.
+TEST(NumericsExactSum, RowsEqualOneByOne)
+{
+  std::mt19937_64 g(42);
+  const int lengths[] = { 1, 2, 7, 2047, 2048, 2049, 4096, 4097, 6000 };
+  for (int kind = 0; kind < 6; ++kind)
+  {
+    for (int n : lengths)
+    {
+      for (int trial = 0; trial < 4; ++trial)
+      {
+        const std::vector<double> v = Values(kind, n, g);
+        const double a = OneByOne(v), b = ByRow(v);
+        EXPECT_TRUE(Same(a, b)) << "kind " << kind << ", n " << n << ": " << a << " vs " << b;
+      }
+    }
+  }
+}
+
+// Sums whose value is known exactly, where any rounding before the end shows.
+TEST(NumericsExactSum, KnownSums)
+{
+  const double tiny = std::ldexp(1.0, -53), big = std::numeric_limits<double>::max();
+  // 1 + 2^-53 + 2^-53 is 1 + 2^-52 (left to right in double gives 1).
+  EXPECT_EQ(ByRow({ 1.0, tiny, tiny }), 1.0 + 2.0 * tiny);
+  // 1 + 2^-53 is a tie: to even, 1; the least bit of anything below breaks it upwards.
+  EXPECT_EQ(ByRow({ 1.0, tiny }), 1.0);
+  EXPECT_EQ(ByRow({ 1.0, tiny, std::ldexp(1.0, -1074) }), 1.0 + 2.0 * tiny);
+  // Cancellation across the whole range leaves the small term alone.
+  EXPECT_EQ(ByRow({ big, 1e-300, -big, big, -big, 3.0 }), 3.0 + 1e-300);
+  // 3000 of the smallest subnormal.
+  EXPECT_EQ(ByRow(std::vector<double>(3000, std::ldexp(1.0, -1074))), std::ldexp(3000.0, -1074));
+  // Overflow rounds to infinity; non-finite values make the sum non-finite.
+  EXPECT_EQ(ByRow(std::vector<double>(5000, big)), std::numeric_limits<double>::infinity());
+  const double inf = std::numeric_limits<double>::infinity();
+  EXPECT_EQ(ByRow({ 1.0, inf, 2.0 }), inf);
+  EXPECT_TRUE(std::isnan(ByRow({ inf, -inf })));
+  EXPECT_TRUE(std::isnan(ByRow({ 1.0, std::nan("") })));
+  // A shuffled row of x and -x pairs sums to +0 exactly.
+  std::mt19937_64 g(5);
+  std::vector<double> pairs = Values(2, 3001, g);
+  const size_t half = pairs.size();
+  for (size_t i = 0; i < half; ++i)
+  {
+    pairs.push_back(-pairs[i]);
+  }
+  std::shuffle(pairs.begin(), pairs.end(), g);
+  EXPECT_TRUE(Same(ByRow(pairs), 0.0));
+}
+
+// Sums of parts added in any grouping (threads each summing some rows) give the same bits.
+TEST(NumericsExactSum, MergingIsExact)
+{
+  std::mt19937_64 g(9);
+  const std::vector<double> v = Values(1, 10000, g);
+  vtkBloomExactSum parts[3], total;
+  for (size_t i = 0; i < v.size(); i += 700)
+  {
+    const int n = static_cast<int>(std::min<size_t>(700, v.size() - i));
+    parts[(i / 700) % 3].AddRow(v.data() + i, n);
+  }
+  for (const vtkBloomExactSum& p : parts)
+  {
+    total.Add(p);
+  }
+  EXPECT_TRUE(Same(total.Get(), OneByOne(v)));
+}
