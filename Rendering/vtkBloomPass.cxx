@@ -50,6 +50,31 @@ void vtkBloomPassDecodeEmission(vtkImageData* image, bool emission)
     rgba[3] = emission ? weight : std::min(rgba[3], 1.0f);
   }
 }
+
+// The renderer's FXAA switched off while the delegate renders the scene. A delegate that
+// renders through the renderer (vtkDefaultPass, ParaView's vtkPVDefaultPass) ends in
+// vtkOpenGLRenderer::UpdateGeometry, which applies the renderer's FXAA to the framebuffer it
+// drew: here the float scene target, over the hidden background, through an 8-bit texture,
+// which clamped the scene to 1 before the bright pass and darkened the edges over a light
+// background. The finished frame gets FXAA instead (ApplyRendererFXAA, or whoever called the
+// pass).
+class vtkBloomPassDelegateWithoutFXAA
+{
+public:
+  explicit vtkBloomPassDelegateWithoutFXAA(vtkRenderer* renderer)
+    : Renderer(renderer)
+    , UseFXAA(renderer->GetUseFXAA())
+  {
+    renderer->SetUseFXAA(false);
+  }
+  ~vtkBloomPassDelegateWithoutFXAA() { this->Renderer->SetUseFXAA(this->UseFXAA); }
+  vtkBloomPassDelegateWithoutFXAA(const vtkBloomPassDelegateWithoutFXAA&) = delete;
+  void operator=(const vtkBloomPassDelegateWithoutFXAA&) = delete;
+
+private:
+  vtkRenderer* Renderer;
+  bool UseFXAA;
+};
 }
 
 //------------------------------------------------------------------------------
@@ -350,7 +375,10 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
   {
     state->vtkglDisable(GL_BLEND);
   }
-  self->DelegatePass->Render(&s2);
+  {
+    const vtkBloomPassDelegateWithoutFXAA noFXAA(r);
+    self->DelegatePass->Render(&s2);
+  }
   if (emission)
   {
     self->PostRender(&s2);
@@ -530,7 +558,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     inScene ? vtkInternals::SCENE_AND_EMISSION : vtkInternals::SCENE);
   if (res.BackgroundMode == vtkBloomPassResources::BACKGROUND_TEXTURE)
   {
-    vtkBloomPassBackground::Draw(res, r, w, h);
+    vtkBloomPassBackground::Draw(res, r, x, y, w, h);
   }
   this->SceneRendered(s, res.Scene.Color);
   if (this->ProfilePasses)

@@ -520,7 +520,7 @@ protected:
   bool BloomAnnotations = false;
   bool LastAnnotationsOverBloom = false;
   /// Apply the renderer's FXAA where this pass is the renderer's (see the class description);
-  /// off where the application applies it after the render (ParaView's vtkPVBloomPass).
+  /// a subclass turns it off where the application applies FXAA after the render itself.
   bool ApplyRendererFXAA = true;
   int Quality;
   bool UseComputeShaders;

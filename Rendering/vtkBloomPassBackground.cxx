@@ -72,17 +72,21 @@ void vtkBloomPassBackground::Plan(
 
 //------------------------------------------------------------------------------
 void vtkBloomPassBackground::Draw(
-  vtkBloomPassResources& resources, vtkRenderer* renderer, int width, int height)
+  vtkBloomPassResources& resources, vtkRenderer* renderer, int x, int y, int width, int height)
 {
   vtkOpenGLRenderWindow* context = resources.Context;
   vtkBloomPassTarget& target = resources.Background;
-  target.Allocate(context, width, height, resources.Format);
+  x = std::max(x, 0);
+  y = std::max(y, 0);
+  target.Allocate(context, x + width, y + height, resources.Format);
+  resources.BackgroundOrigin[0] = x;
+  resources.BackgroundOrigin[1] = y;
   vtkOpenGLState* state = context->GetState();
   state->PushFramebufferBindings();
   target.FBO->Bind();
   target.FBO->ActivateDrawBuffer(0);
-  state->vtkglViewport(0, 0, width, height);
-  state->vtkglScissor(0, 0, width, height);
+  state->vtkglViewport(x, y, width, height);
+  state->vtkglScissor(x, y, width, height);
   // The renderer's own drawing of its gradient or texture, as its camera pass would clear.
   renderer->Clear();
   state->PopFramebufferBindings();
@@ -102,17 +106,28 @@ void vtkBloomPassBackground::PutOver(vtkBloomPassResources& resources, vtkImageD
   {
     return;
   }
-  float* rgba = static_cast<float*>(scene->GetScalarPointer());
-  const float* behind = mode == vtkBloomPassResources::BACKGROUND_TEXTURE
-    ? static_cast<const float*>(drawn->GetScalarPointer())
-    : resources.BackgroundColor;
-  const int step = mode == vtkBloomPassResources::BACKGROUND_TEXTURE ? 4 : 0;
-  for (vtkIdType p = 0; p < scene->GetNumberOfPoints(); ++p, rgba += 4, behind += step)
+  const bool texture = mode == vtkBloomPassResources::BACKGROUND_TEXTURE;
+  int size[3], drawnSize[3] = { 0, 0, 1 };
+  scene->GetDimensions(size);
+  if (texture)
   {
-    const float uncovered = std::max(1.0f - std::min(rgba[3], 1.0f), 0.0f);
-    for (int c = 0; c < 4; ++c)
+    drawn->GetDimensions(drawnSize);
+  }
+  float* rgba = static_cast<float*>(scene->GetScalarPointer());
+  for (int j = 0; j < size[1]; ++j)
+  {
+    for (int i = 0; i < size[0]; ++i, rgba += 4)
     {
-      rgba[c] += uncovered * behind[c];
+      // The background target holds the renderer's pixels at its window position.
+      const float* behind = texture
+        ? static_cast<const float*>(drawn->GetScalarPointer(
+            i + resources.BackgroundOrigin[0], j + resources.BackgroundOrigin[1], 0))
+        : resources.BackgroundColor;
+      const float uncovered = std::max(1.0f - std::min(rgba[3], 1.0f), 0.0f);
+      for (int c = 0; c < 4; ++c)
+      {
+        rgba[c] += uncovered * behind[c];
+      }
     }
   }
 }

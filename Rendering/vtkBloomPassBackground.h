@@ -49,8 +49,13 @@ namespace vtkBloomPassBackground
  */
 void Plan(vtkBloomPassResources& resources, vtkRenderer* renderer, bool bloomBackground);
 
-/// BACKGROUND_TEXTURE: draw `renderer`'s background into the resources' Background target.
-void Draw(vtkBloomPassResources& resources, vtkRenderer* renderer, int width, int height);
+/**
+ * BACKGROUND_TEXTURE: draw `renderer`'s background into the resources' Background target, at
+ * the renderer's place in its window, (x, y) to (x + width, y + height): VTK 9.3 and later
+ * dither gradients by window position, so the target's pixels are the window's.
+ */
+void Draw(
+  vtkBloomPassResources& resources, vtkRenderer* renderer, int x, int y, int width, int height);
 
 /**
  * Put a float RGBA scene read back from the scene target (premultiplied, over transparent

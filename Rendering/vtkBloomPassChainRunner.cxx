@@ -444,6 +444,10 @@ void vtkBloomPassChainRunner::SetStepUniforms(Uniforms& u, int step)
     {
       u.Float4("backgroundColor", this->Resources.BackgroundColor);
     }
+    else if (this->Resources.BackgroundMode == vtkBloomPassResources::BACKGROUND_TEXTURE)
+    {
+      u.Int2("backgroundOrigin", this->Resources.BackgroundOrigin);
+    }
     const double strengthTint[3] = { strength * tint[0], strength * tint[1], strength * tint[2] };
     set3f("strengthTint", strengthTint);
     setf("largest",

@@ -140,6 +140,8 @@ public:
   };
   int BackgroundMode = BACKGROUND_IN_SCENE;
   float BackgroundColor[4] = { 0.0f, 0.0f, 0.0f, 0.0f };
+  /// Where the renderer's pixel (0, 0) lies in the Background target (its window position).
+  int BackgroundOrigin[2] = { 0, 0 };
   vtkBloomPassTarget Background;
 
   // The chain and its resources, rebuilt when the size or the parameters change.

@@ -11,11 +11,7 @@
 vtkStandardNewMacro(vtkPVBloomPass);
 
 //------------------------------------------------------------------------------
-vtkPVBloomPass::vtkPVBloomPass()
-{
-  // ParaView's synchronized renderers apply the view's FXAA after the render.
-  this->ApplyRendererFXAA = false;
-}
+vtkPVBloomPass::vtkPVBloomPass() = default;
 
 //------------------------------------------------------------------------------
 vtkPVBloomPass::~vtkPVBloomPass() = default;

@@ -143,6 +143,7 @@ uniform float glowAlpha; // 1: the glow raises a transparent scene's alpha; 0: a
 uniform float largest; // largest finite value of the output target
 #if SCENE_BACKGROUND == BACKGROUND_TEXTURE
 uniform sampler2D background; // the renderer's gradient or textured background
+uniform ivec2 backgroundOrigin; // where the renderer's pixel (0, 0) lies in it
 #elif SCENE_BACKGROUND == BACKGROUND_COLOR
 uniform vec4 backgroundColor; // the renderer's solid background
 #endif
@@ -338,7 +339,7 @@ vec3 brightPass(vec3 c)
 vec4 overBackground(vec4 base, float coverage, ivec2 p)
 {
 #if SCENE_BACKGROUND == BACKGROUND_TEXTURE
-  vec4 behind = texelFetch(background, p, 0);
+  vec4 behind = texelFetch(background, p + backgroundOrigin, 0);
 #elif SCENE_BACKGROUND == BACKGROUND_COLOR
   vec4 behind = backgroundColor;
 #endif

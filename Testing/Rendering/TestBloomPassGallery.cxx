@@ -433,6 +433,10 @@ Scene Volume()
   renderer->ResetCamera();
   Annotate(scene, renderer, ScalarBar(White));
   Emit(scene, 0, 0.83, 0.5); // left of the scalar bar
+  scene.MaxLevels = 2.0;
+  scene.MaxLevelsWhy = "VTK 9.6 dithers the gradient and rounds it to the window's 8 bits "
+                       "before the volume blends over it; the pass blends the volume over the "
+                       "float background and rounds once (one pixel at 2 levels on VTK 9.6).";
   return scene;
 }
 
@@ -613,10 +617,11 @@ Scene PointGaussian()
   actor->SetMapper(mapper);
   const double light[3] = { 0.92, 0.94, 0.97 };
   Scene scene = AroundActor(actor, light, "Splats");
-  scene.MaxLevels = 3.0;
+  scene.MaxLevels = 5.0;
   scene.MaxLevelsWhy = "VTK blends the overlapping splats in the window's 8-bit framebuffer, "
-                       "rounding at every layer; the pass blends them in float. Against the "
-                       "same splats blended in a float framebuffer it is within one level.";
+                       "rounding at every layer (3 levels off float on VTK 9.1, 5 on 9.6); the "
+                       "pass blends them in float. Against the same splats blended in a float "
+                       "framebuffer it is within one level.";
   scene.FloatReference = true;
   return scene;
 }
@@ -938,7 +943,8 @@ TEST_P(RenderingGallery, NothingIsLightAndAnEmitterGlows)
   if (scene.CheckSceneRange)
   {
     EXPECT_GE(figures.SceneMax, 0.0) << "the pass's float scene could not be read";
-    EXPECT_LE(figures.SceneMax, 1.0 + 1e-3) << "the scene must hold nothing above 1";
+    // Display white: VTK 9.6's lighting takes the white sphere's highlight to 1.0017.
+    EXPECT_LE(figures.SceneMax, 1.0 + 5e-3) << "the scene must hold nothing above 1";
   }
   EXPECT_LE(figures.AfterMax, scene.MaxLevels)
     << "nothing is light: the pass must leave the frame as it was. " << scene.MaxLevelsWhy;

@@ -9,6 +9,10 @@
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
+#include "vtkCameraPass.h"
+#include "vtkDefaultPass.h"
+#include "vtkObjectFactory.h"
+#include "vtkRenderState.h"
 #include "vtkCoordinate.h"
 #include "vtkDataArray.h"
 #include "vtkImageBloomThreshold.h"
@@ -85,6 +89,24 @@ int LargestDifference(const std::vector<int>& a, const std::vector<int>& b)
   }
   return largest;
 }
+
+// A delegate that renders through the renderer, as ParaView's vtkPVDefaultPass does: its
+// lights, then vtkOpenGLRenderer::UpdateGeometry, which applies the renderer's FXAA itself.
+class ThroughTheRenderer : public vtkDefaultPass
+{
+public:
+  static ThroughTheRenderer* New();
+  vtkTypeMacro(ThroughTheRenderer, vtkDefaultPass);
+  void Render(const vtkRenderState* s) override
+  {
+    vtkRenderer* renderer = s->GetRenderer();
+    this->ClearLights(renderer);
+    this->UpdateLightGeometry(renderer);
+    this->UpdateLights(renderer);
+    this->UpdateGeometry(renderer, s->GetFrameBuffer());
+  }
+};
+vtkStandardNewMacro(ThroughTheRenderer);
 
 // A white-background figure as users make them: a lit grey sphere and a dark label; with
 // `lamp`, an orange HDR lamp beside it.
@@ -335,5 +357,50 @@ TEST(RenderingBloomPassLight, TranslucentGeometryIsThePlainFrame)
     figure.W.Renderer->SetUseDepthPeeling(peeling);
     const std::vector<int> plain = figure.Render(false);
     EXPECT_LE(LargestDifference(figure.Render(true), plain), 1) << "depth peeling " << peeling;
+  }
+}
+
+//------------------------------------------------------------------------------
+// The renderer's FXAA where the delegate renders through the renderer (ParaView's default
+// pass): VTK applies it inside UpdateGeometry, on the framebuffer the delegate draws, which
+// here is the pass's float scene over its hidden background. The pass keeps it out of the
+// scene and applies it to the finished frame: the lamp stays above 1 in the scene and glows,
+// and the white figure, rendered first without the pass as users toggle it, is the plain
+// frame within one level (an 8-bit FXAA of the scene clamped the lamp to 1 and darkened the
+// sphere's edges against the transparent background by about 100 levels).
+TEST(RenderingBloomPassLight, TheRenderersFXAAStaysOutOfTheScene)
+{
+  const double white[3] = { 1.0, 1.0, 1.0 };
+  for (bool lamp : { false, true })
+  {
+    Figure figure(white, lamp);
+    // Without the label: a delegate that renders the overlay inside UpdateGeometry keeps the
+    // annotations in the scene (GetLastAnnotationsOverBloom), so FXAA reaches them too.
+    figure.Label->VisibilityOff();
+    figure.W.Renderer->UseFXAAOn();
+    vtkNew<vtkCameraPass> camera;
+    vtkNew<ThroughTheRenderer> through;
+    camera->SetDelegatePass(through);
+    figure.W.Bloom->SetDelegatePass(camera);
+    const std::vector<int> plain = figure.Render(false);
+    const std::vector<int> bloomed = figure.Render(true);
+    EXPECT_TRUE(figure.W.Renderer->GetUseFXAA()) << "the renderer's switch is restored";
+    vtkNew<vtkImageData> scene;
+    ASSERT_TRUE(figure.W.Bloom->ReadSceneImage(scene));
+    double largest = 0.0;
+    vtkDataArray* rgba = scene->GetPointData()->GetScalars();
+    for (vtkIdType p = 0; p < rgba->GetNumberOfTuples(); ++p)
+    {
+      largest = std::max(largest, rgba->GetComponent(p, 0));
+    }
+    if (lamp)
+    {
+      EXPECT_GT(largest, 2.0) << "the lamp's colour reaches the scene unclamped";
+      EXPECT_GT(figure.HaloContrast(bloomed, plain), 10.0) << "and glows";
+    }
+    else
+    {
+      EXPECT_LE(LargestDifference(bloomed, plain), 1) << "FXAA once, on the finished frame";
+    }
   }
 }

@@ -60,8 +60,11 @@ def figure_rows():
         _, after = halves(after_path)
         gap = np.full((plain.shape[0], 6, 3), 255, np.uint8)
         rows.append(np.concatenate([plain, gap, before, gap, after], axis=1))
+    # Narrower rows are centred on the widest.
     width = max(row.shape[1] for row in rows)
-    padded = [np.pad(row, ((0, 6), (0, width - row.shape[1]), (0, 0)), constant_values=255)
+    padded = [np.pad(row, ((0, 6), ((width - row.shape[1]) // 2,
+                                    width - row.shape[1] - (width - row.shape[1]) // 2), (0, 0)),
+                     constant_values=255)
               for row in rows]
     # PNG rows are stored bottom first: the first configuration goes on top.
     return np.concatenate(padded[::-1], axis=0)
