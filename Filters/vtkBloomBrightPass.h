@@ -183,6 +183,25 @@ inline void vtkBloomBrightPass(
 }
 
 /**
+ * Whether vtkBloomBrightPass keeps a value > 0 of `colour` (the bright pixels that
+ * vtkImageBloom's statistics count).
+ */
+template <int N, typename Real>
+inline bool vtkBloomBrightPassKeepsAny(
+  const Real* colour, int mode, double threshold, double knee, double clampLuminance)
+{
+  Real kept[N];
+  std::copy(colour, colour + N, kept);
+  vtkBloomBrightPass<N>(kept, mode, threshold, knee, clampLuminance);
+  bool any = false;
+  for (int c = 0; c < N; ++c)
+  {
+    any = any || kept[c] > Real(0);
+  }
+  return any;
+}
+
+/**
  * True when vtkBloomBrightPass certainly gives zero for every finite colour whose luminance is at
  * most `luminance` and whose largest value is at most `brightness` (the comparisons are the
  * formula's own, evaluated as it evaluates them, and monotone). False when that cannot be

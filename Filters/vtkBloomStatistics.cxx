@@ -91,13 +91,8 @@ vtkIdType CountRow(
     {
       continue;
     }
-    vtkBloomBrightPass<Colours>(colour, Mode, threshold, knee, clampLuminance);
-    bool bright = false;
-    for (int c = 0; c < Colours; ++c)
-    {
-      bright = bright || colour[c] > 0.0;
-    }
-    count += bright ? 1 : 0;
+    count +=
+      vtkBloomBrightPassKeepsAny<Colours>(colour, Mode, threshold, knee, clampLuminance) ? 1 : 0;
   }
   return count;
 }

@@ -110,13 +110,10 @@ vtkIdType CountOthers(
     {
       colour[c] = static_cast<double>(row[static_cast<size_t>(i) * NC + c]);
     }
-    vtkBloomBrightPass<C>(colour, Mode, test.Threshold, test.Knee, test.ClampLuminance);
-    bool bright = false;
-    for (int c = 0; c < C; ++c)
-    {
-      bright = bright || colour[c] > 0.0;
-    }
-    count += bright ? 1 : 0;
+    count +=
+      vtkBloomBrightPassKeepsAny<C>(colour, Mode, test.Threshold, test.Knee, test.ClampLuminance)
+      ? 1
+      : 0;
   }
   return count;
 }
