@@ -55,7 +55,7 @@ bool WindowSum(const double* values, int n, std::int64_t base, std::int64_t sums
     below |= m & ~inside;
     m &= inside;
     const std::uint64_t s = static_cast<std::uint64_t>(shift) & 63;
-    const std::uint64_t low = m << s, high = (m >> 1) >> (63 - s);       // m 2^s in 128 bits
+    const std::uint64_t low = m << s, high = (m >> 1) >> (63 - s); // m 2^s in 128 bits
     const std::int64_t negative = static_cast<std::int64_t>(bits) < 0 ? -1 : 0;
     a0 += (static_cast<std::int64_t>(low & 0xFFFFFFFFu) ^ negative) - negative;
     a1 += (static_cast<std::int64_t>(low >> 32) ^ negative) - negative;

@@ -93,9 +93,9 @@
  * or with ComputeStatistics off, the getters return 0 and the arrays are absent. The point
  * scalars are the same bit for bit with statistics on or off. FAST measures them in its
  * composite, each input row and the output row written from it while they are in the cache,
- * instead of in passes of their own over the frame; the values are the same either way. The statistics see the input as
- * stored (they are not sanitized, so a NaN or Inf input sample makes EnergyIn non-finite;
- * PeakLuminanceIn ignores NaN) and the output as written.
+ * instead of in passes of their own over the frame; the values are the same either way. The
+ * statistics see the input as stored (they are not sanitized, so a NaN or Inf input sample makes
+ * EnergyIn non-finite; PeakLuminanceIn ignores NaN) and the output as written.
  */
 
 #ifndef vtkImageBloom_h

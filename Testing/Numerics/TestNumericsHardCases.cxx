@@ -477,9 +477,8 @@ TEST(NumericsHardCases, StatisticsInTheCompositeEqualSeparatePasses)
           fast->Update();
           reference->Update();
           ASSERT_TRUE(fast->GetLastRunWasFast());
-          const std::string what =
-            "nc " + std::to_string(nc) + ", width " + std::to_string(width) + ", mode " +
-            std::to_string(mode) + ", knee " + std::to_string(knee);
+          const std::string what = "nc " + std::to_string(nc) + ", width " + std::to_string(width) +
+            ", mode " + std::to_string(mode) + ", knee " + std::to_string(knee);
           auto same = [](double a, double b) { return a == b || (a != a && b != b); };
           EXPECT_TRUE(same(fast->GetEnergyIn(), reference->GetEnergyIn())) << what;
           EXPECT_EQ(fast->GetPeakLuminanceIn(), reference->GetPeakLuminanceIn()) << what;
