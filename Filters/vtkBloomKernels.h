@@ -107,6 +107,12 @@ public:
   static constexpr double LuminanceR = 0.2126;
   static constexpr double LuminanceG = 0.7152;
   static constexpr double LuminanceB = 0.0722;
+  /// R G B to luminance with these weights, evaluated as (R' + G') + B' (scalars or GCC vectors).
+  template <typename Real>
+  static Real Luminance(Real r, Real g, Real b)
+  {
+    return LuminanceR * r + LuminanceG * g + LuminanceB * b;
+  }
   ///@}
 
   ///@{

@@ -21,9 +21,8 @@ namespace
 template <typename T>
 double PixelLuminance(const T* v, int nc)
 {
-  return nc >= 3 ? vtkBloomKernels::LuminanceR * static_cast<double>(v[0]) +
-      vtkBloomKernels::LuminanceG * static_cast<double>(v[1]) +
-      vtkBloomKernels::LuminanceB * static_cast<double>(v[2])
+  return nc >= 3 ? vtkBloomKernels::Luminance(static_cast<double>(v[0]), static_cast<double>(v[1]),
+                     static_cast<double>(v[2]))
                  : static_cast<double>(v[0]);
 }
 

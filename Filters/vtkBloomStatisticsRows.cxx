@@ -61,8 +61,7 @@ VTKBLOOM_ALWAYS_INLINE void LoadPixels(const float* v, V& l, V& b)
   }
   if constexpr (NC >= 3)
   {
-    l = vtkBloomKernels::LuminanceR * r + vtkBloomKernels::LuminanceG * g +
-      vtkBloomKernels::LuminanceB * u;
+    l = vtkBloomKernels::Luminance(r, g, u);
     b = vtkBloomMax(vtkBloomMax(r, g), u);
   }
   else

@@ -1,3 +1,8 @@
+// vtkBloomPass's implementation: the render (scene, chain, composite, overlay) and its
+// internals, the image entry points (ApplyToImage, the read-backs) and the parameter plumbing.
+// The steps with a seam of their own live beside it (vtkBloomPassResources, ...ChainRunner,
+// ...Background, ...Steps, ...Emission, ...FFT); what stays here shares the pass's protected
+// state, which is why the file passes 800 lines.
 #include "vtkBloomPass.h"
 
 #include "vtkBloomPassBackground.h"
@@ -51,30 +56,6 @@ void vtkBloomPassDecodeEmission(vtkImageData* image, bool emission)
   }
 }
 
-// The renderer's FXAA switched off while the delegate renders the scene. A delegate that
-// renders through the renderer (vtkDefaultPass, ParaView's vtkPVDefaultPass) ends in
-// vtkOpenGLRenderer::UpdateGeometry, which applies the renderer's FXAA to the framebuffer it
-// drew: here the float scene target, over the hidden background, through an 8-bit texture,
-// which clamped the scene to 1 before the bright pass and darkened the edges over a light
-// background. The finished frame gets FXAA instead (ApplyRendererFXAA, or whoever called the
-// pass).
-class vtkBloomPassDelegateWithoutFXAA
-{
-public:
-  explicit vtkBloomPassDelegateWithoutFXAA(vtkRenderer* renderer)
-    : Renderer(renderer)
-    , UseFXAA(renderer->GetUseFXAA())
-  {
-    renderer->SetUseFXAA(false);
-  }
-  ~vtkBloomPassDelegateWithoutFXAA() { this->Renderer->SetUseFXAA(this->UseFXAA); }
-  vtkBloomPassDelegateWithoutFXAA(const vtkBloomPassDelegateWithoutFXAA&) = delete;
-  void operator=(const vtkBloomPassDelegateWithoutFXAA&) = delete;
-
-private:
-  vtkRenderer* Renderer;
-  bool UseFXAA;
-};
 }
 
 //------------------------------------------------------------------------------
@@ -118,6 +99,29 @@ public:
     this->BackgroundWarning = why;
   }
   vtkSmartPointer<vtkOpenGLFXAAFilter> FXAA; ///< the renderer's FXAA, made on first use
+
+  /**
+   * Only light blooms: the emitters whatever their colour (`selective`), not the background,
+   * not the annotations (the delegate's overlay, drawn after the composite); translucency as
+   * the renderer draws it. A layer blooms over the layers below it.
+   */
+  void PlanWhatBlooms(vtkBloomPass* self, const vtkRenderState* s, bool selective)
+  {
+    vtkRenderer* r = s->GetRenderer();
+    this->Runner.GlowAlpha = true;
+    this->Runner.ThresholdEmission = !selective || self->ThresholdEmitters;
+    this->Runner.CompositeOver = r->Transparent();
+    self->LastAnnotationsOverBloom =
+      !self->BloomAnnotations && this->Steps.DetachOverlay(self->DelegatePass) > 0;
+    const bool oit =
+      this->Steps.WrapTranslucency(s, self->DelegatePass) == vtkBloomPassSteps::ORDER_INDEPENDENT;
+    vtkRenderPass* processing = vtkBloomPassSteps::FindImageProcessing(self->DelegatePass);
+    if (!self->BloomBackground && !r->Transparent())
+    {
+      this->WarnBackgroundInScene(self, oit, processing);
+    }
+    vtkBloomPassBackground::Plan(this->Resources, r, self->BloomBackground || oit || processing);
+  }
 
   void ApplyFXAA(vtkOpenGLRenderer* renderer)
   {
@@ -376,7 +380,7 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
     state->vtkglDisable(GL_BLEND);
   }
   {
-    const vtkBloomPassDelegateWithoutFXAA noFXAA(r);
+    const vtkBloomPassSteps::RendererFXAAOff noFXAA(r);
     self->DelegatePass->Render(&s2);
   }
   if (emission)
@@ -517,7 +521,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
       this->EmitInSceneRender);
   this->LastEmissionInSceneRender = inScene;
   // The renderer's FXAA, applied here, or a pass around this one processes the frame further.
-  const bool fxaa = this->ApplyRendererFXAA && r->GetUseFXAA() && r->GetPass() == this;
+  const bool fxaa = r->GetUseFXAA() && r->GetPass() == this;
   const bool processed = fxaa || r->GetPass() != this;
   const int precision = this->FloatPrecision != FLOAT_AUTOMATIC ? this->FloatPrecision
     : processed                                                 ? FLOAT32
@@ -526,21 +530,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   {
     return;
   }
-  in.Runner.GlowAlpha = true;
-  // Only light blooms: the emitters whatever their colour, not the background, not the
-  // annotations (drawn after the composite). A layer blooms over the layers below it.
-  in.Runner.ThresholdEmission = !selective || this->ThresholdEmitters;
-  in.Runner.CompositeOver = r->Transparent();
-  this->LastAnnotationsOverBloom =
-    !this->BloomAnnotations && in.Steps.DetachOverlay(this->DelegatePass) > 0;
-  const bool oit =
-    in.Steps.WrapTranslucency(s, this->DelegatePass) == vtkBloomPassSteps::ORDER_INDEPENDENT;
-  vtkRenderPass* processing = vtkBloomPassSteps::FindImageProcessing(this->DelegatePass);
-  if (!this->BloomBackground && !r->Transparent())
-  {
-    in.WarnBackgroundInScene(this, oit, processing);
-  }
-  vtkBloomPassBackground::Plan(res, r, this->BloomBackground || oit || processing);
+  in.PlanWhatBlooms(this, s, selective);
   if (this->CaptureResult)
   {
     res.Result.Allocate(window, w, h, GL_RGBA32F);

@@ -69,7 +69,9 @@
  * is wrapped, while the scene renders, in depth peeling (the renderer's UseDepthPeeling, its
  * peels and occlusion ratio) or in order-independent transparency. VTK applies a renderer's
  * FXAA (UseFXAA) only where the renderer has no pass: where this pass is the renderer's own, it
- * applies it as the renderer would, after the composite and before the annotations.
+ * applies it as the renderer would, after the composite and before the annotations. It never
+ * runs inside the scene render, where a delegate that renders through the renderer (ParaView's)
+ * would apply it to the float scene in 8 bits.
  *
  * Chain it before vtkToneMappingPass (tone mapping's delegate is this pass) to bloom in linear
  * HDR and tone-map afterwards. Resources are made on first use and remade when the viewport
@@ -519,9 +521,6 @@ protected:
   bool BloomBackground = false;
   bool BloomAnnotations = false;
   bool LastAnnotationsOverBloom = false;
-  /// Apply the renderer's FXAA where this pass is the renderer's (see the class description);
-  /// a subclass turns it off where the application applies FXAA after the render itself.
-  bool ApplyRendererFXAA = true;
   int Quality;
   bool UseComputeShaders;
   bool SimulateComputeShaderFailure = false;

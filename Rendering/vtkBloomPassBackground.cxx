@@ -107,22 +107,19 @@ void vtkBloomPassBackground::PutOver(vtkBloomPassResources& resources, vtkImageD
     return;
   }
   const bool texture = mode == vtkBloomPassResources::BACKGROUND_TEXTURE;
-  int size[3], drawnSize[3] = { 0, 0, 1 };
+  int size[3];
   scene->GetDimensions(size);
-  if (texture)
-  {
-    drawn->GetDimensions(drawnSize);
-  }
   float* rgba = static_cast<float*>(scene->GetScalarPointer());
   for (int j = 0; j < size[1]; ++j)
   {
-    for (int i = 0; i < size[0]; ++i, rgba += 4)
+    // The background target holds the renderer's pixels at its window position.
+    const float* behind = texture
+      ? static_cast<const float*>(drawn->GetScalarPointer(
+          resources.BackgroundOrigin[0], j + resources.BackgroundOrigin[1], 0))
+      : resources.BackgroundColor;
+    const int step = texture ? 4 : 0;
+    for (int i = 0; i < size[0]; ++i, rgba += 4, behind += step)
     {
-      // The background target holds the renderer's pixels at its window position.
-      const float* behind = texture
-        ? static_cast<const float*>(drawn->GetScalarPointer(
-            i + resources.BackgroundOrigin[0], j + resources.BackgroundOrigin[1], 0))
-        : resources.BackgroundColor;
       const float uncovered = std::max(1.0f - std::min(rgba[3], 1.0f), 0.0f);
       for (int c = 0; c < 4; ++c)
       {

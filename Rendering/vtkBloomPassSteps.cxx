@@ -241,3 +241,17 @@ void vtkBloomPassSteps::ReleaseGraphicsResources(vtkWindow* window)
     this->Wrapper->ReleaseGraphicsResources(window);
   }
 }
+
+//------------------------------------------------------------------------------
+vtkBloomPassSteps::RendererFXAAOff::RendererFXAAOff(vtkRenderer* renderer)
+  : Renderer(renderer)
+  , UseFXAA(renderer->GetUseFXAA())
+{
+  renderer->SetUseFXAA(false);
+}
+
+//------------------------------------------------------------------------------
+vtkBloomPassSteps::RendererFXAAOff::~RendererFXAAOff()
+{
+  this->Renderer->SetUseFXAA(this->UseFXAA);
+}

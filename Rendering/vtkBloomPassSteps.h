@@ -21,6 +21,9 @@
  * WrapTranslucency() wraps such a plain step as the renderer wraps its own while the scene renders
  * (with the renderer's peels and occlusion ratio), so that the bloomed frame's translucency is the
  * frame the renderer draws without a pass. A step the user set up otherwise is left as it is.
+ *
+ * FXAA. The renderer's own FXAA runs inside its geometry step; RendererFXAAOff keeps it out of
+ * the scene render.
  */
 
 #ifndef vtkBloomPassSteps_h
@@ -32,6 +35,7 @@
 
 class vtkRenderPass;
 class vtkRenderState;
+class vtkRenderer;
 class vtkRenderStepsPass;
 class vtkSequencePass;
 class vtkTranslucentPass;
@@ -75,6 +79,27 @@ public:
    * be put under the scene afterwards.
    */
   static vtkRenderPass* FindImageProcessing(vtkRenderPass* delegate);
+
+  /**
+   * The renderer's FXAA switched off while the delegate renders the scene, restored after. A
+   * delegate that renders through the renderer (vtkDefaultPass, ParaView's vtkPVDefaultPass)
+   * ends in vtkOpenGLRenderer::UpdateGeometry, which applies the renderer's FXAA to the
+   * framebuffer it drew: the float scene, over the hidden background, through an 8-bit
+   * texture, which clamped light to 1 before the bright pass and darkened edges over a light
+   * background. The pass applies FXAA to the finished frame instead.
+   */
+  class RendererFXAAOff
+  {
+  public:
+    explicit RendererFXAAOff(vtkRenderer* renderer);
+    ~RendererFXAAOff();
+    RendererFXAAOff(const RendererFXAAOff&) = delete;
+    RendererFXAAOff& operator=(const RendererFXAAOff&) = delete;
+
+  private:
+    vtkRenderer* Renderer;
+    bool UseFXAA;
+  };
 
   /// Put every detached or wrapped step back.
   void Restore();
