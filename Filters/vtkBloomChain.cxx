@@ -5,6 +5,10 @@
 #include "vtkImagePyramidDown.h"
 #include "vtkImagePyramidUp.h"
 
+#include <algorithm>
+#include <array>
+#include <limits>
+
 namespace
 {
 const int Clamp = vtkBloomLinearOperator::BORDER_CLAMP;
@@ -100,5 +104,144 @@ void vtkBloomChain::Build(vtkBloomParameters* p, int width, int height)
     {
       this->Final = Resample(this->Levels[0].Size, full, bilinear);
     }
+  }
+}
+
+namespace
+{
+// [lo, hi] widened to the samples that `op` (an axis of a step) reads for it.
+void Widen(const vtkBloomLinearOperator& op, int& lo, int& hi)
+{
+  op.GetInputRange(lo, hi, lo, hi);
+}
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomChain::GetInputRange(int axis, int outMin, int outMax, int& inMin, int& inMax) const
+{
+  inMin = outMin;
+  inMax = outMax;
+  if (this->Levels.empty())
+  {
+    return;
+  }
+  auto along = [axis](const Term& t) -> const vtkBloomLinearOperator& {
+    return axis ? t.Y : t.X;
+  };
+  // Each level's samples that the output reads (at the level's resolution)...
+  std::vector<std::pair<int, int>> read(this->Levels.size(), { 0, -1 });
+  int a = outMin, b = outMax;
+  if (!this->FinalIsIdentity)
+  {
+    Widen(along(this->Final), a, b);
+  }
+  for (size_t i = 0; i < this->Levels.size(); ++i)
+  {
+    if (this->AccumulateMode == vtkBloomParameters::DIRECT)
+    {
+      if (this->Levels[i].Weight != 0.0)
+      {
+        read[i] = { outMin, outMax };
+        Widen(along(this->Levels[i].Full), read[i].first, read[i].second);
+      }
+      continue;
+    }
+    read[i] = { a, b };
+    if (i + 1 < this->Levels.size())
+    {
+      Widen(along(this->Levels[i].Up), a, b);
+    }
+  }
+  // ... then back through its blur and the pyramid to the image.
+  for (size_t i = 0; i < this->Levels.size(); ++i)
+  {
+    a = read[i].first;
+    b = read[i].second;
+    if (b < a)
+    {
+      continue;
+    }
+    if (this->Levels[i].Blur)
+    {
+      Widen(along(this->Levels[i].BlurPass), a, b);
+    }
+    for (size_t k = i; k > 0; --k)
+    {
+      // Level k is the sum of its Down terms over level k - 1.
+      int a2 = std::numeric_limits<int>::max(), b2 = std::numeric_limits<int>::min();
+      for (const Term& t : this->Levels[k].Down)
+      {
+        int ta = a, tb = b;
+        Widen(along(t), ta, tb);
+        a2 = std::min(a2, ta);
+        b2 = std::max(b2, tb);
+      }
+      a = a2 <= b2 ? a2 : a;
+      b = a2 <= b2 ? b2 : b;
+    }
+    if (!this->SourceIsIdentity)
+    {
+      Widen(along(this->Source), a, b);
+    }
+    inMin = std::min(inMin, a);
+    inMax = std::max(inMax, b);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomChain::Cut(const vtkBloomChain& frame, const int begin[2], const int end[2])
+{
+  *this = frame;
+  this->Width = end[0] - begin[0];
+  this->Height = end[1] - begin[1];
+  const int full[2] = { frame.Width, frame.Height };
+  // The samples of level i kept along each axis: those under the part, two more each side.
+  std::vector<std::array<int, 4>> kept(frame.Levels.size());
+  for (size_t i = 0; i < frame.Levels.size(); ++i)
+  {
+    for (int a = 0; a < 2; ++a)
+    {
+      const long long n = frame.Levels[i].Size[a];
+      const int lo = static_cast<int>(begin[a] * n / full[a]) - 2;
+      const int hi = static_cast<int>((end[a] * n + full[a] - 1) / full[a]) + 2;
+      kept[i][2 * a] = std::max(lo, 0);
+      kept[i][2 * a + 1] = std::min(hi, static_cast<int>(n));
+      this->Levels[i].Size[a] = kept[i][2 * a + 1] - kept[i][2 * a];
+    }
+  }
+  const std::array<int, 4> image = { begin[0], end[0], begin[1], end[1] };
+  // One term, its rows `out` over its inputs `in`.
+  auto cut = [](const Term& t, const std::array<int, 4>& out, const std::array<int, 4>& in) {
+    return Term{ t.Weight, t.X.Cut(out[0], out[1], in[0], in[1]),
+      t.Y.Cut(out[2], out[3], in[2], in[3]) };
+  };
+  for (size_t i = 0; i < frame.Levels.size(); ++i)
+  {
+    const Level& from = frame.Levels[i];
+    Level& to = this->Levels[i];
+    for (size_t t = 0; t < from.Down.size(); ++t)
+    {
+      to.Down[t] = cut(from.Down[t], kept[i], kept[i - 1]);
+    }
+    if (from.Blur)
+    {
+      to.BlurPass = cut(from.BlurPass, kept[i], kept[i]);
+    }
+    if (i + 1 < frame.Levels.size() && this->AccumulateMode != vtkBloomParameters::DIRECT)
+    {
+      to.Up = cut(from.Up, kept[i], kept[i + 1]);
+    }
+    if (this->AccumulateMode == vtkBloomParameters::DIRECT && from.Weight != 0.0)
+    {
+      to.Full = cut(from.Full, image, kept[i]);
+    }
+  }
+  if (!frame.Levels.empty() && !frame.SourceIsIdentity)
+  {
+    this->Source = cut(frame.Source, kept[0], image);
+  }
+  if (!frame.Levels.empty() && !frame.FinalIsIdentity)
+  {
+    this->Final = cut(frame.Final, image, kept[0]);
   }
 }

@@ -61,6 +61,22 @@ public:
   /// Build the chain for a width x height image (both >= 1) from the bloom's parameters.
   void Build(vtkBloomParameters* parameters, int width, int height);
 
+  /**
+   * The samples of the image, [inMin, inMax] along `axis` (0: x, 1: y), that the bloom of the
+   * output samples [outMin, outMax] reads, through every operator of the chain (bands counted
+   * whole).
+   */
+  void GetInputRange(int axis, int outMin, int outMax, int& inMin, int& inMax) const;
+
+  /**
+   * This chain becomes `frame` cut to the part [begin, end) of frame's image (a tile of a
+   * larger frame with its guard band): every operator's rows for the part's samples of each
+   * level (Cut), so that the part's bloom is the frame's bloom wherever the frame's bloom reads
+   * only samples of the part (GetInputRange). Each level keeps the samples under the part, and
+   * two more on each side.
+   */
+  void Cut(const vtkBloomChain& frame, const int begin[2], const int end[2]);
+
   int Width = 0;
   int Height = 0;
   bool SourceIsIdentity = true; ///< StartLevel 0: the bright pass reads the image itself

@@ -237,6 +237,27 @@ void vtkBloomLinearOperator::GetInputRange(int outMin, int outMax, int& inMin, i
 }
 
 //------------------------------------------------------------------------------
+vtkBloomLinearOperator vtkBloomLinearOperator::Cut(
+  int outBegin, int outEnd, int inBegin, int inEnd) const
+{
+  const int n = inEnd - inBegin;
+  std::vector<Row> rows(std::max(outEnd - outBegin, 0));
+  for (int j = outBegin; j < outEnd; ++j)
+  {
+    Row& row = rows[j - outBegin];
+    for (int k = 0; k < this->Width; ++k)
+    {
+      const double w = this->Weights[static_cast<size_t>(j) * this->Width + k];
+      if (w != 0.0)
+      {
+        row.emplace_back(std::min(std::max(this->First[j] + k - inBegin, 0), n - 1), w);
+      }
+    }
+  }
+  return FromRows(n, outEnd - outBegin, rows);
+}
+
+//------------------------------------------------------------------------------
 vtkBloomLinearOperator::InvariantRange vtkBloomLinearOperator::FindInvariantRange(
   int period, int minimum) const
 {

@@ -70,6 +70,14 @@ public:
   /// Inputs read by outputs [outMin, outMax] (inclusive, clamped to the operator's range).
   void GetInputRange(int outMin, int outMax, int& inMin, int& inMax) const;
 
+  /**
+   * This operator's rows [outBegin, outEnd) over the inputs [inBegin, inEnd): the operator of a
+   * part of the image (a tile with its guard band) that reads a part of the input. A row keeps
+   * its weights; a tap outside the inputs kept goes to the nearest one kept (such a row is only
+   * right where it reads none).
+   */
+  vtkBloomLinearOperator Cut(int outBegin, int outEnd, int inBegin, int inEnd) const;
+
   /// True when this is the identity (so a pass can be skipped).
   bool IsIdentity() const;
 

@@ -11,6 +11,7 @@
 #include "vtkBloomPassFFT.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomPassSteps.h"
+#include "vtkBloomPassTile.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkDataArray.h"
 #include "vtkImageBloom.h"
@@ -145,11 +146,46 @@ public:
   bool UpdateKernels(vtkBloomParameters* parameters);
   std::vector<double> KernelsSignature; ///< what the current PSFs were made from
   bool KernelsFailed = false;           ///< they could not be made (the filter said why)
+  int KernelsRadius = 0;                ///< the largest PSF's radius
+  bool TileWarned = false;              ///< a guard band was cut, said once
   vtkMTimeType KernelsVersion = 0;
   std::string PSFError; ///< the last reason PSF mode could not run, said once
 
   bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples,
     bool emitters, int precision);
+
+  /// The part of the frame the coming render renders: the renderer's tiled size, or, in a
+  /// tiled frame (SeamlessTiles), the tile and its guard band.
+  vtkBloomPassTile Tile;
+  vtkBloomPassTileFrame TileFrame; ///< the chain of the whole tiled frame
+  void PlanTile(vtkBloomPass* self, vtkRenderer* r, int w, int h);
+
+  /**
+   * The renderer culled its props against the tile's frustum, before the pass could widen it:
+   * a tile with a guard band shows every visible prop instead (the camera pass's delegate
+   * draws what lies outside the band as any render does, clipped).
+   */
+  std::vector<vtkProp*> TileProps;
+  void PropsOfTile(vtkRenderer* r, vtkProp**& props, int& count)
+  {
+    if (this->Tile.Size[0] == this->Tile.TileSize[0] && this->Tile.Size[1] == this->Tile.TileSize[1])
+    {
+      return;
+    }
+    this->TileProps.clear();
+    vtkPropCollection* all = r->GetViewProps();
+    vtkCollectionSimpleIterator it;
+    all->InitTraversal(it);
+    while (vtkProp* prop = all->GetNextProp(it))
+    {
+      if (prop->GetVisibility())
+      {
+        this->TileProps.push_back(prop);
+      }
+    }
+    props = this->TileProps.data();
+    count = static_cast<int>(this->TileProps.size());
+  }
 
   /// What the delegate renders: the scene, the scene and its emission, or the emitters alone.
   enum Content
@@ -232,13 +268,76 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   res.PSFBright.Release(window);
   res.PSFBloom.Release(window);
   const bool fast = self->Quality == QUALITY_FAST;
-  if (res.ChainIsStale(self->Parameters, w, h, fast))
+  // A tile of a tiled frame: the frame's chain cut to the part rendered.
+  int part[4] = { 0, 0, 0, 0 };
+  const bool tiled = this->Tile.Tiled;
+  if (tiled)
+  {
+    this->Tile.GetPart(part);
+  }
+  if (res.ChainIsStale(self->Parameters, w, h, part, fast))
   {
     // The runner's operator textures belong to the chain about to be rebuilt.
     this->Runner.ReleaseOperators(window);
-    res.BuildChain(self->Parameters, w, h, fast);
+    res.BuildChain(self->Parameters, w, h, tiled ? &this->TileFrame.Chain : nullptr, part, fast);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::vtkInternals::PlanTile(vtkBloomPass* self, vtkRenderer* r, int w, int h)
+{
+  vtkBloomPassTile& tile = this->Tile;
+  tile.Locate(r, w, h);
+  std::fill(this->Runner.CompositeWindow, this->Runner.CompositeWindow + 4, 0);
+  if (!tile.Tiled || !self->SeamlessTiles)
+  {
+    tile = vtkBloomPassTile();
+    tile.TileSize[0] = tile.Size[0] = w;
+    tile.TileSize[1] = tile.Size[1] = h;
+    return;
+  }
+  // The frame's samples that the tile's bloom reads.
+  const int* at = tile.GetPosition();
+  int first[2], last[2];
+  vtkBloomParameters* parameters = self->Parameters;
+  const bool psf = parameters->GetBloomMode() == vtkBloomParameters::BLOOM_PSF;
+  if (!psf)
+  {
+    this->TileFrame.Update(parameters, tile.Frame);
+  }
+  for (int a = 0; a < 2; ++a)
+  {
+    if (psf)
+    {
+      // The PSF's radius (full resolution, no pyramid).
+      const int radius = this->UpdateKernels(parameters) ? this->KernelsRadius : 0;
+      first[a] = at[a] - radius;
+      last[a] = at[a] + tile.TileSize[a] + radius;
+    }
+    else
+    {
+      this->TileFrame.Chain.GetInputRange(a, at[a], at[a] + tile.TileSize[a] - 1, first[a], last[a]);
+      ++last[a];
+    }
+  }
+  GLint largest = 0, viewport[2] = { 0, 0 };
+  glGetIntegerv(GL_MAX_TEXTURE_SIZE, &largest);
+  glGetIntegerv(GL_MAX_VIEWPORT_DIMS, viewport);
+  tile.Plan(first, last, std::min({ largest, viewport[0], viewport[1] }));
+  if (tile.Capped && !this->TileWarned)
+  {
+    vtkWarningWithObjectMacro(self, << "A tile and the samples its glow reads ("
+                                    << last[0] - first[0] << " x " << last[1] - first[1]
+                                    << ") exceed the context's largest target (" << largest
+                                    << "): the glow may show seams at tile edges.");
+    this->TileWarned = true;
+  }
+  int* window = this->Runner.CompositeWindow;
+  window[0] = tile.Inner[0];
+  window[1] = tile.Inner[0] + tile.TileSize[0];
+  window[2] = tile.Inner[1];
+  window[3] = tile.Inner[1] + tile.TileSize[1];
 }
 
 //------------------------------------------------------------------------------
@@ -279,6 +378,7 @@ bool vtkBloomPass::vtkInternals::UpdateKernels(vtkBloomParameters* parameters)
   vtkBloomPassFFT::Kernel kernels[3];
   ++this->KernelsVersion;
   this->KernelsFailed = false;
+  this->KernelsRadius = 0;
   for (int c = 0; c < 3; ++c)
   {
     kernels[c].Values = filter->ComputePSF(c, kernels[c].Radius);
@@ -287,6 +387,7 @@ bool vtkBloomPass::vtkInternals::UpdateKernels(vtkBloomParameters* parameters)
       this->KernelsFailed = true;
       return false;
     }
+    this->KernelsRadius = std::max(this->KernelsRadius, kernels[c].Radius);
   }
   this->FFT.SetKernels(kernels, this->KernelsVersion);
   return true;
@@ -381,6 +482,7 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
   }
   {
     const vtkBloomPassSteps::RendererFXAAOff noFXAA(r);
+    const vtkBloomPassTileCamera part(r, this->Tile);
     self->DelegatePass->Render(&s2);
   }
   if (emission)
@@ -514,11 +616,19 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // scene renders with as many.
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
+  // The part rendered: the renderer's tile, with its guard band where the frame is tiled, and
+  // the props it shows.
+  in.PlanTile(this, r, w, h);
+  const vtkBloomPassTile& tile = in.Tile;
+  this->LastTileGuardBand[0] = tile.Size[0] - w;
+  this->LastTileGuardBand[1] = tile.Size[1] - h;
+  vtkProp** props = s->GetPropArray();
+  int count = s->GetPropArrayCount();
+  in.PropsOfTile(r, props, count);
   // Selective bloom: in the scene's own render where it can be, else the emitters again.
   const bool selective = this->EmissionSource == EMISSION_EMITTERS;
   const bool inScene = selective &&
-    in.Emission.Plan(this->Emitters, s->GetPropArray(), s->GetPropArrayCount(), this->DelegatePass,
-      this->EmitInSceneRender);
+    in.Emission.Plan(this->Emitters, props, count, this->DelegatePass, this->EmitInSceneRender);
   this->LastEmissionInSceneRender = inScene;
   // The renderer's FXAA, applied here, or a pass around this one processes the frame further.
   const bool fxaa = r->GetUseFXAA() && r->GetPass() == this;
@@ -526,7 +636,8 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   const int precision = this->FloatPrecision != FLOAT_AUTOMATIC ? this->FloatPrecision
     : processed                                                 ? FLOAT32
                                                                 : FLOAT16;
-  if (!in.Prepare(this, window, w, h, samples, selective && !inScene, precision))
+  if (!in.Prepare(
+        this, window, tile.Size[0], tile.Size[1], samples, selective && !inScene, precision))
   {
     return;
   }
@@ -544,7 +655,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   {
     in.Runner.BeginProfiledSpan();
   }
-  in.RenderDelegate(this, s, res.Scene, s->GetPropArray(), s->GetPropArrayCount(),
+  in.RenderDelegate(this, s, res.Scene, props, count,
     inScene ? vtkInternals::SCENE_AND_EMISSION : vtkInternals::SCENE);
   if (res.BackgroundMode == vtkBloomPassResources::BACKGROUND_TEXTURE)
   {
@@ -579,8 +690,11 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   const bool bloom =
     in.RunBloom(this, twoRenders ? res.Emitter.Color : res.Scene.Color, twoRenders);
   this->LastBloomSkipped = !bloom;
-  const int zero[2] = { 0, 0 };
+  // The composite writes the tile only (Runner.CompositeWindow): its first sample lands at the
+  // viewport's corner.
+  const int zero[2] = { -tile.Inner[0], -tile.Inner[1] };
   const int origin[2] = { x, y };
+  const int shifted[2] = { x - tile.Inner[0], y - tile.Inner[1] };
   if (this->CaptureResult)
   {
     in.Runner.Composite(&res.Result, zero, bloom);
@@ -590,8 +704,12 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   else
   {
     state->PopFramebufferBindings();
-    in.Runner.Composite(nullptr, origin, bloom);
+    in.Runner.Composite(nullptr, shifted, bloom);
   }
+  // The renderer's viewport again (the scene's render had the part's, a tile with its band),
+  // for what follows and reads it: the FXAA, the annotations.
+  state->vtkglViewport(x, y, w, h);
+  state->vtkglScissor(x, y, w, h);
   // 4. The renderer's FXAA, which VTK applies only where a renderer has no pass: where this
   // pass is the renderer's, as the renderer applies it, to the frame without its annotations.
   // Inside other passes (ParaView's own FXAA pass, a tone mapping) FXAA is theirs to apply.
@@ -697,7 +815,10 @@ bool vtkBloomPass::ApplyToImage(
   const vtkBloomPassSavedState saved(state);
   vtkInternals& in = *this->Internals;
   vtkBloomPassResources& res = in.Resources;
-  // An image is not processed further: automatic precision is the half floats'.
+  // An image is not processed further: automatic precision is the half floats'. It is its
+  // own frame, whatever the window's tiling.
+  in.Tile = vtkBloomPassTile();
+  std::fill(in.Runner.CompositeWindow, in.Runner.CompositeWindow + 4, 0);
   if (!in.Prepare(this, window, w, h, 0, false,
         this->FloatPrecision == FLOAT_AUTOMATIC ? FLOAT16 : this->FloatPrecision))
   {
@@ -871,6 +992,7 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "ThresholdEmitters: " << (this->ThresholdEmitters ? "On" : "Off") << "\n";
   os << indent << "BloomBackground: " << (this->BloomBackground ? "On" : "Off") << "\n";
   os << indent << "BloomAnnotations: " << (this->BloomAnnotations ? "On" : "Off") << "\n";
+  os << indent << "SeamlessTiles: " << (this->SeamlessTiles ? "On" : "Off") << "\n";
   os << indent << "LastAnnotationsOverBloom: " << (this->LastAnnotationsOverBloom ? "On" : "Off")
      << "\n";
   os << indent << "LastEmissionInSceneRender: " << (this->LastEmissionInSceneRender ? "On" : "Off")

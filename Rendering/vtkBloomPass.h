@@ -357,6 +357,25 @@ public:
   vtkGetMacro(LastAnnotationsOverBloom, bool);
 
   ///@{
+  /**
+   * Tiled frames (vtkWindowToImageFilter with a scale, a ParaView screenshot larger than its
+   * view: the window's TileScale above 1) bloom as one frame (on, the default): each tile
+   * renders with a guard band, the samples of the frame its glow reads, and the bloom's sizes
+   * follow the frame's height, so the tiled image is the frame's, with no seams
+   * (vtkBloomPassTile). Off: each tile blooms alone, as a frame of its own. A delegate that does
+   * not render the scene itself (IceT's composite in parallel) needs it off: every rank would
+   * have to widen its camera alike.
+   */
+  vtkSetMacro(SeamlessTiles, bool);
+  vtkGetMacro(SeamlessTiles, bool);
+  vtkBooleanMacro(SeamlessTiles, bool);
+  ///@}
+
+  /// The guard band the last render added to the renderer's tile, in samples along x and y
+  /// (0 untiled); the scene and emission read-backs hold the tile and its band.
+  vtkGetVector2Macro(LastTileGuardBand, int);
+
+  ///@{
   /// The shader replacement that writes the emission (vtkOpenGLRenderPass's API).
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
     std::string& fragmentShader, vtkAbstractMapper* mapper, vtkProp* prop) override;
@@ -521,6 +540,8 @@ protected:
   bool BloomBackground = false;
   bool BloomAnnotations = false;
   bool LastAnnotationsOverBloom = false;
+  bool SeamlessTiles = true;
+  int LastTileGuardBand[2] = { 0, 0 };
   int Quality;
   bool UseComputeShaders;
   bool SimulateComputeShaderFailure = false;

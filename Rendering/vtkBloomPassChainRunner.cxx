@@ -304,7 +304,9 @@ vtkBloomPassChainRunner::ImageTarget vtkBloomPassChainRunner::BeginPass(
 std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
   const PassSpec& spec, int width, int height)
 {
-  const Box whole = Box::Whole(width, height);
+  const Box whole = spec.Step == STEP_COMPOSITE
+    ? Box::Window(this->CompositeWindow, width, height).Intersection(Box::Whole(width, height))
+    : Box::Whole(width, height);
   const Box region = spec.Region ? spec.Region->Intersection(whole) : whole;
   if (spec.Step != STEP_COMPOSITE && !spec.ReadsSource)
   {
@@ -334,8 +336,9 @@ std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
       draws.push_back({ whole, OP_IDENTITY, OP_IDENTITY, true });
       return draws;
     }
-    const Box parts[] = { { 0, width, 0, region.Y0 }, { 0, width, region.Y1, height },
-      { 0, region.X0, region.Y0, region.Y1 }, { region.X1, width, region.Y0, region.Y1 } };
+    const Box parts[] = { { whole.X0, whole.X1, whole.Y0, region.Y0 },
+      { whole.X0, whole.X1, region.Y1, whole.Y1 }, { whole.X0, region.X0, region.Y0, region.Y1 },
+      { region.X1, whole.X1, region.Y0, region.Y1 } };
     for (const Box& part : parts)
     {
       if (!part.Empty())
@@ -446,7 +449,11 @@ void vtkBloomPassChainRunner::SetStepUniforms(Uniforms& u, int step)
     }
     else if (this->Resources.BackgroundMode == vtkBloomPassResources::BACKGROUND_TEXTURE)
     {
-      u.Int2("backgroundOrigin", this->Resources.BackgroundOrigin);
+      // The background holds the renderer's pixels; the window's first sample is its first.
+      const int* origin = this->Resources.BackgroundOrigin;
+      const int* window = this->CompositeWindow;
+      const int shifted[2] = { origin[0] - window[0], origin[1] - window[2] };
+      u.Int2("backgroundOrigin", shifted);
     }
     const double strengthTint[3] = { strength * tint[0], strength * tint[1], strength * tint[2] };
     set3f("strengthTint", strengthTint);

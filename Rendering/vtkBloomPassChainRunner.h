@@ -126,8 +126,16 @@ public:
   double LastChainMilliseconds = -1.0;
 
   /**
+   * The samples of the chain's frame that Composite() writes, x0 x1 y0 y1 (x1, y1 past the
+   * end); all 0: the whole frame. A tile rendered with its guard band (vtkBloomPassTile)
+   * writes the tile only.
+   */
+  int CompositeWindow[4] = { 0, 0, 0, 0 };
+
+  /**
    * out = keep * scene + Strength * Tint * bloom into `target`, or into the bound framebuffer
-   * at `origin` when `target` is null.
+   * at `origin` when `target` is null: the frame's sample (i, j) lands at origin + (i, j), for
+   * the samples of CompositeWindow.
    */
   void Composite(vtkBloomPassTarget* target, const int origin[2], bool bloom);
 
@@ -243,6 +251,8 @@ private:
     int Y1 = 0;
     bool Empty() const { return this->X0 >= this->X1 || this->Y0 >= this->Y1; }
     static Box Whole(int width, int height) { return { 0, width, 0, height }; }
+    /// x0 x1 y0 y1 as a box; all 0: the whole width x height.
+    static Box Window(const int window[4], int width, int height);
     Box Union(const Box& o) const;
     Box Intersection(const Box& o) const;
   };

@@ -176,10 +176,22 @@ vtkBloomPassChainRunner::ImageTarget vtkBloomPassChainRunner::ComputeTarget(
   {
     image.Texture = target->Color->GetHandle();
     image.Format = target->Color->GetInternalFormat(VTK_FLOAT, 4, false);
+    image.Offset[0] = origin[0];
+    image.Offset[1] = origin[1];
   }
-  else if (!this->FramebufferImage(origin, width, height, image))
+  else
   {
-    image = ImageTarget();
+    // The samples the pass writes into the framebuffer: the composite's window of the frame.
+    const Box written = spec.Step == STEP_COMPOSITE
+      ? Box::Window(this->CompositeWindow, width, height)
+      : Box::Whole(width, height);
+    const int corner[2] = { origin[0] + written.X0, origin[1] + written.Y0 };
+    if (!this->FramebufferImage(corner, written.X1 - written.X0, written.Y1 - written.Y0, image))
+    {
+      return ImageTarget();
+    }
+    image.Offset[0] = origin[0];
+    image.Offset[1] = origin[1];
   }
   return image;
 }

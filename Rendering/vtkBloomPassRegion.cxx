@@ -71,6 +71,14 @@ vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::Box::Intersection(const Bo
 }
 
 //------------------------------------------------------------------------------
+vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::Box::Window(
+  const int window[4], int width, int height)
+{
+  const bool whole = window[0] == 0 && window[1] == 0 && window[2] == 0 && window[3] == 0;
+  return whole ? Whole(width, height) : Box{ window[0], window[1], window[2], window[3] };
+}
+
+//------------------------------------------------------------------------------
 vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::Reach(const vtkBloomLinearOperator* x,
   const vtkBloomLinearOperator* y, const Box& in, int width, int height)
 {

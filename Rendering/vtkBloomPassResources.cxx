@@ -2,6 +2,8 @@
 // chain's targets (see vtkBloomPassResources.h).
 #include "vtkBloomPassResources.h"
 
+#include <algorithm>
+
 #include "vtkBloomParameters.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkDataArray.h"
@@ -239,23 +241,34 @@ void vtkBloomPassResources::AllocateScene(int width, int height, bool emitters, 
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassResources::ChainIsStale(
-  vtkBloomParameters* parameters, int width, int height, bool fast) const
+bool vtkBloomPassResources::ChainIsStale(vtkBloomParameters* parameters, int width, int height,
+  const int part[4], bool fast) const
 {
-  // The chain depends on the size, the parameters and the quality only.
+  // The chain depends on the size, the part of a frame, the parameters and the quality only.
   return this->ChainTime == 0 || this->ChainParameters != parameters ||
     this->ChainTime < parameters->GetMTime() || this->Chain.Width != width ||
-    this->Chain.Height != height || this->ChainIsFast != fast;
+    this->Chain.Height != height || !std::equal(part, part + 4, this->ChainPart) ||
+    this->ChainIsFast != fast;
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassResources::BuildChain(
-  vtkBloomParameters* parameters, int width, int height, bool fast)
+void vtkBloomPassResources::BuildChain(vtkBloomParameters* parameters, int width, int height,
+  const vtkBloomChain* frame, const int part[4], bool fast)
 {
   vtkOpenGLRenderWindow* window = this->Context;
   const vtkMTimeType parametersTime = parameters->GetMTime();
   this->ReleaseChain(window);
-  this->Chain.Build(parameters, width, height);
+  if (frame)
+  {
+    const int begin[2] = { part[0], part[2] };
+    const int end[2] = { part[1], part[3] };
+    this->Chain.Cut(*frame, begin, end);
+  }
+  else
+  {
+    this->Chain.Build(parameters, width, height);
+  }
+  std::copy(part, part + 4, this->ChainPart);
   this->ChainTime = parametersTime;
   this->ChainParameters = parameters;
   this->ChainIsFast = fast;

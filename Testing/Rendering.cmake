@@ -46,6 +46,13 @@ if (TARGET VTK::RenderingFreeType)
     MODULES VTK::RenderingOpenGL2 VTK::RenderingFreeType)
 endif ()
 
+# Tiled frames (vtkWindowToImageFilter with a scale) bloom as one frame (issue 36, part 2).
+vtkbloom_add_gtest(TestBloomPassTiles OPENGL
+  SOURCES Rendering/TestBloomPassTiles.cxx
+  LIBRARIES VTKBloom::RenderingBloom VTK::RenderingOpenGL2 VTK::RenderingCore
+    VTK::FiltersSources VTK::CommonDataModel VTK::CommonCore)
+vtk_module_autoinit(TARGETS TestBloomPassTiles MODULES VTK::RenderingOpenGL2)
+
 # Temporal stability: the bloom's energy under sub-pixel camera motion against the scene's.
 vtkbloom_add_gtest(TestBloomPassMotion OPENGL
   SOURCES Rendering/TestBloomPassMotion.cxx

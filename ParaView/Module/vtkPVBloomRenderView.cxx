@@ -1,5 +1,7 @@
 #include "vtkPVBloomRenderView.h"
 
+#include "vtkCuller.h"
+#include "vtkCullerCollection.h"
 #include "vtkIceTCompositePass.h"
 #include "vtkIceTSynchronizedRenderers.h"
 #include "vtkMultiProcessController.h"
@@ -141,6 +143,13 @@ void vtkPVBloomRenderView::AboutToRenderOnLocalProcess(bool interactive)
     return; // ParaView emptied the slot for the selection render, and refills it afterwards.
   }
   vtkPVSynchronizedRenderer* sync = this->SynchronizedRenderers;
+  // A tiled screenshot blooms as one frame where this process renders the whole scene; under
+  // IceT the other ranks render their geometry with the tile's camera, which the pass cannot
+  // widen, so each tile blooms alone there.
+  const bool seamless =
+    vtkIceTSynchronizedRenderers::SafeDownCast(sync->GetParallelSynchronizer()) == nullptr;
+  this->BloomPass->SetSeamlessTiles(seamless);
+  this->CullWholeFrame(seamless && this->UseBloom);
   vtkImageProcessingPass* slot = sync->GetImageProcessingPass();
   vtkPVBloomPass* bloom = this->BloomPass;
   // ParaView's own pass in the slot (tone mapping), if any: bloom is never replaced by it
@@ -170,6 +179,29 @@ void vtkPVBloomRenderView::AboutToRenderOnLocalProcess(bool interactive)
     sync->SetImageProcessingPass(nullptr);
   }
   this->AvoidSecondFXAA();
+}
+
+//------------------------------------------------------------------------------
+void vtkPVBloomRenderView::CullWholeFrame(bool seamless)
+{
+  // A tile of a screenshot renders with a guard band (vtkBloomPass::SeamlessTiles), and
+  // ParaView's delegate draws the props the renderer kept, which it culls against the tile's
+  // frustum before the pass can widen it: while the window is tiled, the renderer culls
+  // nothing (every prop is drawn, the GPU clips what lies outside the band).
+  vtkRenderer* renderer = this->GetRenderer();
+  int scale[2] = { 1, 1 };
+  this->GetRenderWindow()->GetTileScale(scale);
+  vtkCullerCollection* cullers = renderer->GetCullers();
+  const bool tiled = seamless && (scale[0] > 1 || scale[1] > 1);
+  vtkCullerCollection* from = tiled ? cullers : this->TileCullers.GetPointer();
+  vtkCullerCollection* to = tiled ? this->TileCullers.GetPointer() : cullers;
+  vtkCollectionSimpleIterator it;
+  from->InitTraversal(it);
+  while (vtkCuller* culler = from->GetNextCuller(it))
+  {
+    to->AddItem(culler);
+  }
+  from->RemoveAllItems();
 }
 
 //------------------------------------------------------------------------------

@@ -35,6 +35,7 @@
 #ifndef vtkPVBloomRenderView_h
 #define vtkPVBloomRenderView_h
 
+#include "vtkCullerCollection.h"           // For the cullers kept aside while tiled
 #include "vtkNew.h"                       // For the pass and its parameters
 #include "vtkPVBloomCompositeScenePass.h" // For the float composite
 #include "vtkPVBloomPass.h"               // For the pass
@@ -100,6 +101,10 @@ protected:
   bool LocalProcessDisplaysImage();
   /// FXAA once, as in the view without bloom (see the implementation).
   void AvoidSecondFXAA();
+  /// No culling while a screenshot renders in tiles, so that each tile's guard band shows
+  /// every prop (see the implementation); the cullers come back afterwards.
+  void CullWholeFrame(bool seamless);
+  vtkNew<vtkCullerCollection> TileCullers;
 
   /// On every rank: IceT's render pass and colour format for the coming render.
   void UpdateFloatComposite();

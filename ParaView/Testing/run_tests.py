@@ -248,7 +248,8 @@ def scaled_bloom_error(prefix):
 errors = {}
 for reference_height in (1080, 0):
     prefix = os.path.join(out, 'scale-%d' % reference_height)
-    status, log = pvbatch(1, 'bloom_view_scale.py', prefix, str(reference_height))
+    tiled = '1' if reference_height == 1080 else '0'
+    status, log = pvbatch(1, 'bloom_view_scale.py', prefix, str(reference_height), tiled)
     check(status == 0, 'bloom_view_scale.py, reference height %d (exit %d)'
           % (reference_height, status))
     if status == 0:
@@ -257,6 +258,42 @@ if len(errors) == 2:
     check(errors[1080] < 0.1 and errors[0] > 1.5 * errors[1080],
           'a 2x screenshot keeps the bloom\'s look: relative L2 %.3f (reference height 1080), '
           '%.3f (pixels)' % (errors[1080], errors[0]))
+
+# 4c. Screenshots larger than the view, which ParaView renders in tiles, bloom as one frame
+# (vtkBloomPass::SeamlessTiles): the 480x360 view saved at 2x and 4x its size equals the view
+# resized to that size (bloom terms within 1 % relative L2), and no step of the bloom term
+# across a tile edge exceeds the steps beside it on the same line by more than the resized
+# view's own steps there do, plus one level.
+def seam(term, covered, tile):
+    worst = 0.0
+    for axis in (0, 1):  # steps up the columns (across horizontal edges), then along rows
+        t = np.moveaxis(term, axis, 1)
+        c = np.moveaxis(covered, axis, 1)
+        step = np.abs(np.diff(t, axis=1)).max(axis=-1)  # step k: pixels k and k + 1
+        free = ~(c[:, 1:] | c[:, :-1])
+        edge = tile[axis]
+        for k in range(edge - 1, step.shape[1] - 1, edge):
+            ok = free[:, k] & free[:, k - 1] & free[:, k + 1]
+            if ok.any():
+                beside = np.maximum(step[:, k - 1], step[:, k + 1])
+                worst = max(worst, float((step[:, k] - beside)[ok].max()))
+    return worst
+
+
+prefix = os.path.join(out, 'scale-1080')
+if os.path.exists(prefix + '-bloom-tiled4.png'):
+    for scale in (2, 4):
+        plain = load_rgb('%s-plain-%d.png' % (prefix, scale))
+        resized = load_rgb('%s-bloom-%d.png' % (prefix, scale)) - plain
+        tiled = load_rgb('%s-bloom-tiled%d.png' % (prefix, scale)) - \
+            load_rgb('%s-plain-tiled%d.png' % (prefix, scale))
+        covered = np.abs(plain - plain[0, 0]).max(axis=-1) > 0
+        error = relative_l2(tiled, resized)
+        seams = seam(tiled, covered, (360, 480)), seam(resized, covered, (360, 480))
+        check(error < 0.01 and seams[0] <= seams[1] + 1,
+              'a %dx screenshot in tiles equals the resized view: bloom term %.2e relative L2, '
+              'largest step at a tile edge %g levels over its neighbours (%g in the resized view)'
+              % (scale, error, seams[0], seams[1]))
 
 # 5. HDR under MPI: 3 ranks composite float colour through IceT and bloom as serial does.
 hdr = {}

@@ -1,0 +1,105 @@
+/**
+ * @class   vtkBloomPassTile
+ * @brief   The part of a tiled frame that vtkBloomPass renders: the tile and its guard band.
+ *
+ * vtkWindowToImageFilter with a scale, and ParaView's screenshots larger than their view, render
+ * a frame larger than the window in tiles: the window's TileScale and TileViewport say which
+ * part of the frame the coming render is, and each renderer's camera is shifted to that part.
+ * A tile that bloomed alone would cut every glow at its edges, and its bloom would have the
+ * sizes of a frame the tile's size. So, where the window is tiled, the pass renders the tile with
+ * a guard band around it: the samples of the frame that the tile's bloom reads, found through
+ * the frame's chain (vtkBloomChain::GetInputRange; in PSF mode, the PSF's radius), never past
+ * the frame's edges. Its camera's projection is widened to the band for the scene's render
+ * (vtkBloomPassTileCamera), its chain is the frame's chain cut to the band (vtkBloomChain::Cut:
+ * the frame's levels and operators, row for row), and the composite writes the tile only. A
+ * tiled image is then the frame's image to float rounding, and a screenshot has no seams.
+ *
+ * Untiled, the part is the renderer's viewport itself and nothing changes.
+ */
+
+#ifndef vtkBloomPassTile_h
+#define vtkBloomPassTile_h
+
+#include "vtkBloomChain.h"    // For the reach
+#include "vtkSmartPointer.h"  // For the camera's transform
+#include "vtkType.h"          // For vtkMTimeType
+
+class vtkBloomParameters;
+class vtkCamera;
+class vtkHomogeneousTransform;
+class vtkRenderer;
+class vtkWindow;
+
+struct vtkBloomPassTile
+{
+  bool Tiled = false;
+  int Frame[2] = { 0, 0 };    ///< the renderer's whole frame, over all tiles
+  int TileSize[2] = { 0, 0 }; ///< the tile: the renderer's tiled size
+  int Size[2] = { 0, 0 };     ///< the part rendered: the tile and its guard band
+  int Inner[2] = { 0, 0 };    ///< where the tile starts in the part rendered
+  bool Capped = false;        ///< the band was cut to the largest target the context allows
+
+  /**
+   * The tile of `renderer` (tiled size w x h): untiled, the part is the tile. Tiled, Frame and
+   * where the tile lies in it; Plan() then sets the band.
+   */
+  void Locate(vtkRenderer* renderer, int w, int h);
+
+  /**
+   * The guard band: the samples [first[a], last[a]) of the frame that the tile's bloom reads
+   * along x and y (cut to the frame), at most `largest` samples a side.
+   */
+  void Plan(const int first[2], const int last[2], int largest);
+
+  /// Where the tile starts in the frame, and the part rendered (x0 x1 y0 y1 in the frame).
+  const int* GetPosition() const { return this->Position; }
+  void GetPart(int part[4]) const;
+
+private:
+  int Position[2] = { 0, 0 }; ///< where the tile starts in the frame
+  int Start[2] = { 0, 0 };    ///< where the part starts in the frame
+};
+
+/**
+ * The chain of a parameter set over a whole frame, remade when the parameters or the frame
+ * change: the chain the tiles' chains are cut from, and what tells a tile's guard band.
+ */
+class vtkBloomPassTileFrame
+{
+public:
+  void Update(vtkBloomParameters* parameters, const int frame[2]);
+  vtkBloomChain Chain;
+
+private:
+  const vtkBloomParameters* Parameters = nullptr; // compared only
+  vtkMTimeType Time = 0;
+};
+
+/**
+ * For its lifetime, the renderer renders the part of vtkBloomPassTile onto a viewport of the
+ * part's size. The camera's projection is the tile's (its aspect ratio held at the tile's),
+ * followed by the scale and shift in normalized device coordinates that put the tile's pixels
+ * where the part has them (vtkCamera's user transform, which applies after the projection).
+ * The window's tile viewport covers the part, so that a delegate that renders through the
+ * renderer (vtkOpenGLCamera::Render, as ParaView's does) sets the part's viewport too; a
+ * vtkCameraPass takes it from the pass's target. Nothing changes untiled.
+ */
+class vtkBloomPassTileCamera
+{
+public:
+  vtkBloomPassTileCamera(vtkRenderer* renderer, const vtkBloomPassTile& tile);
+  ~vtkBloomPassTileCamera();
+  vtkBloomPassTileCamera(const vtkBloomPassTileCamera&) = delete;
+  vtkBloomPassTileCamera& operator=(const vtkBloomPassTileCamera&) = delete;
+
+private:
+  vtkCamera* Camera = nullptr;
+  vtkWindow* Window = nullptr;
+  vtkSmartPointer<vtkHomogeneousTransform> Saved;
+  bool SavedUseAspect = false;
+  double SavedAspect = 1.0;
+  double SavedTileViewport[4] = { 0.0, 0.0, 1.0, 1.0 };
+};
+
+#endif
+// VTK-HeaderTest-Exclude: vtkBloomPassTile.h
