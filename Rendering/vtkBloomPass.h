@@ -73,6 +73,12 @@
  * runs inside the scene render, where a delegate that renders through the renderer (ParaView's)
  * would apply it to the float scene in 8 bits.
  *
+ * Tiled frames. A screenshot larger than the window (vtkWindowToImageFilter with a scale, a
+ * ParaView screenshot larger than its view) renders in tiles. Each tile renders with a guard
+ * band, the samples of the frame its glow reads, and the frame's chain cut to it, so the tiled
+ * frame is the larger window's frame to float rounding, with no seams (SeamlessTiles,
+ * vtkBloomPassTile).
+ *
  * Chain it before vtkToneMappingPass (tone mapping's delegate is this pass) to bloom in linear
  * HDR and tone-map afterwards. Resources are made on first use and remade when the viewport
  * size, the precision or the parameters change; ReleaseGraphicsResources frees them and

@@ -25,6 +25,7 @@ set(vtkbloom_filters_tests
   TestBloomStreaming
   TestBloomErrors
   TestBloomLinearOperator
+  TestBloomChainCut
   TestBloomFFTConvolution
   TestImageBloomPSF)
 

@@ -12,8 +12,41 @@
 #include "vtkProcessModule.h"
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
+#include "vtkSynchronizedRenderers.h"
 
 vtkStandardNewMacro(vtkPVBloomRenderView);
+
+namespace
+{
+/**
+ * The capture delegate a server's client-server synchronizer reads its client's image from
+ * while IceT composites float colour. It passes the render's start and end on to IceT's
+ * synchronizer (its own capture delegate: with no renderer of its own, vtkSynchronizedRenderers
+ * forwards both), so IceT composites as before; but the image it hands over is the frame the
+ * bloom composited into the root's framebuffer, read back as a one-rank server reads it, not
+ * IceT's 8-bit composite, which float mode leaves empty.
+ */
+class vtkPVBloomFrameCapture : public vtkSynchronizedRenderers
+{
+public:
+  static vtkPVBloomFrameCapture* New();
+  vtkTypeMacro(vtkPVBloomFrameCapture, vtkSynchronizedRenderers);
+  vtkRenderer* Frame = nullptr; ///< the view's renderer (not this synchronizer's)
+
+protected:
+  vtkPVBloomFrameCapture() { this->AutomaticEventHandling = false; }
+  vtkRawImage& CaptureRenderedImage() override
+  {
+    this->Image.MarkInValid();
+    if (this->Frame)
+    {
+      this->Image.Capture(this->Frame);
+    }
+    return this->Image;
+  }
+};
+vtkStandardNewMacro(vtkPVBloomFrameCapture);
+}
 
 //------------------------------------------------------------------------------
 vtkPVBloomRenderView::vtkPVBloomRenderView()
@@ -108,20 +141,32 @@ void vtkPVBloomRenderView::UpdateFloatComposite()
   auto* icet = vtkIceTSynchronizedRenderers::SafeDownCast(sync->GetParallelSynchronizer());
   vtkIceTCompositePass* composite = icet ? icet->GetIceTCompositePass() : nullptr;
   vtkRenderPass* current = sync->GetRenderPass();
-  // Only where no other render pass (OSPRay, ANARI, value rendering) holds IceT's slot, and
-  // only in pvbatch: a server must hand its client the 8-bit image that float mode omits.
+  // Only where no other render pass (OSPRay, ANARI, value rendering) holds IceT's slot, in
+  // pvbatch and in a server (whose client gets the frame the bloom wrote, below).
+  const int process = vtkProcessModule::GetProcessType();
+  const bool batchOrServer = process == vtkProcessModule::PROCESS_BATCH ||
+    process == vtkProcessModule::PROCESS_SERVER ||
+    process == vtkProcessModule::PROCESS_RENDER_SERVER;
   const bool use = composite && this->UseBloom && this->CompositeFloatColor &&
     !this->GetMakingSelection() && !this->InTileDisplayMode() &&
-    composite->GetImageReductionFactor() <= 1 &&
-    vtkProcessModule::GetProcessType() == vtkProcessModule::PROCESS_BATCH &&
+    composite->GetImageReductionFactor() <= 1 && batchOrServer &&
     (current == nullptr || current == this->CompositeScenePass);
+  this->SendBloomedFrame(use ? icet : nullptr);
   if (use)
   {
-    // The background as the view set it, before ParaView clears it to black for IceT.
+    // The background as the view set it, before ParaView clears it to black for IceT; none
+    // where a client draws it (a server's client-server synchronizer fixes the background:
+    // the server renders over transparent black, and the client blends the premultiplied
+    // frame, glow and its alpha included, over its own background).
     vtkRenderer* renderer = this->GetRenderer();
-    double rgb[3];
-    renderer->GetBackground(rgb);
-    this->BloomPass->SetCompositeBackground(rgb, renderer->GetBackgroundAlpha());
+    vtkSynchronizedRenderers* cs = sync->GetCSSynchronizer();
+    double rgb[3] = { 0.0, 0.0, 0.0 };
+    const bool clientDraws = cs && cs->GetFixBackground();
+    if (!clientDraws)
+    {
+      renderer->GetBackground(rgb);
+    }
+    this->BloomPass->SetCompositeBackground(rgb, clientDraws ? 0.0 : renderer->GetBackgroundAlpha());
     sync->SetRenderPass(this->CompositeScenePass);
     composite->SetEnableFloatValuePass(true);
   }
@@ -131,6 +176,37 @@ void vtkPVBloomRenderView::UpdateFloatComposite()
     composite->SetEnableFloatValuePass(false);
   }
   this->BloomPass->SetCompositePass(use ? composite : nullptr);
+}
+
+//------------------------------------------------------------------------------
+void vtkPVBloomRenderView::SendBloomedFrame(vtkSynchronizedRenderers* icet)
+{
+  // A server's root hands its client what its client-server synchronizer captures, through
+  // IceT's synchronizer (its capture delegate), which also drives IceT's render. With the float
+  // composite, a relay takes the delegate's place: IceT still renders through it, and the image
+  // sent is the frame the bloom wrote (vtkPVBloomFrameCapture). Batch processes and satellites
+  // have no client-server synchronizer.
+  vtkSynchronizedRenderers* cs = this->SynchronizedRenderers->GetCSSynchronizer();
+  if (!cs)
+  {
+    return;
+  }
+  vtkSynchronizedRenderers* current = cs->GetCaptureDelegate();
+  if (icet && current == icet)
+  {
+    if (!this->FrameCapture)
+    {
+      auto capture = vtkSmartPointer<vtkPVBloomFrameCapture>::New();
+      capture->Frame = this->GetRenderer();
+      this->FrameCapture = capture;
+    }
+    this->FrameCapture->SetCaptureDelegate(icet);
+    cs->SetCaptureDelegate(this->FrameCapture);
+  }
+  else if (!icet && this->FrameCapture && current == this->FrameCapture)
+  {
+    cs->SetCaptureDelegate(this->FrameCapture->GetCaptureDelegate());
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -23,6 +23,11 @@
  *   send to its client, so servers, tile displays, reduced interactive images and selection
  *   renders keep the 8-bit composite.
  *
+ * Screenshots larger than the view render in tiles; where this process renders the whole scene
+ * (no IceT), each tile blooms with the whole frame's chain and a guard band
+ * (vtkBloomPass::SeamlessTiles), and the renderer culls nothing while the window is tiled, so
+ * the screenshot has no seams. Under IceT each tile blooms alone.
+ *
  * With ParaView's tone mapping on (UseToneMapping), the tone mapping pass stays outermost and
  * bloom becomes its delegate: bloom in linear HDR, then tone mapping. During a selection
  * render the view leaves the slot empty, as ParaView does.
@@ -37,6 +42,7 @@
 
 #include "vtkCullerCollection.h"           // For the cullers kept aside while tiled
 #include "vtkNew.h"                       // For the pass and its parameters
+#include "vtkSmartPointer.h"               // For the server's capture relay
 #include "vtkPVBloomCompositeScenePass.h" // For the float composite
 #include "vtkPVBloomPass.h"               // For the pass
 #include "vtkPVRenderView.h"
@@ -44,6 +50,7 @@
 
 class vtkBloomParameters;
 class vtkPVImageBloom;
+class vtkSynchronizedRenderers;
 
 class VTKPARAVIEWBLOOM_EXPORT vtkPVBloomRenderView : public vtkPVRenderView
 {
@@ -108,6 +115,10 @@ protected:
 
   /// On every rank: IceT's render pass and colour format for the coming render.
   void UpdateFloatComposite();
+  /// A server's root sends its client the bloomed frame, not IceT's 8-bit composite, while
+  /// IceT composites float colour (`icet` non-null); see the implementation.
+  void SendBloomedFrame(vtkSynchronizedRenderers* icet);
+  vtkSmartPointer<vtkSynchronizedRenderers> FrameCapture;
 
   bool UseBloom = true;
   bool CompositeFloatColor = true;

@@ -1,6 +1,7 @@
 """pvbatch script: an HDR scene in the bloom render view, saved as a screenshot.
 
     scripts/pvbatch.sh [-n N] ParaView/Testing/bloom_view_hdr.py OUT.png [FLOAT_COMPOSITE [BLOOM]]
+    scripts/pvserver.sh [-n N] ParaView/Testing/bloom_view_hdr.py OUT.png [FLOAT_COMPOSITE [BLOOM]]
 
 The scene: a sphere split into pieces over the ranks in a dim blue, and in front of it three
 small spheres, all lit by a headlight of intensity 6 (ParaView clamps a property's Ambient to
@@ -9,6 +10,10 @@ what lies above 1 passes the threshold (1.0, knee 0), so a composite clamped to 
 8-bit one, blooms nothing: the image under MPI is the serial one only if IceT composited float
 colour (FLOAT_COMPOSITE, default 1). OUT.png.txt receives whether the bloom read IceT's float
 composite (the view's BloomLastSceneWasComposited).
+
+Run by scripts/pvserver.sh, the script is a pvpython client (`--server PORT` comes first): it
+connects to the pvserver on localhost and forces remote rendering (remote render threshold 0),
+so the server renders, composites and blooms, and the screenshot is the image the client got.
 """
 import os
 import sys
@@ -18,6 +23,10 @@ from paraview.simple import *  # noqa: F403
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from spheres_scene import show_spheres  # noqa: E402
 
+if sys.argv[1] == '--server':
+    Connect('localhost', int(sys.argv[2]))
+    GetSettingsProxy('RenderViewSettings').RemoteRenderThreshold = 0
+    del sys.argv[1:3]
 out = sys.argv[1]
 float_composite = int(sys.argv[2]) if len(sys.argv) > 2 else 1
 use_bloom = int(sys.argv[3]) if len(sys.argv) > 3 else 1

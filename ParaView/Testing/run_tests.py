@@ -15,9 +15,13 @@ number of failed checks. Run by scripts/test.sh (the ParaView leg).
 4. The bloom view: 1 and 3 ranks render the same image (at most 2 levels apart, relative L2
    below 1e-2), which differs clearly from the view with bloom off and matches the baseline
    image Data/bloom-view.png the same way.
+4c. Screenshots larger than the view (rendered by ParaView in tiles) at 2x and 4x equal the view
+   resized to that size, bloom terms within 1 % relative L2, with no seam at the tile edges.
 5. HDR under MPI: bloom_view_hdr.py's scene reaches 6 and blooms only above 1. With 3 ranks
    and IceT compositing float colour (the view's BloomCompositeFloatColor) the image equals
-   the serial one within 1e-3 relative L2; with IceT's 8-bit composite it does not.
+   the serial one within 1e-3 relative L2; with IceT's 8-bit composite it does not. The same
+   script as a pvpython client of a pvserver with 1 and 3 ranks (scripts/pvserver.sh, loopback
+   only, remote rendering) gets the serial image within one level.
 6. Light, not the frame: bloom_view_light.py's figure (a colour-mapped sphere, a text, the
    colour legend, the orientation axes) at the view's defaults equals the view with bloom off
    within one level on the white palette and on a dark background, also with FXAA or tone
@@ -322,6 +326,45 @@ if len(hdr) == 4:
     clamped = relative_l2(clamped_hdr, serial_hdr)
     check(clamped > 0.1, 'IceT\'s 8-bit composite loses the HDR bloom (against serial: %.2e)'
           % clamped)
+
+# 5b. Client-server: a pvpython client against a pvserver of 1 and 3 ranks (loopback only,
+# remote rendering forced) gets the serial pvbatch image of the HDR view within one level: the
+# server composites float colour, blooms it on its root and sends the bloomed frame. With the
+# float composite off, the 3-rank server's IceT 8-bit composite clamps the light (the check can
+# fail).
+def pvserver(ranks, script, *args, timeout=400):
+    """Run a client script against a pvserver through scripts/pvserver.sh, bounded."""
+    command = ['bash', os.path.join(root, 'scripts', 'pvserver.sh'), '-n', str(ranks),
+               os.path.join(here, script)] + list(args)
+    with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
+                          start_new_session=True) as process:
+        try:
+            log, _ = process.communicate(timeout=timeout)
+        except subprocess.TimeoutExpired:
+            os.killpg(process.pid, signal.SIGKILL)
+            log, _ = process.communicate()
+            return -1, log + '\n(killed after %d s)' % timeout
+    return process.returncode, log
+
+
+if (1, 1, 1) in hdr:
+    serial_hdr = hdr[(1, 1, 1)][0]
+    for ranks, float_composite in ((1, 1), (3, 1), (3, 0)):
+        png = os.path.join(out, 'client-server-%d-%d.png' % (ranks, float_composite))
+        status, log = pvserver(ranks, 'bloom_view_hdr.py', png, str(float_composite))
+        check(status == 0 and os.path.exists(png),
+              'bloom_view_hdr.py as a client of a %d-rank pvserver, float composite %d (exit %d)'
+              % (ranks, float_composite, status))
+        if status != 0:
+            print(log[-3000:])
+            continue
+        worst = float(np.abs(load_png(png) - serial_hdr).max())
+        if float_composite:
+            check(worst <= 1, 'client-server, %d rank(s): the client\'s screenshot is pvbatch\'s '
+                  'serial one within %g levels (bound 1)' % (ranks, worst))
+        else:
+            check(worst > 8, 'client-server, 3 ranks, IceT\'s 8-bit composite: %g levels off '
+                  '(the light is clamped)' % worst)
 
 # 6. Light, not the frame: the figure blooms only its lamp, the annotations stay above the glow.
 light = os.path.join(out, 'light')
