@@ -126,10 +126,6 @@ bool vtkPVBloomRenderView::GetBloomLastSceneWasComposited()
 //------------------------------------------------------------------------------
 bool vtkPVBloomRenderView::LocalProcessDisplaysImage()
 {
-  if (this->InTileDisplayMode())
-  {
-    return true;
-  }
   auto* controller = vtkMultiProcessController::GetGlobalController();
   return !controller || controller->GetLocalProcessId() == 0;
 }
@@ -220,8 +216,8 @@ void vtkPVBloomRenderView::AboutToRenderOnLocalProcess(bool interactive)
   }
   vtkPVSynchronizedRenderer* sync = this->SynchronizedRenderers;
   // A tiled screenshot blooms as one frame where this process renders the whole scene; under
-  // IceT the other ranks render their geometry with the tile's camera, which the pass cannot
-  // widen, so each tile blooms alone there.
+  // IceT the other ranks render their geometry with the tile's camera, and IceT composites the
+  // window's size only, so each tile blooms alone there (vtkBloomPass::SeamlessTiles off).
   const bool seamless =
     vtkIceTSynchronizedRenderers::SafeDownCast(sync->GetParallelSynchronizer()) == nullptr;
   this->BloomPass->SetSeamlessTiles(seamless);
@@ -231,7 +227,20 @@ void vtkPVBloomRenderView::AboutToRenderOnLocalProcess(bool interactive)
   // ParaView's own pass in the slot (tone mapping), if any: bloom is never replaced by it
   // silently, it is spliced in as that pass's delegate.
   vtkImageProcessingPass* outer = (slot && slot != bloom) ? slot : nullptr;
-  const bool want = this->UseBloom && this->LocalProcessDisplaysImage();
+  // A tile display shows each rank's tile of the composited frame, and a tile blooming alone
+  // would cut every glow at the tiles' borders: the view refuses, once, rather than show that.
+  const bool tileDisplay = this->InTileDisplayMode();
+  if (tileDisplay && this->UseBloom && !this->TileDisplayRefused)
+  {
+    auto* controller = vtkMultiProcessController::GetGlobalController();
+    if (!controller || controller->GetLocalProcessId() == 0)
+    {
+      vtkWarningMacro(<< "Bloom is off on tile displays: each display would bloom its own "
+                      << "tile alone, cutting the glow at the tiles' borders.");
+    }
+    this->TileDisplayRefused = true;
+  }
+  const bool want = this->UseBloom && !tileDisplay && this->LocalProcessDisplaysImage();
 
   if (outer)
   {
@@ -258,7 +267,7 @@ void vtkPVBloomRenderView::AboutToRenderOnLocalProcess(bool interactive)
 }
 
 //------------------------------------------------------------------------------
-void vtkPVBloomRenderView::CullWholeFrame(bool seamless)
+void vtkPVBloomRenderView::CullWholeFrame(bool bloom)
 {
   // A tile of a screenshot renders with a guard band (vtkBloomPass::SeamlessTiles), and
   // ParaView's delegate draws the props the renderer kept, which it culls against the tile's
@@ -268,7 +277,7 @@ void vtkPVBloomRenderView::CullWholeFrame(bool seamless)
   int scale[2] = { 1, 1 };
   this->GetRenderWindow()->GetTileScale(scale);
   vtkCullerCollection* cullers = renderer->GetCullers();
-  const bool tiled = seamless && (scale[0] > 1 || scale[1] > 1);
+  const bool tiled = bloom && (scale[0] > 1 || scale[1] > 1);
   vtkCullerCollection* from = tiled ? cullers : this->TileCullers.GetPointer();
   vtkCullerCollection* to = tiled ? this->TileCullers.GetPointer() : cullers;
   vtkCollectionSimpleIterator it;

@@ -13,15 +13,17 @@
  *   rank's geometry, composites all ranks, and pastes the composited image into the pass's
  *   target. The bloom therefore runs on the whole composited image, never on one rank's
  *   partial image, so there are no seams at the ranks' boundaries. It runs on the rank that
- *   displays the image (rank 0; every rank in tile-display mode, where each tile blooms
- *   alone).
+ *   displays the image (rank 0). Tile displays are refused: the view renders without bloom
+ *   there, with one warning, since each display would bloom its tile alone.
  * - HDR under MPI: IceT composites 8-bit colour, which would clamp the scene to [0, 1]. In
- *   pvbatch (CompositeFloatColor on, the default) every rank renders through
+ *   pvbatch and pvserver (CompositeFloatColor on, the default) every rank renders through
  *   vtkPVBloomCompositeScenePass into a float target, IceT composites RGBA32F, and
- *   vtkPVBloomPass blooms that float image, over the renderer's single background colour: the
- *   bloom under MPI is the serial one. IceT then leaves no 8-bit image, which a pvserver would
- *   send to its client, so servers, tile displays, reduced interactive images and selection
- *   renders keep the 8-bit composite.
+ *   vtkPVBloomPass blooms that float image, over the renderer's single background colour (a
+ *   server's: over transparent black, which its client blends over its own background): the
+ *   bloom under MPI is the serial one. IceT then leaves no 8-bit image; a server's root sends
+ *   its client the frame the bloom wrote instead (a capture relay in the client-server
+ *   synchronizer, which still drives IceT). Interactive renders with an image reduction factor
+ *   above 1 and selection renders keep the 8-bit composite.
  *
  * Screenshots larger than the view render in tiles; where this process renders the whole scene
  * (no IceT), each tile blooms with the whole frame's chain and a guard band
@@ -110,7 +112,7 @@ protected:
   void AvoidSecondFXAA();
   /// No culling while a screenshot renders in tiles, so that each tile's guard band shows
   /// every prop (see the implementation); the cullers come back afterwards.
-  void CullWholeFrame(bool seamless);
+  void CullWholeFrame(bool bloom);
   vtkNew<vtkCullerCollection> TileCullers;
 
   /// On every rank: IceT's render pass and colour format for the coming render.
@@ -122,6 +124,7 @@ protected:
 
   bool UseBloom = true;
   bool CompositeFloatColor = true;
+  bool TileDisplayRefused = false; ///< the tile-display warning, said once
   vtkNew<vtkPVBloomPass> BloomPass;
   vtkNew<vtkPVBloomCompositeScenePass> CompositeScenePass;
   vtkNew<vtkPVImageBloom> BloomPresetResolver;

@@ -8,7 +8,8 @@ driver brings the loopback up, starts `pvserver` (through mpiexec for more than 
 port 11111 with offscreen rendering, waits up to 60 s for it to accept connections, runs
 `pvpython SCRIPT --server 11111 ARGS...` with a 240 s limit, then stops the server (its whole
 process group, killed if it does not exit within 10 s). The exit status is the client's, or
-124 when a wait timed out.
+124 when a wait timed out. VTKBLOOM_PVSERVER_ARGS adds arguments to pvserver's (a tile
+display: --tdx=2 --tdy=1); VTKBLOOM_PVSERVER_LOG keeps the server's output in that file.
 """
 import fcntl
 import os
@@ -49,6 +50,7 @@ def main():
     loopback_up()
     server = ['pvserver', '--server-port=%d' % PORT, '--hostname=localhost',
               '--force-offscreen-rendering']
+    server += os.environ.get('VTKBLOOM_PVSERVER_ARGS', '').split()
     if ranks > 1:
         server = ['mpiexec', '-n', str(ranks)] + server
     log_path = os.environ.get('VTKBLOOM_PVSERVER_LOG') or os.path.join(

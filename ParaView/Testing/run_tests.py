@@ -332,12 +332,12 @@ if len(hdr) == 4:
 # server composites float colour, blooms it on its root and sends the bloomed frame. With the
 # float composite off, the 3-rank server's IceT 8-bit composite clamps the light (the check can
 # fail).
-def pvserver(ranks, script, *args, timeout=400):
+def pvserver(ranks, script, *args, timeout=400, env=None):
     """Run a client script against a pvserver through scripts/pvserver.sh, bounded."""
     command = ['bash', os.path.join(root, 'scripts', 'pvserver.sh'), '-n', str(ranks),
                os.path.join(here, script)] + list(args)
     with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                          start_new_session=True) as process:
+                          start_new_session=True, env=dict(os.environ, **(env or {}))) as process:
         try:
             log, _ = process.communicate(timeout=timeout)
         except subprocess.TimeoutExpired:
@@ -365,6 +365,16 @@ if (1, 1, 1) in hdr:
         else:
             check(worst > 8, 'client-server, 3 ranks, IceT\'s 8-bit composite: %g levels off '
                   '(the light is clamped)' % worst)
+    # A tile display (2 x 1 tiles, 2 ranks): refused with one warning, never a cut glow.
+    server_log = os.path.join(out, 'tile-display-server.log')
+    png = os.path.join(out, 'tile-display.png')
+    status, log = pvserver(2, 'bloom_view_hdr.py', png, env={
+        'VTKBLOOM_PVSERVER_ARGS': '--tdx=2 --tdy=1', 'VTKBLOOM_PVSERVER_LOG': server_log})
+    warnings = open(server_log).read().count('Bloom is off on tile displays') \
+        if os.path.exists(server_log) else -1
+    check(status == 0 and warnings == 1,
+          'a tile display renders without bloom, with one warning (exit %d, %d warning(s))'
+          % (status, warnings))
 
 # 6. Light, not the frame: the figure blooms only its lamp, the annotations stay above the glow.
 light = os.path.join(out, 'light')
