@@ -131,6 +131,16 @@ bool vtkPVBloomRenderView::LocalProcessDisplaysImage()
 }
 
 //------------------------------------------------------------------------------
+bool vtkPVBloomRenderView::TiledInParallel()
+{
+  int scale[2] = { 1, 1 };
+  this->GetRenderWindow()->GetTileScale(scale);
+  return (scale[0] > 1 || scale[1] > 1) &&
+    vtkIceTSynchronizedRenderers::SafeDownCast(
+      this->SynchronizedRenderers->GetParallelSynchronizer()) != nullptr;
+}
+
+//------------------------------------------------------------------------------
 void vtkPVBloomRenderView::UpdateFloatComposite()
 {
   vtkPVSynchronizedRenderer* sync = this->SynchronizedRenderers;
@@ -144,7 +154,7 @@ void vtkPVBloomRenderView::UpdateFloatComposite()
     process == vtkProcessModule::PROCESS_SERVER ||
     process == vtkProcessModule::PROCESS_RENDER_SERVER;
   const bool use = composite && this->UseBloom && this->CompositeFloatColor &&
-    !this->GetMakingSelection() && !this->InTileDisplayMode() &&
+    !this->GetMakingSelection() && !this->InTileDisplayMode() && !this->TiledInParallel() &&
     composite->GetImageReductionFactor() <= 1 && batchOrServer &&
     (current == nullptr || current == this->CompositeScenePass);
   this->SendBloomedFrame(use ? icet : nullptr);
@@ -215,13 +225,22 @@ void vtkPVBloomRenderView::AboutToRenderOnLocalProcess(bool interactive)
     return; // ParaView emptied the slot for the selection render, and refills it afterwards.
   }
   vtkPVSynchronizedRenderer* sync = this->SynchronizedRenderers;
-  // A tiled screenshot blooms as one frame where this process renders the whole scene; under
-  // IceT the other ranks render their geometry with the tile's camera, and IceT composites the
-  // window's size only, so each tile blooms alone there (vtkBloomPass::SeamlessTiles off).
-  const bool seamless =
-    vtkIceTSynchronizedRenderers::SafeDownCast(sync->GetParallelSynchronizer()) == nullptr;
-  this->BloomPass->SetSeamlessTiles(seamless);
-  this->CullWholeFrame(seamless && this->UseBloom);
+  // A screenshot larger than the view renders in tiles, and blooms as one frame where this
+  // process renders the whole scene (vtkBloomPass::SeamlessTiles). Under IceT the ranks render
+  // the tile with its own camera and IceT composites the window's size only, so a tile would
+  // bloom alone: such a screenshot is refused (rendered without bloom, said once).
+  const bool parallel =
+    vtkIceTSynchronizedRenderers::SafeDownCast(sync->GetParallelSynchronizer()) != nullptr;
+  const bool tiledInParallel = this->TiledInParallel();
+  if (tiledInParallel && this->UseBloom && !this->TiledScreenshotRefused &&
+    this->LocalProcessDisplaysImage())
+  {
+    vtkWarningMacro(<< "Bloom is off for a screenshot larger than the view under MPI: IceT "
+                    << "composites it tile by tile, and each tile would bloom alone. Resize "
+                    << "the view to the screenshot's size instead.");
+    this->TiledScreenshotRefused = true;
+  }
+  this->CullWholeFrame(!parallel && this->UseBloom);
   vtkImageProcessingPass* slot = sync->GetImageProcessingPass();
   vtkPVBloomPass* bloom = this->BloomPass;
   // ParaView's own pass in the slot (tone mapping), if any: bloom is never replaced by it
@@ -240,7 +259,8 @@ void vtkPVBloomRenderView::AboutToRenderOnLocalProcess(bool interactive)
     }
     this->TileDisplayRefused = true;
   }
-  const bool want = this->UseBloom && !tileDisplay && this->LocalProcessDisplaysImage();
+  const bool want =
+    this->UseBloom && !tileDisplay && !tiledInParallel && this->LocalProcessDisplaysImage();
 
   if (outer)
   {

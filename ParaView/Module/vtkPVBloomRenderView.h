@@ -28,7 +28,8 @@
  * Screenshots larger than the view render in tiles; where this process renders the whole scene
  * (no IceT), each tile blooms with the whole frame's chain and a guard band
  * (vtkBloomPass::SeamlessTiles), and the renderer culls nothing while the window is tiled, so
- * the screenshot has no seams. Under IceT each tile blooms alone.
+ * the screenshot has no seams. Under IceT (several ranks) IceT composites one tile at a time,
+ * and a tile would bloom alone: such a screenshot renders without bloom, with one warning.
  *
  * With ParaView's tone mapping on (UseToneMapping), the tone mapping pass stays outermost and
  * bloom becomes its delegate: bloom in linear HDR, then tone mapping. During a selection
@@ -115,6 +116,8 @@ protected:
   void CullWholeFrame(bool bloom);
   vtkNew<vtkCullerCollection> TileCullers;
 
+  /// Whether the coming render is a tile of a screenshot larger than the view, under IceT.
+  bool TiledInParallel();
   /// On every rank: IceT's render pass and colour format for the coming render.
   void UpdateFloatComposite();
   /// A server's root sends its client the bloomed frame, not IceT's 8-bit composite, while
@@ -124,7 +127,8 @@ protected:
 
   bool UseBloom = true;
   bool CompositeFloatColor = true;
-  bool TileDisplayRefused = false; ///< the tile-display warning, said once
+  bool TileDisplayRefused = false;     ///< the tile-display warning, said once
+  bool TiledScreenshotRefused = false; ///< the tiled-screenshot-under-MPI warning, said once
   vtkNew<vtkPVBloomPass> BloomPass;
   vtkNew<vtkPVBloomCompositeScenePass> CompositeScenePass;
   vtkNew<vtkPVImageBloom> BloomPresetResolver;
