@@ -125,9 +125,7 @@ void vtkBloomChain::GetInputRange(int axis, int outMin, int outMax, int& inMin, 
   {
     return;
   }
-  auto along = [axis](const Term& t) -> const vtkBloomLinearOperator& {
-    return axis ? t.Y : t.X;
-  };
+  auto along = [axis](const Term& t) -> const vtkBloomLinearOperator& { return axis ? t.Y : t.X; };
   // Each level's samples that the output reads (at the level's resolution)...
   std::vector<std::pair<int, int>> read(this->Levels.size(), { 0, -1 });
   int a = outMin, b = outMax;
@@ -211,7 +209,8 @@ void vtkBloomChain::Cut(const vtkBloomChain& frame, const int begin[2], const in
   }
   const std::array<int, 4> image = { begin[0], end[0], begin[1], end[1] };
   // One term, its rows `out` over its inputs `in`.
-  auto cut = [](const Term& t, const std::array<int, 4>& out, const std::array<int, 4>& in) {
+  auto cut = [](const Term& t, const std::array<int, 4>& out, const std::array<int, 4>& in)
+  {
     return Term{ t.Weight, t.X.Cut(out[0], out[1], in[0], in[1]),
       t.Y.Cut(out[2], out[3], in[2], in[3]) };
   };

@@ -158,7 +158,7 @@ public:
   /// tiled frame (SeamlessTiles), the tile and its guard band.
   vtkBloomPassTile Tile;
   vtkBloomPassTileFrame TileFrame; ///< the chain of the whole tiled frame
-  void PlanTile(vtkBloomPass* self, vtkRenderer* r, int w, int h);
+  void PlanTile(vtkBloomPass* self, vtkRenderer* r, int w, int h, vtkProp**& props, int& count);
 
   /**
    * The renderer culled its props against the tile's frustum, before the pass could widen it:
@@ -168,7 +168,8 @@ public:
   std::vector<vtkProp*> TileProps;
   void PropsOfTile(vtkRenderer* r, vtkProp**& props, int& count)
   {
-    if (this->Tile.Size[0] == this->Tile.TileSize[0] && this->Tile.Size[1] == this->Tile.TileSize[1])
+    if (this->Tile.Size[0] == this->Tile.TileSize[0] &&
+      this->Tile.Size[1] == this->Tile.TileSize[1])
     {
       return;
     }
@@ -285,11 +286,13 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPass::vtkInternals::PlanTile(vtkBloomPass* self, vtkRenderer* r, int w, int h)
+void vtkBloomPass::vtkInternals::PlanTile(
+  vtkBloomPass* self, vtkRenderer* r, int w, int h, vtkProp**& props, int& count)
 {
   vtkBloomPassTile& tile = this->Tile;
   tile.Locate(r, w, h);
   std::fill(this->Runner.CompositeWindow, this->Runner.CompositeWindow + 4, 0);
+  std::fill(self->LastTileGuardBand, self->LastTileGuardBand + 2, 0);
   if (!tile.Tiled || !self->SeamlessTiles)
   {
     tile = vtkBloomPassTile();
@@ -317,7 +320,8 @@ void vtkBloomPass::vtkInternals::PlanTile(vtkBloomPass* self, vtkRenderer* r, in
     }
     else
     {
-      this->TileFrame.Chain.GetInputRange(a, at[a], at[a] + tile.TileSize[a] - 1, first[a], last[a]);
+      this->TileFrame.Chain.GetInputRange(
+        a, at[a], at[a] + tile.TileSize[a] - 1, first[a], last[a]);
       ++last[a];
     }
   }
@@ -338,6 +342,9 @@ void vtkBloomPass::vtkInternals::PlanTile(vtkBloomPass* self, vtkRenderer* r, in
   window[1] = tile.Inner[0] + tile.TileSize[0];
   window[2] = tile.Inner[1];
   window[3] = tile.Inner[1] + tile.TileSize[1];
+  self->LastTileGuardBand[0] = tile.Size[0] - w;
+  self->LastTileGuardBand[1] = tile.Size[1] - h;
+  this->PropsOfTile(r, props, count);
 }
 
 //------------------------------------------------------------------------------
@@ -618,13 +625,10 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   glGetIntegerv(GL_SAMPLES, &samples);
   // The part rendered: the renderer's tile, with its guard band where the frame is tiled, and
   // the props it shows.
-  in.PlanTile(this, r, w, h);
-  const vtkBloomPassTile& tile = in.Tile;
-  this->LastTileGuardBand[0] = tile.Size[0] - w;
-  this->LastTileGuardBand[1] = tile.Size[1] - h;
   vtkProp** props = s->GetPropArray();
   int count = s->GetPropArrayCount();
-  in.PropsOfTile(r, props, count);
+  in.PlanTile(this, r, w, h, props, count);
+  const vtkBloomPassTile& tile = in.Tile;
   // Selective bloom: in the scene's own render where it can be, else the emitters again.
   const bool selective = this->EmissionSource == EMISSION_EMITTERS;
   const bool inScene = selective &&

@@ -241,8 +241,8 @@ void vtkBloomPassResources::AllocateScene(int width, int height, bool emitters, 
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassResources::ChainIsStale(vtkBloomParameters* parameters, int width, int height,
-  const int part[4], bool fast) const
+bool vtkBloomPassResources::ChainIsStale(
+  vtkBloomParameters* parameters, int width, int height, const int part[4], bool fast) const
 {
   // The chain depends on the size, the part of a frame, the parameters and the quality only.
   return this->ChainTime == 0 || this->ChainParameters != parameters ||

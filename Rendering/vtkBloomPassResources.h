@@ -168,16 +168,16 @@ public:
   void AllocateScene(int width, int height, bool emitters, int samples);
 
   /// Whether the chain was built for other or older parameters, or another size or part.
-  bool ChainIsStale(vtkBloomParameters* parameters, int width, int height, const int part[4],
-    bool fast) const;
+  bool ChainIsStale(
+    vtkBloomParameters* parameters, int width, int height, const int part[4], bool fast) const;
 
   /**
    * Build the chain for `parameters` at width x height, or cut it from `frame`'s chain to
    * `part` (x0 x1 y0 y1 of a tiled frame; vtkBloomChain::Cut), and make its targets: RGBA32F,
    * or with `fast` RGBA16F with bilinear filtering (vtkBloomPass::QUALITY_FAST).
    */
-  void BuildChain(vtkBloomParameters* parameters, int width, int height,
-    const vtkBloomChain* frame, const int part[4], bool fast);
+  void BuildChain(vtkBloomParameters* parameters, int width, int height, const vtkBloomChain* frame,
+    const int part[4], bool fast);
   bool ChainIsFast = false;
   int ChainPart[4] = { 0, 0, 0, 0 }; ///< the part of a tiled frame; all 0 untiled
 

@@ -20,9 +20,9 @@
 #ifndef vtkBloomPassTile_h
 #define vtkBloomPassTile_h
 
-#include "vtkBloomChain.h"    // For the reach
-#include "vtkSmartPointer.h"  // For the camera's transform
-#include "vtkType.h"          // For vtkMTimeType
+#include "vtkBloomChain.h"   // For the reach
+#include "vtkSmartPointer.h" // For the camera's transform
+#include "vtkType.h"         // For vtkMTimeType
 
 class vtkBloomParameters;
 class vtkCamera;

@@ -172,7 +172,8 @@ void vtkPVBloomRenderView::UpdateFloatComposite()
     {
       renderer->GetBackground(rgb);
     }
-    this->BloomPass->SetCompositeBackground(rgb, clientDraws ? 0.0 : renderer->GetBackgroundAlpha());
+    this->BloomPass->SetCompositeBackground(
+      rgb, clientDraws ? 0.0 : renderer->GetBackgroundAlpha());
     sync->SetRenderPass(this->CompositeScenePass);
     composite->SetEnableFloatValuePass(true);
   }

@@ -43,13 +43,13 @@
 #ifndef vtkPVBloomRenderView_h
 #define vtkPVBloomRenderView_h
 
-#include "vtkCullerCollection.h"           // For the cullers kept aside while tiled
+#include "vtkCullerCollection.h"          // For the cullers kept aside while tiled
 #include "vtkNew.h"                       // For the pass and its parameters
-#include "vtkSmartPointer.h"               // For the server's capture relay
 #include "vtkPVBloomCompositeScenePass.h" // For the float composite
 #include "vtkPVBloomPass.h"               // For the pass
 #include "vtkPVRenderView.h"
 #include "vtkParaViewBloomModule.h" // For export macro
+#include "vtkSmartPointer.h"        // For the server's capture relay
 
 class vtkBloomParameters;
 class vtkPVImageBloom;

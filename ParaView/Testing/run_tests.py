@@ -53,11 +53,8 @@ def check(ok, what):
     failures += 0 if ok else 1
 
 
-def pvbatch(ranks, script, *args, timeout=300, env=None):
-    """Run a script under scripts/pvbatch.sh; a run that hangs is killed with its processes.
-    A script name starting with '-' is passed to pvbatch as it is (--sym, -m MODULE)."""
-    command = ['bash', os.path.join(root, 'scripts', 'pvbatch.sh'), '-n', str(ranks),
-               script if script.startswith('-') else os.path.join(here, script)] + list(args)
+def bounded(command, timeout, env=None):
+    """Run a command in a session of its own; one that hangs is killed with its processes."""
     with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                           start_new_session=True, env=dict(os.environ, **(env or {}))) as process:
         try:
@@ -67,6 +64,14 @@ def pvbatch(ranks, script, *args, timeout=300, env=None):
             log, _ = process.communicate()
             return -1, log + '\n(killed after %d s)' % timeout
     return process.returncode, log
+
+
+def pvbatch(ranks, script, *args, timeout=300, env=None):
+    """Run a script under scripts/pvbatch.sh, bounded. A script name starting with '-' is
+    passed to pvbatch as it is (--sym, -m MODULE)."""
+    command = ['bash', os.path.join(root, 'scripts', 'pvbatch.sh'), '-n', str(ranks),
+               script if script.startswith('-') else os.path.join(here, script)] + list(args)
+    return bounded(command, timeout, env)
 
 
 def load_exr(path):
@@ -351,15 +356,7 @@ def pvserver(ranks, script, *args, timeout=400, env=None):
     """Run a client script against a pvserver through scripts/pvserver.sh, bounded."""
     command = ['bash', os.path.join(root, 'scripts', 'pvserver.sh'), '-n', str(ranks),
                os.path.join(here, script)] + list(args)
-    with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
-                          start_new_session=True, env=dict(os.environ, **(env or {}))) as process:
-        try:
-            log, _ = process.communicate(timeout=timeout)
-        except subprocess.TimeoutExpired:
-            os.killpg(process.pid, signal.SIGKILL)
-            log, _ = process.communicate()
-            return -1, log + '\n(killed after %d s)' % timeout
-    return process.returncode, log
+    return bounded(command, timeout, env)
 
 
 if (1, 1, 1) in hdr:

@@ -1,9 +1,9 @@
 // vtkBloomChain::Cut and GetInputRange, the chain of a tile with its guard band (issue 36,
 // part 2): the frame's chain cut to a part of the frame, evaluated on that part of the input,
 // gives the frame's bloom on the tile to double rounding wherever the part holds every sample
-// GetInputRange names, for every preset and both accumulations; the tile alone does not. The evaluator here is
-// the chain's definition (vtkBloomChain.h) in double precision on plain arrays, written apart
-// from the filters and the render pass.
+// GetInputRange names, for every preset and both accumulations; the tile alone does not. The
+// evaluator here is the chain's definition (vtkBloomChain.h) in double precision on plain arrays,
+// written apart from the filters and the render pass.
 #include "vtkBloomChain.h"
 #include "vtkBloomParameters.h"
 #include "vtkNew.h"
@@ -30,7 +30,8 @@ struct Image
 // out = Weight * Y X in (the separable term of a step).
 Image Apply(const vtkBloomChain::Term& t, const Image& in)
 {
-  Image mid{ t.X.OutputSize, in.H, std::vector<double>(static_cast<size_t>(t.X.OutputSize) * in.H) };
+  Image mid{ t.X.OutputSize, in.H,
+    std::vector<double>(static_cast<size_t>(t.X.OutputSize) * in.H) };
   for (int j = 0; j < in.H; ++j)
   {
     for (int i = 0; i < t.X.OutputSize; ++i)
@@ -43,7 +44,8 @@ Image Apply(const vtkBloomChain::Term& t, const Image& in)
       mid.At(i, j) = sum;
     }
   }
-  Image out{ mid.W, t.Y.OutputSize, std::vector<double>(static_cast<size_t>(mid.W) * t.Y.OutputSize) };
+  Image out{ mid.W, t.Y.OutputSize,
+    std::vector<double>(static_cast<size_t>(mid.W) * t.Y.OutputSize) };
   for (int j = 0; j < t.Y.OutputSize; ++j)
   {
     for (int i = 0; i < mid.W; ++i)

@@ -6,6 +6,7 @@
 // TestBloomPassGallery.cxx.
 #include "vtkBloomPass.h"
 #include "vtkBloomPassTestWindow.h"
+#include "vtkBloomPassThroughRenderer.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -89,24 +90,6 @@ int LargestDifference(const std::vector<int>& a, const std::vector<int>& b)
   }
   return largest;
 }
-
-// A delegate that renders through the renderer, as ParaView's vtkPVDefaultPass does: its
-// lights, then vtkOpenGLRenderer::UpdateGeometry, which applies the renderer's FXAA itself.
-class ThroughTheRenderer : public vtkDefaultPass
-{
-public:
-  static ThroughTheRenderer* New();
-  vtkTypeMacro(ThroughTheRenderer, vtkDefaultPass);
-  void Render(const vtkRenderState* s) override
-  {
-    vtkRenderer* renderer = s->GetRenderer();
-    this->ClearLights(renderer);
-    this->UpdateLightGeometry(renderer);
-    this->UpdateLights(renderer);
-    this->UpdateGeometry(renderer, s->GetFrameBuffer());
-  }
-};
-vtkStandardNewMacro(ThroughTheRenderer);
 
 // A white-background figure as users make them: a lit grey sphere and a dark label; with
 // `lamp`, an orange HDR lamp beside it.
@@ -379,7 +362,7 @@ TEST(RenderingBloomPassLight, TheRenderersFXAAStaysOutOfTheScene)
     figure.Label->VisibilityOff();
     figure.W.Renderer->UseFXAAOn();
     vtkNew<vtkCameraPass> camera;
-    vtkNew<ThroughTheRenderer> through;
+    vtkNew<vtkBloomPassThroughRenderer> through;
     camera->SetDelegatePass(through);
     figure.W.Bloom->SetDelegatePass(camera);
     const std::vector<int> plain = figure.Render(false);

@@ -7,6 +7,7 @@
 // which must fail it. The scenes are built as users build them: lit and emissive props across
 // the tile edges, a light background, two viewports side by side.
 #include "vtkBloomPass.h"
+#include "vtkBloomPassThroughRenderer.h"
 
 #include "vtkActor.h"
 #include "vtkCamera.h"
@@ -35,24 +36,6 @@
 
 namespace
 {
-// A delegate that renders the scene through the renderer (its culled props), as ParaView's
-// vtkPVDefaultPass does, under a vtkCameraPass.
-class ThroughTheRenderer : public vtkDefaultPass
-{
-public:
-  static ThroughTheRenderer* New();
-  vtkTypeMacro(ThroughTheRenderer, vtkDefaultPass);
-  void Render(const vtkRenderState* s) override
-  {
-    vtkRenderer* renderer = s->GetRenderer();
-    this->ClearLights(renderer);
-    this->UpdateLightGeometry(renderer);
-    this->UpdateLights(renderer);
-    this->UpdateGeometry(renderer, s->GetFrameBuffer());
-  }
-};
-vtkStandardNewMacro(ThroughTheRenderer);
-
 // An RGB frame, row 0 at the bottom.
 struct Frame
 {
@@ -63,8 +46,8 @@ struct Frame
   double At(int i, int j, int c) const { return this->Values[3 * (j * this->Width + i) + c]; }
 };
 
-void AddSphere(vtkRenderer* renderer, double x, double y, double radius, const double colour[3],
-  double emission)
+void AddSphere(
+  vtkRenderer* renderer, double x, double y, double radius, const double colour[3], double emission)
 {
   vtkNew<vtkSphereSource> source;
   source->SetCenter(x, y, 0.0);
@@ -127,7 +110,7 @@ Frame Render(int width, int height, int scale, bool bloom, bool seamless, int vi
                                     : vtkSmartPointer<vtkBloomPass>::New();
       vtkNew<vtkRenderStepsPass> steps;
       vtkNew<vtkCameraPass> camera;
-      vtkNew<ThroughTheRenderer> through;
+      vtkNew<vtkBloomPassThroughRenderer> through;
       camera->SetDelegatePass(through);
       pass->SetDelegatePass(throughRenderer ? static_cast<vtkRenderPass*>(camera) : steps);
       pass->SetSeamlessTiles(seamless);
@@ -310,7 +293,7 @@ TEST(RenderingBloomPassTiles, TheGuardBandIsWhatTheTilesGlowReads)
 //------------------------------------------------------------------------------
 // A delegate that renders through the renderer, as ParaView's does: the renderer culled its
 // props against the tile, and sets the viewport from its tiled size.
-TEST(RenderingBloomPassTiles, ADelegateThroughTheRendererTilesAsTheFrame)
+TEST(RenderingBloomPassTiles, ADelegatevtkBloomPassThroughRendererTilesAsTheFrame)
 {
   const int w = 160, h = 120, scale = 2;
   const Frame reference = BloomTerm(w * scale, h * scale, 1, true, 1, true);
