@@ -11,7 +11,6 @@ import argparse
 import os
 import sys
 
-from paraview.demos.wavelet_miniapp import create_dataset
 from paraview.simple import Render, SaveScreenshot, TrivialProducer
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -21,6 +20,9 @@ out, steps = sys.argv[1], int(sys.argv[2])
 os.makedirs(out, exist_ok=True)
 producer = TrivialProducer()
 view = bloom_view()
+# After the view: ParaView 6.1's mini-app module initializes ParaView on import, and a session
+# it starts does not load PV_PLUGIN_PATH's plugins.
+from paraview.demos.wavelet_miniapp import create_dataset  # noqa: E402
 for step in range(steps):
     dataset, _ = create_dataset(step, argparse.Namespace(size=101), 0, 1)
     producer.GetClientSideObject().SetOutput(dataset)
