@@ -5,6 +5,7 @@
 // fails where the feature is missing. The gallery of users' configurations is
 // TestBloomPassGallery.cxx.
 #include "vtkBloomPass.h"
+#include "vtkBloomPassTestSphere.h"
 #include "vtkBloomPassTestWindow.h"
 #include "vtkBloomPassThroughRenderer.h"
 
@@ -35,32 +36,6 @@
 
 namespace
 {
-// A lit sphere of `colour` at `centre` with `radius`; `emission` > 0 makes it a lamp (unlit,
-// its ambient colour `emission` times `colour`: HDR above 1, as users make emissive props;
-// vtkProperty clamps the ambient coefficient to 1, not the colour).
-vtkSmartPointer<vtkActor> Sphere(
-  const double centre[3], double radius, const double colour[3], double emission = 0.0)
-{
-  vtkNew<vtkSphereSource> source;
-  source->SetCenter(centre[0], centre[1], centre[2]);
-  source->SetRadius(radius);
-  source->SetThetaResolution(48);
-  source->SetPhiResolution(24);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(source->GetOutputPort());
-  auto actor = vtkSmartPointer<vtkActor>::New();
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
-  if (emission > 0.0)
-  {
-    actor->GetProperty()->SetAmbient(1.0);
-    actor->GetProperty()->SetDiffuse(0.0);
-    actor->GetProperty()->SetAmbientColor(
-      emission * colour[0], emission * colour[1], emission * colour[2]);
-  }
-  return actor;
-}
-
 // The window's frame as 8-bit RGB.
 std::vector<int> Grab(vtkRenderWindow* window)
 {
@@ -103,10 +78,10 @@ struct Figure
     this->W.Bloom->BloomBackgroundOff(); // the default (BloomWindow turns it on)
     const double grey[3] = { 0.8, 0.8, 0.8 }, orange[3] = { 1.0, 0.5, 0.2 };
     const double centre[3] = { -0.6, 0.0, 0.0 }, lampCentre[3] = { 1.1, 0.3, 0.0 };
-    this->W.Renderer->AddActor(Sphere(centre, 0.8, grey));
+    this->W.Renderer->AddActor(vtkBloomPassTestSphere(centre, 0.8, grey));
     if (lamp)
     {
-      this->W.Renderer->AddActor(Sphere(lampCentre, 0.15, orange, 4.0));
+      this->W.Renderer->AddActor(vtkBloomPassTestSphere(lampCentre, 0.15, orange, 4.0));
     }
     this->W.Renderer->SetBackground(background[0], background[1], background[2]);
     this->Label->SetInput("T = 300 K");
@@ -307,7 +282,7 @@ TEST(RenderingBloomPassLight, AnLDREmitterGlows)
   const double black[3] = { 0.0, 0.0, 0.0 };
   Figure figure(black, false);
   const double centre[3] = { 1.1, 0.3, 0.0 }, colour[3] = { 0.6, 0.5, 0.2 };
-  vtkSmartPointer<vtkActor> emitter = Sphere(centre, 0.15, colour, 1.0);
+  vtkSmartPointer<vtkActor> emitter = vtkBloomPassTestSphere(centre, 0.15, colour, 1.0);
   figure.W.Renderer->AddActor(emitter);
   figure.W.Bloom->SetEmissionSourceToEmitters();
   figure.W.Bloom->AddEmitter(emitter);
@@ -333,7 +308,7 @@ TEST(RenderingBloomPassLight, TranslucentGeometryIsThePlainFrame)
     const double colours[2][3] = { { 0.2, 0.5, 0.9 }, { 0.9, 0.3, 0.2 } };
     for (int i = 0; i < 2; ++i)
     {
-      vtkSmartPointer<vtkActor> glass = Sphere(centres[i], 0.6, colours[i]);
+      vtkSmartPointer<vtkActor> glass = vtkBloomPassTestSphere(centres[i], 0.6, colours[i]);
       glass->GetProperty()->SetOpacity(0.4);
       figure.W.Renderer->AddActor(glass);
     }

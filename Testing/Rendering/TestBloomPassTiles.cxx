@@ -7,6 +7,7 @@
 // which must fail it. The scenes are built as users build them: lit and emissive props across
 // the tile edges, a light background, two viewports side by side.
 #include "vtkBloomPass.h"
+#include "vtkBloomPassTestSphere.h"
 #include "vtkBloomPassThroughRenderer.h"
 
 #include "vtkActor.h"
@@ -49,25 +50,8 @@ struct Frame
 void AddSphere(
   vtkRenderer* renderer, double x, double y, double radius, const double colour[3], double emission)
 {
-  vtkNew<vtkSphereSource> source;
-  source->SetCenter(x, y, 0.0);
-  source->SetRadius(radius);
-  source->SetThetaResolution(48);
-  source->SetPhiResolution(24);
-  vtkNew<vtkPolyDataMapper> mapper;
-  mapper->SetInputConnection(source->GetOutputPort());
-  vtkNew<vtkActor> actor;
-  actor->SetMapper(mapper);
-  actor->GetProperty()->SetColor(colour[0], colour[1], colour[2]);
-  if (emission > 0.0)
-  {
-    // A lamp: unlit, its ambient colour above 1, as users make emissive props.
-    actor->GetProperty()->SetAmbient(1.0);
-    actor->GetProperty()->SetDiffuse(0.0);
-    actor->GetProperty()->SetAmbientColor(
-      emission * colour[0], emission * colour[1], emission * colour[2]);
-  }
-  renderer->AddActor(actor);
+  const double centre[3] = { x, y, 0.0 };
+  renderer->AddActor(vtkBloomPassTestSphere(centre, radius, colour, emission));
 }
 
 // Lamps across the middle of the frame (where 2 x 2 and 4 x 4 tiles meet) and near its edges,
