@@ -193,10 +193,19 @@ void vtkBloomChain::Cut(const vtkBloomChain& frame, const int begin[2], const in
   this->Width = end[0] - begin[0];
   this->Height = end[1] - begin[1];
   const int full[2] = { frame.Width, frame.Height };
-  // The samples of level i kept along each axis: those under the part, two more each side.
+  // The samples of level i kept along each axis: those under the part, two more each side;
+  // where level 0 is the image itself (the bright pass at full resolution), the part.
+  const std::array<int, 4> image = { begin[0], end[0], begin[1], end[1] };
   std::vector<std::array<int, 4>> kept(frame.Levels.size());
   for (size_t i = 0; i < frame.Levels.size(); ++i)
   {
+    if (i == 0 && frame.SourceIsIdentity)
+    {
+      kept[0] = image;
+      this->Levels[0].Size[0] = this->Width;
+      this->Levels[0].Size[1] = this->Height;
+      continue;
+    }
     for (int a = 0; a < 2; ++a)
     {
       const long long n = frame.Levels[i].Size[a];
@@ -207,7 +216,6 @@ void vtkBloomChain::Cut(const vtkBloomChain& frame, const int begin[2], const in
       this->Levels[i].Size[a] = kept[i][2 * a + 1] - kept[i][2 * a];
     }
   }
-  const std::array<int, 4> image = { begin[0], end[0], begin[1], end[1] };
   // One term, its rows `out` over its inputs `in`.
   auto cut = [](const Term& t, const std::array<int, 4>& out, const std::array<int, 4>& in)
   {

@@ -73,7 +73,7 @@ public:
    * larger frame with its guard band): every operator's rows for the part's samples of each
    * level (Cut), so that the part's bloom is the frame's bloom wherever the frame's bloom reads
    * only samples of the part (GetInputRange). Each level keeps the samples under the part, and
-   * two more on each side.
+   * two more on each side; a level 0 that is the image itself keeps the part.
    */
   void Cut(const vtkBloomChain& frame, const int begin[2], const int end[2]);
 
