@@ -309,12 +309,12 @@ void vtkBloomPass::vtkInternals::PlanTile(
   {
     this->TileFrame.Update(parameters, tile.Frame);
   }
+  // In PSF mode, the PSF's radius (full resolution, no pyramid).
+  const int radius = psf && this->UpdateKernels(parameters) ? this->KernelsRadius : 0;
   for (int a = 0; a < 2; ++a)
   {
     if (psf)
     {
-      // The PSF's radius (full resolution, no pyramid).
-      const int radius = this->UpdateKernels(parameters) ? this->KernelsRadius : 0;
       first[a] = at[a] - radius;
       last[a] = at[a] + tile.TileSize[a] + radius;
     }

@@ -100,15 +100,7 @@ vtkBloomPassTileCamera::vtkBloomPassTileCamera(vtkRenderer* renderer, const vtkB
     return;
   }
   this->Camera = renderer->GetActiveCamera();
-  this->Window = renderer->GetVTKWindow();
   this->Saved = this->Camera->GetUserTransform();
-  this->SavedUseAspect = this->Camera->GetUseExplicitAspectRatio();
-  this->SavedAspect = this->Camera->GetExplicitAspectRatio();
-  this->Window->GetTileViewport(this->SavedTileViewport);
-  // The projection keeps the tile's aspect ratio (the renderer's tiled size is the part's
-  // below).
-  this->Camera->SetExplicitAspectRatio(renderer->GetTiledAspectRatio());
-  this->Camera->UseExplicitAspectRatioOn();
   // Normalized device coordinates of the tile to those of the part: x' = x w / W + (w + 2 i)
   // / W - 1 (i: where the tile starts in the part), in clip coordinates (times w_clip).
   vtkNew<vtkMatrix4x4> toPart;
@@ -125,19 +117,6 @@ vtkBloomPassTileCamera::vtkBloomPassTileCamera(vtkRenderer* renderer, const vtkB
     transform->Concatenate(this->Saved->GetMatrix()); // the user's, then the part's
   }
   this->Camera->SetUserTransform(transform);
-  // The tile viewport that makes the renderer's tiled size the part's, at the origin.
-  const int* size = this->Window->GetSize();
-  const double* viewport = renderer->GetViewport();
-  int part[4];
-  tile.GetPart(part);
-  double covered[4];
-  for (int a = 0; a < 2; ++a)
-  {
-    const int first = static_cast<int>(viewport[a] * size[a] + 0.5);
-    covered[a] = (first + part[2 * a]) / static_cast<double>(size[a]);
-    covered[a + 2] = (first + part[2 * a + 1]) / static_cast<double>(size[a]);
-  }
-  this->Window->SetTileViewport(covered);
 }
 
 //------------------------------------------------------------------------------
@@ -146,8 +125,5 @@ vtkBloomPassTileCamera::~vtkBloomPassTileCamera()
   if (this->Camera)
   {
     this->Camera->SetUserTransform(this->Saved);
-    this->Camera->SetExplicitAspectRatio(this->SavedAspect);
-    this->Camera->SetUseExplicitAspectRatio(this->SavedUseAspect);
-    this->Window->SetTileViewport(this->SavedTileViewport);
   }
 }

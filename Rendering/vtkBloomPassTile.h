@@ -20,7 +20,7 @@
 #ifndef vtkBloomPassTile_h
 #define vtkBloomPassTile_h
 
-#include "vtkBloomChain.h"   // For the reach
+#include "vtkBloomChain.h"   // For the frame's chain
 #include "vtkSmartPointer.h" // For the camera's transform
 #include "vtkType.h"         // For vtkMTimeType
 
@@ -28,7 +28,6 @@ class vtkBloomParameters;
 class vtkCamera;
 class vtkHomogeneousTransform;
 class vtkRenderer;
-class vtkWindow;
 
 struct vtkBloomPassTile
 {
@@ -76,13 +75,11 @@ private:
 };
 
 /**
- * For its lifetime, the renderer renders the part of vtkBloomPassTile onto a viewport of the
- * part's size. The camera's projection is the tile's (its aspect ratio held at the tile's),
- * followed by the scale and shift in normalized device coordinates that put the tile's pixels
- * where the part has them (vtkCamera's user transform, which applies after the projection).
- * The window's tile viewport covers the part, so that a delegate that renders through the
- * renderer (vtkOpenGLCamera::Render, as ParaView's does) sets the part's viewport too; a
- * vtkCameraPass takes it from the pass's target. Nothing changes untiled.
+ * For its lifetime, the renderer's active camera projects the part of vtkBloomPassTile: the
+ * tile's projection, followed by the scale and shift in normalized device coordinates that put
+ * the tile's pixels where the part has them (vtkCamera's user transform, which applies after
+ * the projection). The viewport is the part's target (vtkCameraPass takes the viewport from
+ * the render state's framebuffer). Nothing changes untiled.
  */
 class vtkBloomPassTileCamera
 {
@@ -94,11 +91,7 @@ public:
 
 private:
   vtkCamera* Camera = nullptr;
-  vtkWindow* Window = nullptr;
   vtkSmartPointer<vtkHomogeneousTransform> Saved;
-  bool SavedUseAspect = false;
-  double SavedAspect = 1.0;
-  double SavedTileViewport[4] = { 0.0, 0.0, 1.0, 1.0 };
 };
 
 #endif
