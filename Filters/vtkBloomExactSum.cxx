@@ -4,6 +4,12 @@
 #include <cmath>
 #include <cstring>
 
+#if defined(__GNUC__)
+#define VTKBLOOM_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define VTKBLOOM_ALWAYS_INLINE inline
+#endif
+
 namespace
 {
 // Blocks of at most this many values: the high sum takes values below 2^52, so 2048 of them
@@ -37,9 +43,10 @@ std::uint64_t LargestExponent(const double* values, int n)
 
 // The sum over the values whose exponent max(biased, 1) is at least `base`, as
 // sums[0] + 2^32 sums[1] + 2^64 sums[2] units of 2^(base - 1075). Returns whether a non-zero
-// value lies below the window (those are left out).
-VTKBLOOM_TARGET_CLONES
-bool WindowSum(const double* values, int n, std::int64_t base, std::int64_t sums[3])
+// value lies below the window (those are left out). Without `Signed`, no value is negative.
+template <bool Signed>
+VTKBLOOM_ALWAYS_INLINE bool WindowSumOf(
+  const double* values, int n, std::int64_t base, std::int64_t sums[3])
 {
   std::int64_t a0 = 0, a1 = 0, a2 = 0;
   std::uint64_t below = 0;
@@ -56,15 +63,42 @@ bool WindowSum(const double* values, int n, std::int64_t base, std::int64_t sums
     m &= inside;
     const std::uint64_t s = static_cast<std::uint64_t>(shift) & 63;
     const std::uint64_t low = m << s, high = (m >> 1) >> (63 - s); // m 2^s in 128 bits
-    const std::int64_t negative = static_cast<std::int64_t>(bits) < 0 ? -1 : 0;
-    a0 += (static_cast<std::int64_t>(low & 0xFFFFFFFFu) ^ negative) - negative;
-    a1 += (static_cast<std::int64_t>(low >> 32) ^ negative) - negative;
-    a2 += (static_cast<std::int64_t>(high) ^ negative) - negative;
+    if constexpr (Signed)
+    {
+      const std::int64_t negative = static_cast<std::int64_t>(bits) < 0 ? -1 : 0;
+      a0 += (static_cast<std::int64_t>(low & 0xFFFFFFFFu) ^ negative) - negative;
+      a1 += (static_cast<std::int64_t>(low >> 32) ^ negative) - negative;
+      a2 += (static_cast<std::int64_t>(high) ^ negative) - negative;
+    }
+    else
+    {
+      a0 += static_cast<std::int64_t>(low & 0xFFFFFFFFu);
+      a1 += static_cast<std::int64_t>(low >> 32);
+      a2 += static_cast<std::int64_t>(high);
+    }
   }
   sums[0] = a0;
   sums[1] = a1;
   sums[2] = a2;
   return below != 0;
+}
+
+VTKBLOOM_TARGET_CLONES
+bool WindowSum(const double* values, int n, std::int64_t base, bool anyNegative, std::int64_t sums[3])
+{
+  return anyNegative ? WindowSumOf<true>(values, n, base, sums)
+                     : WindowSumOf<false>(values, n, base, sums);
+}
+
+// Whether any of n values has its sign bit set.
+bool AnySignBit(const double* values, int n)
+{
+  std::uint64_t signs = 0;
+  for (int i = 0; i < n; ++i)
+  {
+    signs |= Bits(values[i]);
+  }
+  return (signs >> 63) != 0;
 }
 }
 
@@ -102,6 +136,17 @@ void vtkBloomExactSum::Add(double x)
     this->Chunks[k + 1] += middle;
     this->Chunks[k + 2] += high;
   }
+  this->Grow(1);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomExactSum::Grow(std::int64_t units)
+{
+  this->Pending += units;
+  if (this->Pending >= (std::int64_t(1) << 17))
+  {
+    this->Normalize();
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -119,22 +164,21 @@ void vtkBloomExactSum::AddInteger(std::int64_t v, int bit)
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomExactSum::AddBlock(const double* values, int n)
+void vtkBloomExactSum::AddBlock(
+  const double* values, int n, std::uint64_t largest, bool anyNegative)
 {
-  const std::uint64_t largest = LargestExponent(values, n);
   if (largest == 0x7FF) // Inf or NaN: the one-by-one path sums them apart
   {
     for (int i = 0; i < n; ++i)
     {
       this->Add(values[i]);
     }
-    this->Normalize();
     return;
   }
   const std::int64_t base =
     std::max<std::int64_t>(static_cast<std::int64_t>(largest) - WindowBinades, 1);
   std::int64_t sums[3];
-  const bool below = WindowSum(values, n, base, sums);
+  const bool below = WindowSum(values, n, base, anyNegative, sums);
   const int bit = static_cast<int>(base) - 1; // 2^(base - 1075) = 2^(bit - 1074)
   this->AddInteger(sums[0], bit);
   this->AddInteger(sums[1], bit + 32);
@@ -150,7 +194,7 @@ void vtkBloomExactSum::AddBlock(const double* values, int n)
       }
     }
   }
-  this->Normalize();
+  this->Grow(1); // the three integers: less than 2^35 a chunk
 }
 
 //------------------------------------------------------------------------------
@@ -158,7 +202,21 @@ void vtkBloomExactSum::AddRow(const double* values, int n)
 {
   for (int i = 0; i < n; i += MaximumBlock)
   {
-    this->AddBlock(values + i, std::min(MaximumBlock, n - i));
+    const int m = std::min(MaximumBlock, n - i);
+    this->AddBlock(values + i, m, LargestExponent(values + i, m), AnySignBit(values + i, m));
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomExactSum::AddRow(
+  const double* values, int n, std::uint64_t largestBits, bool anyNegative)
+{
+  // The row's largest exponent bounds every block's: a block whose own is lower sums the same
+  // values, its window merely reaching higher than it needs.
+  const std::uint64_t largest = (largestBits >> 52) & 0x7FF;
+  for (int i = 0; i < n; i += MaximumBlock)
+  {
+    this->AddBlock(values + i, std::min(MaximumBlock, n - i), largest, anyNegative);
   }
 }
 
@@ -170,7 +228,7 @@ void vtkBloomExactSum::Add(const vtkBloomExactSum& other)
     this->Chunks[i] += other.Chunks[i];
   }
   this->Special += other.Special;
-  this->Normalize();
+  this->Grow(other.Pending + 1);
 }
 
 //------------------------------------------------------------------------------
@@ -182,6 +240,7 @@ void vtkBloomExactSum::Normalize()
     this->Chunks[i + 1] += (this->Chunks[i] - low) / 4294967296LL; // exact
     this->Chunks[i] = low;
   }
+  this->Pending = 0;
 }
 
 //------------------------------------------------------------------------------

@@ -5,6 +5,7 @@
 #include "vtkImageBloomThreshold.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
@@ -21,6 +22,8 @@ namespace
 // Four pixels per step in vector lanes (elsewhere the one-pixel loop does every pixel).
 typedef double Lanes __attribute__((vector_size(32)));
 typedef std::int64_t Masks __attribute__((vector_size(32)));
+typedef std::uint64_t Bits __attribute__((vector_size(32)));
+typedef float Floats __attribute__((vector_size(16), aligned(4), may_alias));
 constexpr int Width = 4;
 #endif
 
@@ -71,6 +74,27 @@ VTKBLOOM_ALWAYS_INLINE void LoadPixels(const float* v, V& l, V& b)
   }
 }
 
+#if defined(__GNUC__)
+// The same for four RGBA pixels, through four vector loads and a transpose.
+template <>
+VTKBLOOM_ALWAYS_INLINE void LoadPixels<4, Width, Lanes>(const float* v, Lanes& l, Lanes& b)
+{
+  const Floats p0 = *reinterpret_cast<const Floats*>(v);
+  const Floats p1 = *reinterpret_cast<const Floats*>(v + 4);
+  const Floats p2 = *reinterpret_cast<const Floats*>(v + 8);
+  const Floats p3 = *reinterpret_cast<const Floats*>(v + 12);
+  const Floats rg01 = __builtin_shufflevector(p0, p1, 0, 4, 1, 5);
+  const Floats rg23 = __builtin_shufflevector(p2, p3, 0, 4, 1, 5);
+  const Floats b01 = __builtin_shufflevector(p0, p1, 2, 6, 3, 7);
+  const Floats b23 = __builtin_shufflevector(p2, p3, 2, 6, 3, 7);
+  const Lanes r = __builtin_convertvector(__builtin_shufflevector(rg01, rg23, 0, 1, 4, 5), Lanes);
+  const Lanes g = __builtin_convertvector(__builtin_shufflevector(rg01, rg23, 2, 3, 6, 7), Lanes);
+  const Lanes u = __builtin_convertvector(__builtin_shufflevector(b01, b23, 0, 1, 4, 5), Lanes);
+  l = vtkBloomKernels::Luminance(r, g, u);
+  b = vtkBloomMax(vtkBloomMax(r, g), u);
+}
+#endif
+
 // What the bright pass keeps of the largest value b: > 0 exactly when it keeps a value > 0
 // (for colours that are finite and within the clamp).
 template <int Mode, typename V>
@@ -117,33 +141,72 @@ vtkIdType CountOthers(
   return count;
 }
 
-// The luminances of a row into `lum`, `peak` raised to their maximum (NaN ignored) and, with
-// a test, the number of bright pixels. A colour with a NaN or Inf value has a NaN or infinite
-// luminance, so "finite and within the clamp" is one test on L.
+// What vtkBloomExactSum::AddRow's hint needs of a row's luminances.
+struct RowBits
+{
+  std::uint64_t Largest = 0; ///< the largest bit pattern with the sign cleared
+  std::uint64_t Signs = 0;   ///< the sign bits or'ed
+};
+
+// The value below which the bright pass certainly keeps nothing (L for the luminance modes, the
+// largest colour value for the others), less a margin for rounding in the formulas: a vector
+// of pixels all below it skips the formula.
+double BrightEdge(int mode, double t0, double k)
+{
+  using M = vtkImageBloomThreshold;
+  if (mode == M::PER_CHANNEL || mode == M::NONE)
+  {
+    return -std::numeric_limits<double>::infinity(); // cheaper than the test
+  }
+  return (t0 - k) - 1e-9 * (std::abs(t0) + std::abs(k)) - std::numeric_limits<double>::min();
+}
+
+// The luminances of a row into `lum`, `peak` raised to their maximum (NaN ignored), `bits`
+// raised to theirs and, with a test, the number of bright pixels. A colour with a NaN or Inf
+// value has a NaN or infinite luminance, so "finite and within the clamp" is one test on L.
 template <int NC, int Mode>
 VTKBLOOM_ALWAYS_INLINE vtkIdType MeasurePixels(
-  const float* row, int n, double* lum, double& peak, const BrightTest* test)
+  const float* row, int n, double* lum, double& peak, RowBits& bits, const BrightTest* test)
 {
+  using M = vtkImageBloomThreshold;
+  constexpr bool ByLuminance = Mode == M::SMOOTHSTEP_KNEE || Mode == M::HARD_LUMINANCE;
   const double most = std::numeric_limits<double>::max();
   const double ceiling = test ? std::min(test->ClampLuminance, most) : most;
   const double t0 = test ? test->Threshold : 0.0, k = test ? test->Threshold * test->Knee : 0.0;
+  const double edge = BrightEdge(Mode, t0, k);
+  const std::uint64_t magnitude = ~(std::uint64_t(1) << 63);
   vtkIdType count = 0;
   bool other = false;
   int i = 0;
 #if defined(__GNUC__)
   Lanes top = Lanes{} - std::numeric_limits<double>::infinity();
-  Masks counted{}, others{};
+  Masks counted{}, others{}, largest{};
+  Bits signs{};
   for (; i + Width <= n; i += Width)
   {
     Lanes l, b;
     LoadPixels<NC, Width>(row + static_cast<size_t>(i) * NC, l, b);
     std::memcpy(lum + i, &l, sizeof(l));
     top = l > top ? l : top;
+    Bits lb;
+    std::memcpy(&lb, &l, sizeof(lb));
+    signs |= lb;
+    const Masks m = reinterpret_cast<Masks>(lb & magnitude);
+    largest = m > largest ? m : largest;
     if (test)
     {
       const Masks regular = (l >= -most) & (l <= ceiling);
-      counted -= regular & (Kept<Mode>(l, b, t0, k) > 0.0);
       others |= ~regular;
+      const Masks possible = (ByLuminance ? l : b) >= edge;
+      bool any = false;
+      for (int q = 0; q < Width; ++q)
+      {
+        any = any || possible[q] != 0;
+      }
+      if (any)
+      {
+        counted -= regular & (Kept<Mode>(l, b, t0, k) > 0.0);
+      }
     }
   }
   for (int q = 0; q < Width; ++q)
@@ -151,6 +214,8 @@ VTKBLOOM_ALWAYS_INLINE vtkIdType MeasurePixels(
     peak = top[q] > peak ? top[q] : peak;
     count += static_cast<vtkIdType>(counted[q]);
     other = other || others[q] != 0;
+    bits.Largest = std::max(bits.Largest, static_cast<std::uint64_t>(largest[q]));
+    bits.Signs |= signs[q];
   }
 #endif
   for (; i < n; ++i)
@@ -159,6 +224,10 @@ VTKBLOOM_ALWAYS_INLINE vtkIdType MeasurePixels(
     LoadPixels<NC, 1>(row + static_cast<size_t>(i) * NC, l, b);
     lum[i] = l;
     peak = l > peak ? l : peak;
+    std::uint64_t lb;
+    std::memcpy(&lb, &l, sizeof(lb));
+    bits.Signs |= lb;
+    bits.Largest = std::max(bits.Largest, lb & magnitude);
     if (test)
     {
       const bool regular = l >= -most && l <= ceiling;
@@ -170,42 +239,42 @@ VTKBLOOM_ALWAYS_INLINE vtkIdType MeasurePixels(
 }
 
 template <int NC>
-VTKBLOOM_ALWAYS_INLINE vtkIdType MeasurePixels(
-  const float* row, int n, double* lum, double& peak, int mode, const BrightTest* test)
+VTKBLOOM_ALWAYS_INLINE vtkIdType MeasurePixels(const float* row, int n, double* lum, double& peak,
+  RowBits& bits, int mode, const BrightTest* test)
 {
   using M = vtkImageBloomThreshold;
   switch (test ? mode : M::NONE)
   {
     case M::SMOOTHSTEP_KNEE:
-      return MeasurePixels<NC, M::SMOOTHSTEP_KNEE>(row, n, lum, peak, test);
+      return MeasurePixels<NC, M::SMOOTHSTEP_KNEE>(row, n, lum, peak, bits, test);
     case M::QUADRATIC_KNEE:
-      return MeasurePixels<NC, M::QUADRATIC_KNEE>(row, n, lum, peak, test);
+      return MeasurePixels<NC, M::QUADRATIC_KNEE>(row, n, lum, peak, bits, test);
     case M::HARD_LUMINANCE:
-      return MeasurePixels<NC, M::HARD_LUMINANCE>(row, n, lum, peak, test);
+      return MeasurePixels<NC, M::HARD_LUMINANCE>(row, n, lum, peak, bits, test);
     case M::PER_CHANNEL:
-      return MeasurePixels<NC, M::PER_CHANNEL>(row, n, lum, peak, test);
+      return MeasurePixels<NC, M::PER_CHANNEL>(row, n, lum, peak, bits, test);
     case M::EXCESS_KNEE:
-      return MeasurePixels<NC, M::EXCESS_KNEE>(row, n, lum, peak, test);
+      return MeasurePixels<NC, M::EXCESS_KNEE>(row, n, lum, peak, bits, test);
     default:
-      return MeasurePixels<NC, M::NONE>(row, n, lum, peak, test);
+      return MeasurePixels<NC, M::NONE>(row, n, lum, peak, bits, test);
   }
 }
 
 // One row: luminances, peak and (with a test) the bright count; compiled for AVX2 too.
 VTKBLOOM_TARGET_CLONES
-vtkIdType MeasureRow(
-  const float* row, int n, int nc, double* lum, double& peak, int mode, const BrightTest* test)
+vtkIdType MeasureRow(const float* row, int n, int nc, double* lum, double& peak, RowBits& bits,
+  int mode, const BrightTest* test)
 {
   switch (nc)
   {
     case 1:
-      return MeasurePixels<1>(row, n, lum, peak, mode, test);
+      return MeasurePixels<1>(row, n, lum, peak, bits, mode, test);
     case 2:
-      return MeasurePixels<2>(row, n, lum, peak, mode, test);
+      return MeasurePixels<2>(row, n, lum, peak, bits, mode, test);
     case 3:
-      return MeasurePixels<3>(row, n, lum, peak, mode, test);
+      return MeasurePixels<3>(row, n, lum, peak, bits, mode, test);
     default:
-      return MeasurePixels<4>(row, n, lum, peak, mode, test);
+      return MeasurePixels<4>(row, n, lum, peak, bits, mode, test);
   }
 }
 }
@@ -227,15 +296,17 @@ void vtkBloomStatisticsRows::AddRow(const float* input, const float* output, int
   l.resize(static_cast<size_t>(n));
   const BrightTest test{ this->Threshold, this->Knee, this->ClampLuminance };
   double rowPeak = -std::numeric_limits<double>::infinity();
-  this->Bright += MeasureRow(input, n, nc, l.data(), rowPeak, this->Mode, &test);
+  RowBits bits;
+  this->Bright += MeasureRow(input, n, nc, l.data(), rowPeak, bits, this->Mode, &test);
   vtkBloomExactSum row;
-  row.AddRow(l.data(), n);
+  row.AddRow(l.data(), n, bits.Largest, (bits.Signs >> 63) != 0);
   this->EnergyIn.Add(row);
   this->PeakIn = std::max(this->PeakIn, rowPeak);
   if (output)
   {
-    MeasureRow(output, n, nc, l.data(), this->PeakOut, this->Mode, nullptr);
-    this->EnergyOut.AddRow(l.data(), n);
+    RowBits outBits;
+    MeasureRow(output, n, nc, l.data(), this->PeakOut, outBits, this->Mode, nullptr);
+    this->EnergyOut.AddRow(l.data(), n, outBits.Largest, (outBits.Signs >> 63) != 0);
   }
   else
   {

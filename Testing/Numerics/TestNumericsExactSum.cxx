@@ -147,3 +147,52 @@ TEST(NumericsExactSum, MergingIsExact)
   }
   EXPECT_TRUE(Same(total.Get(), OneByOne(v)));
 }
+
+// AddRow with the caller's hint (the largest magnitude's bits and whether a sign is set, as the
+// composite's statistics find them) gives the same bits as without; a hint from a larger value
+// than the row holds only widens the window.
+TEST(NumericsExactSum, HintedRowsEqualOneByOne)
+{
+  std::mt19937_64 g(17);
+  for (int kind = 0; kind < 6; ++kind)
+  {
+    for (int n : { 1, 5, 2048, 4097 })
+    {
+      const std::vector<double> v = Values(kind, n, g);
+      std::uint64_t largest = 0, signs = 0;
+      for (double x : v)
+      {
+        std::uint64_t bits;
+        std::memcpy(&bits, &x, sizeof(bits));
+        signs |= bits;
+        largest = std::max(largest, bits & ~(std::uint64_t(1) << 63));
+      }
+      const bool negative = (signs >> 63) != 0;
+      vtkBloomExactSum exact, wider;
+      exact.AddRow(v.data(), n, largest, negative);
+      const std::uint64_t higher = std::min<std::uint64_t>(largest + (std::uint64_t(40) << 52),
+        std::uint64_t(0x7FE) << 52);
+      wider.AddRow(v.data(), n, std::max(largest, higher), negative);
+      const double a = OneByOne(v);
+      EXPECT_TRUE(Same(a, exact.Get())) << "kind " << kind << ", n " << n;
+      EXPECT_TRUE(Same(a, wider.Get())) << "kind " << kind << ", n " << n << " (wider window)";
+    }
+  }
+}
+
+// Chunks are carried once in many additions, not after each (vtkBloomExactSum::Grow): a sum
+// added to itself 200 times doubles every chunk each time, so it would wrap past 2^63 within
+// about 31 doublings if a carry came too late.
+TEST(NumericsExactSum, RepeatedMergesCarryBeforeOverflow)
+{
+  std::mt19937_64 g(3);
+  const std::vector<double> v = Values(0, 3000, g);
+  vtkBloomExactSum s;
+  s.AddRow(v.data(), static_cast<int>(v.size()));
+  const double first = s.Get();
+  for (int i = 1; i <= 200; ++i)
+  {
+    s.Add(s);
+    ASSERT_EQ(s.Get(), std::ldexp(first, i)) << "after " << i << " doublings";
+  }
+}
