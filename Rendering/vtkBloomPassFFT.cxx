@@ -110,7 +110,23 @@ std::vector<vtkBloomPassFFT::Pass> vtkBloomPassFFT::Passes(int n, float directio
 }
 
 //------------------------------------------------------------------------------
-std::string vtkBloomPassFFT::TransformDefines(const Pass& pass, int n, bool fromTexture)
+int vtkBloomPassFFT::LinesPerGroup(const Pass& pass, int axis)
+{
+  if (axis == 0)
+  {
+    return 1;
+  }
+  int lines = 8;
+  while (lines > 1 && lines * pass.Length > MaximumLength)
+  {
+    lines /= 2;
+  }
+  return lines;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkBloomPassFFT::TransformDefines(
+  const Pass& pass, int n, bool fromTexture, int lines)
 {
   // Enough invocations that each runs at most 4 butterflies of radix 2 (length <= 4096): each
   // keeps its butterflies' results in registers.
@@ -130,7 +146,8 @@ std::string vtkBloomPassFFT::TransformDefines(const Pass& pass, int n, bool from
   return "#define FFT_TRANSFORM 1\n#define FFT_N " + std::to_string(length) +
     "\n#define FFT_TWIDDLE_STRIDE " + std::to_string(n / length) + "\n#define FFT_THREADS " +
     std::to_string(threads) + "\n#define FFT_STAGE_CALLS " + calls + "\n#define FFT_BUTTERFLIES " +
-    std::to_string(butterflies) + "\n" + (fromTexture ? "#define FFT_FROM_TEXTURE 1\n" : "") +
+    std::to_string(butterflies) + "\n#define FFT_LINES " + std::to_string(lines) + "\n" +
+    (fromTexture ? "#define FFT_FROM_TEXTURE 1\n" : "") +
     (pass.Twiddle ? "#define FFT_FOUR_STEP_TWIDDLE 1\n" : "");
 }
 
@@ -278,7 +295,8 @@ bool vtkBloomPassFFT::BuildPrograms(const int grid[2], std::string& why)
       for (size_t i = 0; i < passes.size(); ++i)
       {
         const bool fromTexture = axis == 0 && direction < 0.0f && i == 0;
-        programs.push_back(TransformDefines(passes[i], grid[axis], fromTexture));
+        programs.push_back(TransformDefines(
+          passes[i], grid[axis], fromTexture, LinesPerGroup(passes[i], axis)));
       }
     }
   }
@@ -427,7 +445,9 @@ void vtkBloomPassFFT::RunPass(
   const Pass& pass, int axis, float direction, vtkTextureObject* source, const int sourceSize[2])
 {
   const int n = this->Grid[axis];
-  const unsigned int program = this->Program(TransformDefines(pass, n, source != nullptr));
+  const int lines = LinesPerGroup(pass, axis);
+  const unsigned int program =
+    this->Program(TransformDefines(pass, n, source != nullptr, lines));
   glUseProgram(program);
   // Rows: samples adjacent, lines NX apart; columns: samples NX apart, lines adjacent.
   glUniform1i(this->Uniform(program, "sampleStride"), axis == 0 ? 1 : this->Grid[0]);
@@ -446,9 +466,10 @@ void vtkBloomPassFFT::RunPass(
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->SignalBuffer);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->TwiddleBuffers[axis]);
-  // One work group per sub-sequence, line and signal, in rows of at most 65535 (every
-  // context allows that many a dimension).
-  const long long groups = 2LL * this->Grid[1 - axis] * pass.Count;
+  // One work group per sub-sequence, block of lines and signal, in rows of at most 65535
+  // (every context allows that many a dimension).
+  const long long blocks = (this->Grid[1 - axis] + lines - 1) / lines;
+  const long long groups = 2LL * blocks * pass.Count;
   const long long across = std::min<long long>(groups, 65535);
   glDispatchCompute(
     static_cast<GLuint>(across), static_cast<GLuint>((groups + across - 1) / across), 1);

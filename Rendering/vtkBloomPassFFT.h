@@ -182,8 +182,13 @@ private:
   /// The compute program of `defines`, made on first use; 0 when it does not build (the
   /// compiler's log in `log`, when given).
   unsigned int Program(const std::string& defines, std::string* log = nullptr);
-  /// The defines of `pass` along a line of n samples.
-  static std::string TransformDefines(const Pass& pass, int n, bool fromTexture);
+  /// The defines of `pass` along a line of n samples, `lines` lines to a work group.
+  static std::string TransformDefines(const Pass& pass, int n, bool fromTexture, int lines = 1);
+  /**
+   * The lines a work group transforms along `axis` with `pass`: columns (adjacent in memory)
+   * as many as fit the 32 KiB of shared memory, up to 8 (runs of 64 bytes a row); rows one.
+   */
+  static int LinesPerGroup(const Pass& pass, int axis);
   /// The padded grid of width x height images in `grid`, and why this context cannot use it
   /// (empty when it can).
   std::string MakeGrid(int width, int height, int grid[2]) const;

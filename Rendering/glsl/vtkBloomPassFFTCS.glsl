@@ -9,10 +9,14 @@
     l * lineStride + n * sampleStride), X[q] = sum_m x[m] exp(direction 2 pi i m q / FFT_N),
     unscaled. Sub-sequence j of a line is its samples j * subOffset + m * subSpacing,
     0 <= m < FFT_N (subCount of them per line); a line of N <= 4096 samples is one sub-sequence
-    (subOffset 0, subSpacing 1). One work group per sub-sequence and signal, numbered
-    g = (s lineCount + l) subCount + j along x, then y (2-D so that the count stays within
-    65535 a dimension; groups past the last do nothing). The sub-sequence is held in shared
-    memory (FFT_N <= 4096 complex samples: 32 KiB) and transformed in place by mixed-radix
+    (subOffset 0, subSpacing 1). One work group per FFT_LINES adjacent lines (a block),
+    sub-sequence and signal, numbered g = (s blocks + b) subCount + j along x, then y (2-D so
+    that the count stays within 65535 a dimension; groups and lines past the last do nothing).
+    Lines adjacent in memory (columns: lineStride 1) come FFT_LINES to a group, so that the
+    group reads and writes runs of FFT_LINES samples of each row rather than one sample a row
+    (coalesced); rows come one to a group. Each line's sub-sequence is held in shared memory
+    (FFT_LINES FFT_N <= 4096 complex samples: 32 KiB), its invocations gl_LocalInvocationID.y,
+    and transformed in place by mixed-radix
     Stockham stages (radices 4, 2, 3, 5, the calls FFT_STAGE_CALLS lists), so that the
     result is in natural order with no bit reversal. Stage s of radix R, with Ns the product
     of the radices before it, takes butterfly j (0 <= j < N / R, k = j mod Ns) from samples
@@ -46,7 +50,10 @@
 =========================================================================*/
 
 #if defined(FFT_TRANSFORM)
-layout(local_size_x = FFT_THREADS) in;
+#ifndef FFT_LINES
+#define FFT_LINES 1
+#endif
+layout(local_size_x = FFT_THREADS, local_size_y = FFT_LINES) in;
 #else
 layout(local_size_x = 16, local_size_y = 16) in;
 #endif
@@ -82,7 +89,7 @@ uniform sampler2D source;
 uniform ivec2 sourceSize;
 #endif
 
-shared vec2 line[FFT_N];
+shared vec2 line[FFT_LINES * FFT_N]; // line c's samples from c FFT_N
 
 
 // exp(direction 2 pi i m / N) for 0 <= m < N, N the whole line's length.
@@ -103,6 +110,7 @@ void Stage(int R, int ns)
 {
   const int butterflies = FFT_N / R;
   const int step = FFT_N / (ns * R);
+  const int at = int(gl_LocalInvocationID.y) * FFT_N; // this invocation's line
   // A constant trip count, and R and ns literal in each call (FFT_STAGE_CALLS): the compiler
   // unrolls the loops and keeps `results` in registers rather than in local memory.
   vec2 results[FFT_BUTTERFLIES * 5];
@@ -115,10 +123,10 @@ void Stage(int R, int ns)
     }
     const int k = j % ns;
     vec2 v[5];
-    v[0] = line[j];
+    v[0] = line[at + j];
     for (int r = 1; r < R; ++r)
     {
-      v[r] = ComplexMultiply(line[j + r * butterflies], Root(k * r * step));
+      v[r] = ComplexMultiply(line[at + j + r * butterflies], Root(k * r * step));
     }
     if (R == 2)
     {
@@ -162,7 +170,7 @@ void Stage(int R, int ns)
     const int first = (j / ns) * ns * R + k;
     for (int q = 0; q < R; ++q)
     {
-      line[first + q * ns] = results[b * 5 + q];
+      line[at + first + q * ns] = results[b * 5 + q];
     }
   }
   barrier();
@@ -178,37 +186,52 @@ void TransformLine()
 #else
 void main()
 {
-  // Groups past the last still reach every barrier (uniform control flow), but touch nothing.
+  // Groups and lines past the last still reach every barrier (uniform control flow), but touch
+  // nothing.
   const int g = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
-  const bool live = g < 2 * lineCount * subCount;
+  const int blocks = (lineCount + FFT_LINES - 1) / FFT_LINES;
+  const bool live = g < 2 * blocks * subCount;
   const int sub = g % subCount;
-  const int index = (g / subCount) % lineCount;
-  const int s = g / (subCount * lineCount);
+  const int block = (g / subCount) % blocks;
+  const int s = g / (subCount * blocks);
   const int first = sub * subOffset;
-  const int base = s * signalStride + index * lineStride;
-  for (int i = int(gl_LocalInvocationID.x); live && i < FFT_N; i += FFT_THREADS)
+  // Consecutive invocations take consecutive lines of a sample, then the next sample.
+  const int invocation = int(gl_LocalInvocationID.y) * FFT_THREADS + int(gl_LocalInvocationID.x);
+  for (int i = invocation; live && i < FFT_LINES * FFT_N; i += FFT_LINES * FFT_THREADS)
   {
-    const int at = first + i * subSpacing;
+    const int c = i % FFT_LINES, m = i / FFT_LINES;
+    const int index = block * FFT_LINES + c;
+    if (index >= lineCount)
+    {
+      continue;
+    }
+    const int at = first + m * subSpacing;
 #ifdef FFT_FROM_TEXTURE
     vec4 texel = vec4(0.0);
     if (at < sourceSize.x && index < sourceSize.y)
     {
       texel = texelFetch(source, ivec2(at, index), 0);
     }
-    line[i] = s == 0 ? texel.rg : vec2(texel.b, 0.0);
+    line[c * FFT_N + m] = s == 0 ? texel.rg : vec2(texel.b, 0.0);
 #else
-    line[i] = signal[base + at * sampleStride];
+    line[c * FFT_N + m] = signal[s * signalStride + index * lineStride + at * sampleStride];
 #endif
   }
   barrier();
   FFT_STAGE_CALLS
-  for (int i = int(gl_LocalInvocationID.x); live && i < FFT_N; i += FFT_THREADS)
+  for (int i = invocation; live && i < FFT_LINES * FFT_N; i += FFT_LINES * FFT_THREADS)
   {
+    const int c = i % FFT_LINES, m = i / FFT_LINES;
+    const int index = block * FFT_LINES + c;
+    if (index >= lineCount)
+    {
+      continue;
+    }
+    const int at = s * signalStride + index * lineStride + (first + m * subSpacing) * sampleStride;
 #ifdef FFT_FOUR_STEP_TWIDDLE
-    signal[base + (first + i * subSpacing) * sampleStride] =
-      ComplexMultiply(line[i], Twiddle(sub * i));
+    signal[at] = ComplexMultiply(line[c * FFT_N + m], Twiddle(sub * m));
 #else
-    signal[base + (first + i * subSpacing) * sampleStride] = line[i];
+    signal[at] = line[c * FFT_N + m];
 #endif
   }
 }
