@@ -47,6 +47,7 @@ void vtkBloomPassChainRunner::ReleaseOperators(vtkWindow* w)
   }
   this->Operators.clear();
   this->Interiors.clear();
+  this->Variants.clear(); // keyed by the operators' addresses
   this->FFTBlur->ReleaseOperators();
 }
 
@@ -128,6 +129,7 @@ vtkOpenGLQuadHelper* vtkBloomPassChainRunner::Program(const std::string& variant
 //------------------------------------------------------------------------------
 std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, int yMode)
 {
+  // VariantOf's key holds everything read here: a new #define needs its value there too.
   std::ostringstream os;
   os << "#define X_MODE " << xMode << "\n#define Y_MODE " << yMode << "\n";
   if (xMode == OP_PERIODIC)
@@ -167,13 +169,11 @@ void vtkBloomPassChainRunner::Pass(
   const int height = spec.Y ? spec.Y->OutputSize : spec.SourceSize[1];
   ImageTarget image = this->BeginPass(target, origin, spec, width, height);
   const std::vector<Draw> draws = this->Draws(spec, width, height);
-  // Each draw's program variant, named once.
-  std::vector<std::string> variants;
+  // Each draw's program variant, found once.
+  std::vector<VariantEntry*> variants;
   for (const Draw& draw : draws)
   {
-    PassSpec variant = spec;
-    variant.ZeroBloom = draw.Zero;
-    variants.push_back(this->Variant(variant, draw.XMode, draw.YMode));
+    variants.push_back(&this->VariantOf(spec, draw, image.Format));
   }
   std::vector<ComputeProgram*> programs;
   if (image.Texture != 0 && !this->ComputeProgramsOf(variants, spec.Blend, image.Format, programs))
@@ -209,7 +209,7 @@ void vtkBloomPassChainRunner::Pass(
     }
     else
     {
-      quad = this->Program(variants[d]);
+      quad = this->Program(variants[d]->Variant);
       if (!quad)
       {
         continue;
@@ -249,20 +249,58 @@ void vtkBloomPassChainRunner::Pass(
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassChainRunner::ComputeProgramsOf(const std::vector<std::string>& variants,
+bool vtkBloomPassChainRunner::ComputeProgramsOf(const std::vector<VariantEntry*>& variants,
   bool blend, unsigned int format, std::vector<ComputeProgram*>& programs)
 {
   programs.clear();
-  for (const std::string& variant : variants)
+  for (VariantEntry* variant : variants)
   {
-    ComputeProgram* program = this->Compute(variant, blend, format);
-    if (!program)
+    if (!variant->Asked)
+    {
+      variant->Program = this->Compute(variant->Variant, blend, format);
+      variant->Asked = true;
+    }
+    if (!variant->Program)
     {
       return false;
     }
-    programs.push_back(program);
+    programs.push_back(variant->Program);
   }
   return true;
+}
+
+//------------------------------------------------------------------------------
+vtkBloomPassChainRunner::VariantEntry& vtkBloomPassChainRunner::VariantOf(
+  const PassSpec& spec, const Draw& draw, unsigned int format)
+{
+  // Everything Variant() reads, in the order it writes it.
+  const bool composite = spec.Step == STEP_COMPOSITE;
+  const int mode = this->ThresholdEmission ? this->Parameters->GetThresholdMode()
+                                           : static_cast<int>(vtkImageBloomThreshold::NONE);
+  const bool flags[] = { draw.XMode == OP_PERIODIC && this->Linear(spec, spec.X),
+    draw.YMode == OP_PERIODIC && this->Linear(spec, spec.Y), spec.ReadsSource && this->MaskSource,
+    spec.ReadsSource && this->SanitizeSource, spec.ReadsSource && this->EmissionInAlpha,
+    composite && this->EmissionInAlpha, this->SanitizeOutput, spec.CompositeBloom,
+    spec.DiscardZero, draw.Zero, spec.Blend };
+  std::uintptr_t bits = 0;
+  for (bool flag : flags)
+  {
+    bits = (bits << 1) | (flag ? 1u : 0u);
+  }
+  const VariantKey key = { reinterpret_cast<std::uintptr_t>(spec.X),
+    reinterpret_cast<std::uintptr_t>(spec.Y), static_cast<std::uintptr_t>(draw.XMode),
+    static_cast<std::uintptr_t>(draw.YMode), static_cast<std::uintptr_t>(spec.Step),
+    static_cast<std::uintptr_t>(mode),
+    static_cast<std::uintptr_t>(composite ? this->Resources.BackgroundMode : 0),
+    static_cast<std::uintptr_t>(format), bits };
+  VariantEntry& entry = this->Variants[key];
+  if (entry.Variant.empty())
+  {
+    PassSpec variant = spec;
+    variant.ZeroBloom = draw.Zero;
+    entry.Variant = this->Variant(variant, draw.XMode, draw.YMode);
+  }
+  return entry;
 }
 
 //------------------------------------------------------------------------------

@@ -21,6 +21,7 @@
 #include "vtkSmartPointer.h" // For the operator textures
 
 #include <array>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <set>
@@ -120,10 +121,14 @@ public:
    */
   double CollectLastChainMilliseconds()
   {
+    this->TimeEveryChain = true;
     this->CollectCostTimings();
     return this->LastChainMilliseconds;
   }
   double LastChainMilliseconds = -1.0;
+  /// Every evaluation is timed (set once CollectLastChainMilliseconds is asked); else only
+  /// those RegionPays learns from.
+  bool TimeEveryChain = false;
 
   /**
    * The samples of the chain's frame that Composite() writes, x0 x1 y0 y1 (x1, y1 past the
@@ -434,11 +439,12 @@ private:
    * passes) or a compute program of plain OpenGL (VTK 9.1's shader classes have no compute
    * stage), whose locations it caches.
    */
+  struct LocationCache;
   struct Uniforms
   {
     vtkShaderProgram* Program = nullptr;
     unsigned int Raw = 0;
-    std::map<std::string, int>* Locations = nullptr;
+    LocationCache* Locations = nullptr;
 
     int Location(const char* name);
     void Int(const char* name, int value);
@@ -452,11 +458,29 @@ private:
   };
   void SetStepUniforms(Uniforms& uniforms, int step);
 
+  /**
+   * A compute program's uniform locations: by name, asked of OpenGL once, and by the address
+   * of the name (the callers pass literals; a hit is checked against the name it was made
+   * for), so that a frame's lookups compare a few pointers rather than search strings.
+   */
+  struct LocationCache
+  {
+    struct Seen
+    {
+      const char* Address;
+      std::string Name;
+      int Location;
+    };
+    std::map<std::string, int> ByName;
+    std::vector<Seen> ByAddress; ///< at most MaximumSeen
+    static constexpr size_t MaximumSeen = 64;
+  };
+
   // The compute passes (vtkBloomPassCompute.cxx).
   struct ComputeProgram
   {
     unsigned int Id = 0; ///< 0: it did not build
-    std::map<std::string, int> Locations;
+    LocationCache Locations;
   };
   std::map<std::string, ComputeProgram> ComputePrograms;
   /// Compute variants that did not build: not tried again, their passes run as fragments.
@@ -532,17 +556,33 @@ private:
   };
 
   /**
+   * One draw's program variant (its #defines) and compute program, found once: the key holds
+   * everything Variant() writes into the #defines (the operators by address, the evaluation
+   * modes, the step, the flags) and the image format and blending of the compute program, so
+   * that a frame names each draw's program without writing its #defines again. Dropped with
+   * the operators (ReleaseOperators) and the compute programs (ReleaseCompute).
+   */
+  struct VariantEntry
+  {
+    std::string Variant;
+    ComputeProgram* Program = nullptr; ///< null: not made, or it did not build
+    bool Asked = false;                ///< Compute() was asked for Program
+  };
+  using VariantKey = std::array<std::uintptr_t, 9>;
+  std::map<VariantKey, VariantEntry> Variants;
+  VariantEntry& VariantOf(const PassSpec& spec, const Draw& draw, unsigned int format);
+  /**
    * Prepare `target` (clear outside the region), pick where the pass writes (a compute image,
    * or `target`'s framebuffer bound for fragments) and set the blending.
    */
   ImageTarget BeginPass(
     vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec, int width, int height);
   /**
-   * The compute program of every variant (Compute, made now where it is new) into `programs`;
-   * false when one does not build.
+   * The compute program of every draw's variant (Compute, made now where it is new) into
+   * `programs`; false when one does not build.
    */
-  bool ComputeProgramsOf(const std::vector<std::string>& variants, bool blend, unsigned int format,
-    std::vector<ComputeProgram*>& programs);
+  bool ComputeProgramsOf(const std::vector<VariantEntry*>& variants, bool blend,
+    unsigned int format, std::vector<ComputeProgram*>& programs);
   /// The draws of a width x height pass, cut to its region; counts the samples it computes.
   std::vector<Draw> Draws(const PassSpec& spec, int width, int height);
   PassTextures PassTexturesOf(const PassSpec& spec);

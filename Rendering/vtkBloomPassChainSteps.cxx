@@ -54,7 +54,13 @@ bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
   ChainRegions regions;
   this->CollectCostTimings(); // earlier evaluations' timestamps, never waited for
   regions.Restrict = this->ChooseRestrict();
-  this->BeginCostTiming(regions.Restrict); // every evaluation: LastChainMilliseconds
+  // Timed only where the time is used: while RegionPays still decides (content-aware and not
+  // declined), or every evaluation once GetLastChainMilliseconds was asked. A chain that runs
+  // full for good (the region declined, or not asked for) issues no query.
+  if ((this->Restrict && !this->RegionDeclined) || this->TimeEveryChain)
+  {
+    this->BeginCostTiming(regions.Restrict);
+  }
   this->CompositeRestricted = false;
   this->ComputedSamples = this->FullSamples = 0.0;
   this->Coverage = 1.0;

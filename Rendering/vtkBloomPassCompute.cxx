@@ -24,10 +24,22 @@ int vtkBloomPassChainRunner::Uniforms::Location(const char* name)
   {
     return this->Program->IsUniformUsed(name) ? 0 : -1;
   }
-  auto found = this->Locations->find(name);
-  if (found == this->Locations->end())
+  LocationCache& cache = *this->Locations;
+  for (const LocationCache::Seen& seen : cache.ByAddress)
   {
-    found = this->Locations->emplace(name, glGetUniformLocation(this->Raw, name)).first;
+    if (seen.Address == name && seen.Name == name)
+    {
+      return seen.Location;
+    }
+  }
+  auto found = cache.ByName.find(name);
+  if (found == cache.ByName.end())
+  {
+    found = cache.ByName.emplace(name, glGetUniformLocation(this->Raw, name)).first;
+  }
+  if (cache.ByAddress.size() < LocationCache::MaximumSeen)
+  {
+    cache.ByAddress.push_back({ name, found->first, found->second });
   }
   return found->second;
 }
