@@ -479,7 +479,9 @@ public:
    * arrived: from the bright pass to the end of the composite, the scene's render excluded;
    * negative until one has. It never waits: after a render has completed (glFinish), it is that
    * render's. For benchmarks: the cost of the bloom frame by frame, where a difference of two
-   * frame times would add the scene's own variation.
+   * frame times would add the scene's own variation. The renders are timed (two GL timestamp
+   * queries each) from the first call on; before it, only while the bright region's cost is
+   * being learned (GetRegionCost), so a frame that nobody times issues no query.
    */
   double GetLastChainMilliseconds();
 
