@@ -18,6 +18,7 @@
 //   BloomPassFrameTime --sparse WIDTH HEIGHT FRAMES [fast]
 //   BloomPassFrameTime --sync SCENE WIDTH HEIGHT FRAMES
 //   BloomPassFrameTime --orbit SCENE WIDTH HEIGHT FRAMES
+//   BloomPassFrameTime --renderers SCENE WIDTH HEIGHT FRAMES
 //   BloomPassFrameTime --selective SCENE WIDTH HEIGHT FRAMES
 //   BloomPassFrameTime --psf SCENE WIDTH HEIGHT FRAMES
 //
@@ -129,7 +130,7 @@ bool TimeFrames(const std::string& scene, const std::string& preset, int width, 
   // Selective scenes also render their emitters; measure the plain scene pass for all.
   const vtkBloomFrameTimer::Kind kinds[] = { vtkBloomFrameTimer::PLAIN,
     vtkBloomFrameTimer::COMPUTE_COPY, vtkBloomFrameTimer::FLOAT_COPY, vtkBloomFrameTimer::BLOOM };
-  std::vector<double> gpu[4];
+  std::vector<double> gpu[4], cpu[4];
   for (int f = -2; f < frames; ++f) // two warm-up frames of each
   {
     for (int k = 0; k < 4; ++k)
@@ -138,24 +139,31 @@ bool TimeFrames(const std::string& scene, const std::string& preset, int width, 
       if (f >= 0)
       {
         gpu[k].push_back(1e3 * timer.LastGPUSeconds);
+        cpu[k].push_back(1e3 * timer.LastSubmitSeconds);
       }
     }
   }
   const vtkBloomFrameStatistics plain(gpu[0]), copy(gpu[1]), blit(gpu[2]), bloom(gpu[3]);
+  // The CPU's time in Render() (the wall clock before the wait for the GPU): the pass's own is
+  // the bloom frame's over the plain frame's, which submits the same scene.
+  const vtkBloomFrameStatistics plainCPU(cpu[0]), bloomCPU(cpu[3]);
   if (header)
   {
-    std::printf("GPU time per frame (GL_TIME_ELAPSED), ms; %d frames of each kind, interleaved\n"
+    std::printf("GPU time per frame (GL_TIME_ELAPSED), ms; %d frames of each kind, interleaved; "
+                "CPU: the wall clock in Render(), before the wait for the GPU\n"
                 "| scene | preset | size | plain, mean | float + compute copy, mean | float + "
                 "VTK blit, mean | bloom: median | mean | p99 | max | bloom over plain, mean | "
-                "bloom over compute copy, mean | passes |\n"
-                "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+                "bloom over compute copy, mean | passes | CPU: plain, mean | CPU: bloom, mean / "
+                "p99 | CPU: bloom over plain, mean |\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
       frames);
   }
   std::printf("| %s | %s | %dx%d | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %+.3f | "
-              "%+.3f | %d |\n",
+              "%+.3f | %d | %.3f | %.3f / %.3f | %+.3f |\n",
     scene.c_str(), preset.c_str(), width, height, plain.Mean, copy.Mean, blit.Mean, bloom.Median,
     bloom.Mean, bloom.P99, bloom.Max, bloom.Mean - plain.Mean, bloom.Mean - copy.Mean,
-    timer.Bloom->GetNumberOfPasses());
+    timer.Bloom->GetNumberOfPasses(), plainCPU.Mean, bloomCPU.Mean, bloomCPU.P99,
+    bloomCPU.Mean - plainCPU.Mean);
   std::fflush(stdout);
   return true;
 }
@@ -726,6 +734,107 @@ bool SelectiveTable(const std::string& scene, int width, int height, int frames)
   return true;
 }
 
+// Several bloomed renderers: a window of WIDTH x HEIGHT split into 2 x 2 viewports, each its
+// own renderer of the scene with its own vtkBloomPass (vtkImageBloom's defaults), against the
+// same four renderers with the plain render steps, frame by frame. The CPU's time in Render()
+// (before the wait for the GPU) and the GPU's, per frame; the pass's CPU cost per renderer is
+// the difference over four.
+bool RenderersTable(const std::string& scene, int width, int height, int frames)
+{
+  vtkNew<vtkRenderWindow> window;
+  window->SetOffScreenRendering(1);
+  window->SetMultiSamples(0);
+  window->SetSize(width, height);
+  vtkNew<vtkRenderStepsPass> steps;
+  std::vector<vtkSmartPointer<vtkRenderer>> renderers;
+  std::vector<vtkSmartPointer<vtkBloomPass>> passes;
+  for (int i = 0; i < 4; ++i)
+  {
+    auto renderer = vtkSmartPointer<vtkRenderer>::New();
+    auto pass = vtkSmartPointer<vtkBloomPass>::New();
+    renderer->SetViewport(0.5 * (i % 2), 0.5 * (i / 2), 0.5 * (i % 2) + 0.5, 0.5 * (i / 2) + 0.5);
+    window->AddRenderer(renderer);
+    if (!vtkBloomBuildExampleScene(scene, renderer, pass))
+    {
+      std::fprintf(stderr, "unknown scene %s\n", scene.c_str());
+      return false;
+    }
+    // vtkImageBloom's defaults with the scene's bright pass, as UsePreset("default") does.
+    vtkNew<vtkBloomParameters> defaults;
+    vtkBloomParameters* own = pass->GetParameters();
+    defaults->SetThresholdMode(own->GetThresholdMode());
+    defaults->SetThreshold(own->GetThreshold());
+    defaults->SetKnee(own->GetKnee());
+    pass->SetParameters(defaults);
+    pass->SetDelegatePass(steps);
+    pass->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
+    pass->SetUseComputeShaders(!Fragment);
+    renderers.push_back(renderer);
+    passes.push_back(pass);
+  }
+  GLuint query = 0;
+  std::vector<double> cpu[2], gpu[2];
+  for (int f = -3; f < frames; ++f)
+  {
+    for (int bloom = 0; bloom < 2; ++bloom)
+    {
+      for (int i = 0; i < 4; ++i)
+      {
+        renderers[i]->SetPass(bloom ? static_cast<vtkRenderPass*>(passes[i]) : steps.Get());
+        renderers[i]->GetActiveCamera()->Azimuth(0.5);
+      }
+      window->MakeCurrent();
+      const auto start = std::chrono::steady_clock::now();
+      if (query)
+      {
+        glBeginQuery(GL_TIME_ELAPSED, query);
+      }
+      window->Render();
+      if (query)
+      {
+        glEndQuery(GL_TIME_ELAPSED);
+      }
+      const double submit =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+      window->WaitForCompletion();
+      GLuint64 ns = 0;
+      if (query)
+      {
+        glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
+      }
+      else
+      {
+        glGenQueries(1, &query); // the context exists now
+      }
+      if (f >= 0)
+      {
+        cpu[bloom].push_back(1e3 * submit);
+        gpu[bloom].push_back(1e-6 * static_cast<double>(ns));
+      }
+    }
+  }
+  window->MakeCurrent();
+  glDeleteQueries(1, &query);
+  const vtkBloomFrameStatistics plainCPU(cpu[0]), bloomCPU(cpu[1]), plainGPU(gpu[0]),
+    bloomGPU(gpu[1]);
+  std::printf("Four bloomed renderers (2 x 2 viewports of %s, vtkImageBloom's defaults) in one "
+              "%dx%d window, %d frames of each kind, interleaved, ms\n"
+              "| frame | CPU in Render(): median | mean | p99 | GPU: mean | p99 |\n"
+              "|---|---|---|---|---|---|\n"
+              "| plain | %.3f | %.3f | %.3f | %.3f | %.3f |\n"
+              "| bloom | %.3f | %.3f | %.3f | %.3f | %.3f |\n"
+              "The pass's CPU time per renderer (bloom over plain, mean, over 4): %.3f ms; GPU: "
+              "%.3f ms\n",
+    scene.c_str(), width, height, frames, plainCPU.Median, plainCPU.Mean, plainCPU.P99,
+    plainGPU.Mean, plainGPU.P99, bloomCPU.Median, bloomCPU.Mean, bloomCPU.P99, bloomGPU.Mean,
+    bloomGPU.P99, (bloomCPU.Mean - plainCPU.Mean) / 4.0, (bloomGPU.Mean - plainGPU.Mean) / 4.0);
+  for (auto& pass : passes)
+  {
+    pass->ReleaseGraphicsResources(window);
+  }
+  return true;
+}
+
 int main(int argc, char* argv[])
 {
   if (argc > 5 && std::strcmp(argv[1], "--selective") == 0)
@@ -736,6 +845,11 @@ int main(int argc, char* argv[])
   if (argc > 5 && std::strcmp(argv[1], "--psf") == 0)
   {
     return PSFTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0 : 1;
+  }
+  if (argc > 5 && std::strcmp(argv[1], "--renderers") == 0)
+  {
+    return RenderersTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0
+                                                                                               : 1;
   }
   if (argc > 5 && std::strcmp(argv[1], "--orbit") == 0)
   {

@@ -17,6 +17,9 @@
 #                    over the plain frame and over the cheapest float copy by the mean, and the
 #                    bloom frame's median, mean, p99 and maximum; then the default preset in the
 #                    fast mode
+#   renderers.md     four bloomed renderers in one window (2 x 2 viewports) against the same
+#                    four plain, at 1920x1080 and 3840x2160: the CPU's time in Render() and the
+#                    GPU's (BloomPassFrameTime --renderers)
 #   profile.md       the per-pass GPU profile of the default preset at 3840x2160, every scene,
 #                    then of lit-spheres in the fast mode (QUALITY_FAST)
 #   quality.md       the exact pass and the fast mode for every preset at 3840x2160: GPU time
@@ -48,7 +51,7 @@ cd "${VTKBLOOM_GPU_ROOT:-$PWD}" || exit 1
 OUT=${OUT:-$(mktemp -d)}
 mkdir -p "$OUT"
 FRAMES=${FRAMES:-50}
-STEPS=${STEPS:-tests frametime profile quality sparse sync orbit selective psf stages render}
+STEPS=${STEPS:-tests frametime renderers profile quality sparse sync orbit selective psf stages render}
 PRESETS=${PRESETS:-all}
 step() { [[ " $STEPS " == *" $1 "* ]]; }
 exec > >(tee "$OUT/run.log") 2>&1
@@ -118,6 +121,16 @@ echo "== frame time"
     echo
   done
 } | tee "$OUT/frametime.md"
+fi
+
+if step renderers; then
+echo "== four bloomed renderers in one window"
+{
+  for size in "1920 1080" "3840 2160"; do
+    timeout 300 "$bin/BloomPassFrameTime" --renderers lit-spheres $size "$FRAMES"
+    echo
+  done
+} | tee "$OUT/renderers.md"
 fi
 
 if step profile; then
