@@ -261,7 +261,10 @@ void Composite(const vtkBloomFastChainParameters& p, const T* in, const int inEx
         {
           if (statistics)
           {
-            measured.Local().AddRow(src, copy ? nullptr : dst, outW, NC);
+            // Outside the bloom's columns a clean composite with keep 1 copies the input.
+            const int begin = copyIsComposite ? b0 - x0 : 0;
+            const int end = copyIsComposite ? b1 - x0 : outW;
+            measured.Local().AddRow(src, copy ? nullptr : dst, outW, NC, begin, end);
           }
         }
       }

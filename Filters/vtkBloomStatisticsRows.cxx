@@ -290,29 +290,46 @@ vtkBloomStatisticsRows::vtkBloomStatisticsRows(
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomStatisticsRows::AddRow(const float* input, const float* output, int n, int nc)
+void vtkBloomStatisticsRows::AddRow(
+  const float* input, const float* output, int n, int nc, int begin, int end)
 {
+  begin = std::min(std::max(begin, 0), n);
+  end = output ? std::min(std::max(end, begin), n) : begin;
   std::vector<double>& l = this->Scratch;
   l.resize(static_cast<size_t>(n));
   const BrightTest test{ this->Threshold, this->Knee, this->ClampLuminance };
-  double rowPeak = -std::numeric_limits<double>::infinity();
-  RowBits bits;
-  this->Bright += MeasureRow(input, n, nc, l.data(), rowPeak, bits, this->Mode, &test);
-  vtkBloomExactSum row;
-  row.AddRow(l.data(), n, bits.Largest, (bits.Signs >> 63) != 0);
-  this->EnergyIn.Add(row);
-  this->PeakIn = std::max(this->PeakIn, rowPeak);
-  if (output)
+  // The input in three spans: before, within and after the output's own [begin, end).
+  vtkBloomExactSum outside, inside;
+  double outsidePeak = -std::numeric_limits<double>::infinity();
+  double insidePeak = outsidePeak;
+  const int spans[4] = { 0, begin, end, n };
+  for (int k = 0; k < 3; ++k)
   {
-    RowBits outBits;
-    MeasureRow(output, n, nc, l.data(), this->PeakOut, outBits, this->Mode, nullptr);
-    this->EnergyOut.AddRow(l.data(), n, outBits.Largest, (outBits.Signs >> 63) != 0);
+    const int b = spans[k], e = spans[k + 1];
+    if (b >= e)
+    {
+      continue;
+    }
+    RowBits bits;
+    double* lum = l.data() + b;
+    const size_t at = static_cast<size_t>(b) * nc;
+    this->Bright += MeasureRow(input + at, e - b, nc, lum, k == 1 ? insidePeak : outsidePeak,
+      bits, this->Mode, &test);
+    (k == 1 ? inside : outside).AddRow(lum, e - b, bits.Largest, (bits.Signs >> 63) != 0);
   }
-  else
+  this->EnergyIn.Add(outside);
+  this->EnergyIn.Add(inside);
+  this->PeakIn = std::max(this->PeakIn, std::max(outsidePeak, insidePeak));
+  // The output: the input's own values outside the span, its own sum and peak within.
+  this->EnergyOut.Add(outside);
+  this->PeakOut = std::max(this->PeakOut, outsidePeak);
+  if (begin < end)
   {
-    // The output row is the input row: the same sum, the same peak.
-    this->EnergyOut.Add(row);
-    this->PeakOut = std::max(this->PeakOut, rowPeak);
+    RowBits bits;
+    const size_t at = static_cast<size_t>(begin) * nc;
+    MeasureRow(output + at, end - begin, nc, l.data() + begin, this->PeakOut, bits, this->Mode,
+      nullptr);
+    this->EnergyOut.AddRow(l.data() + begin, end - begin, bits.Largest, (bits.Signs >> 63) != 0);
   }
 }
 

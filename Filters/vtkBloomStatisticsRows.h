@@ -32,10 +32,11 @@ public:
   vtkBloomStatisticsRows(int mode, double threshold, double knee, double clampLuminance);
 
   /**
-   * One row of n input pixels of nc components, and the output row written from it: `output`
-   * is null when it is the input row bit for bit (its statistics are then the input's).
+   * One row of n input pixels of nc components, and the output row written from it, which
+   * differs from the input only in pixels [begin, end) (elsewhere it is the input bit for bit,
+   * and measured once for both); a null `output` is the input row throughout.
    */
-  void AddRow(const float* input, const float* output, int n, int nc);
+  void AddRow(const float* input, const float* output, int n, int nc, int begin, int end);
 
   /// Add the rows another instance has seen.
   void Merge(const vtkBloomStatisticsRows& other);
