@@ -4,12 +4,6 @@
 #include <cmath>
 #include <cstring>
 
-#if defined(__GNUC__)
-#define VTKBLOOM_ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define VTKBLOOM_ALWAYS_INLINE inline
-#endif
-
 namespace
 {
 // Blocks of at most this many values: the high sum takes values below 2^52, so 2048 of them

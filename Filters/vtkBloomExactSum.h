@@ -35,6 +35,13 @@
 #define VTKBLOOM_TARGET_CLONES
 #endif
 
+// Row kernels inlined into those cloned loops, so that each clone gets its own copy.
+#if defined(__GNUC__)
+#define VTKBLOOM_ALWAYS_INLINE inline __attribute__((always_inline))
+#else
+#define VTKBLOOM_ALWAYS_INLINE inline
+#endif
+
 class vtkBloomExactSum
 {
 public:

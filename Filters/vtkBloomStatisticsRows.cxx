@@ -10,12 +10,6 @@
 #include <cstring>
 #include <type_traits>
 
-#if defined(__GNUC__)
-#define VTKBLOOM_ALWAYS_INLINE inline __attribute__((always_inline))
-#else
-#define VTKBLOOM_ALWAYS_INLINE inline
-#endif
-
 namespace
 {
 #if defined(__GNUC__)
