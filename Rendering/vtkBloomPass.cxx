@@ -241,6 +241,7 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   this->Runner.Fast = self->Quality == QUALITY_FAST;
   this->Runner.UseCompute = self->UseComputeShaders;
   this->Runner.SimulateComputeFailure = self->SimulateComputeShaderFailure;
+  this->Runner.SingleDrawSamples = self->SingleDrawSamples;
   this->Runner.ComputePasses = 0;
   this->Runner.Parameters = self->Parameters;
   this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
@@ -1006,6 +1007,7 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent
      << "SimulateComputeShaderFailure: " << (this->SimulateComputeShaderFailure ? "On" : "Off")
      << "\n";
+  os << indent << "SingleDrawSamples: " << this->SingleDrawSamples << "\n";
   os << indent << "LastComputePasses: " << this->LastComputePasses << "\n";
   os << indent << "CaptureResult: " << (this->CaptureResult ? "On" : "Off") << "\n";
   os << indent << "LastPSFGrid: " << this->LastPSFGrid[0] << " " << this->LastPSFGrid[1] << "\n";

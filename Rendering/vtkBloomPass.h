@@ -252,6 +252,21 @@ public:
 
   ///@{
   /**
+   * A pass of the chain with at most this many output samples runs as one draw (one compute
+   * dispatch), its operators evaluated from their tables throughout; a larger pass is drawn as
+   * its operators' periodic interior and their borders, up to 3 x 3 draws. Both evaluate the
+   * same weights, taps and order: the result is the same bits (tested). One draw saves the
+   * small levels' fixed costs (on an NVIDIA H100 a dependent dispatch costs several
+   * microseconds however small, and each draw its uniforms on the CPU: docs/gpu.md); the
+   * interior's uniform weights are cheaper per sample on large passes, and the fast mode's
+   * bilinear pairs need them. Default 262144 (512 x 512); 0: every pass drawn in pieces.
+   */
+  vtkSetClampMacro(SingleDrawSamples, int, 0, VTK_INT_MAX);
+  vtkGetMacro(SingleDrawSamples, int);
+  ///@}
+
+  ///@{
+  /**
    * For tests: make every compute program fail to build, as a driver's compiler might. A
    * compute variant that does not build is not fatal: the pass warns once and runs that
    * variant's passes as fragment passes, with the same result. Default off.
@@ -553,6 +568,7 @@ protected:
   int Quality;
   bool UseComputeShaders;
   bool SimulateComputeShaderFailure = false;
+  int SingleDrawSamples = 512 * 512;
   int LastComputePasses;
   bool CaptureResult;
   int LastBrightRegion[4];

@@ -352,11 +352,13 @@ std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
     this->ComputedSamples += static_cast<double>(region.Empty() ? 0 : region.X1 - region.X0) *
       (region.Empty() ? 0 : region.Y1 - region.Y0);
   }
-  // One draw per combination of x and y segments, cut to the region...
+  // One draw per combination of x and y segments, cut to the region (a small pass: one draw,
+  // every axis by its table)...
+  const bool single = static_cast<double>(width) * height <= this->SingleDrawSamples;
   std::vector<Draw> draws;
-  for (const Segment& sy : this->Segments(spec.Y, spec.SourceSize[1]))
+  for (const Segment& sy : this->Segments(spec.Y, spec.SourceSize[1], single))
   {
-    for (const Segment& sx : this->Segments(spec.X, spec.SourceSize[0]))
+    for (const Segment& sx : this->Segments(spec.X, spec.SourceSize[0], single))
     {
       const Box cut = Box{ sx.Begin, sx.End, sy.Begin, sy.End }.Intersection(region);
       if (!cut.Empty())

@@ -98,6 +98,8 @@ public:
   bool UseCompute = true;
   /// For tests: every compute variant fails to build (the fallback to fragments then runs).
   bool SimulateComputeFailure = false;
+  /// A pass of at most this many output samples is one draw (vtkBloomPass::SingleDrawSamples).
+  int SingleDrawSamples = 512 * 512;
   int ComputePasses = 0; ///< passes drawn as compute since it was last set to 0
 
   /**
@@ -419,8 +421,12 @@ private:
   vtkTextureObject* OperatorTexture(const vtkBloomLinearOperator& op);
   const Interior& InteriorOf(const vtkBloomLinearOperator& op);
 
-  /// The output samples along one axis: the periodic interior, and the borders by table.
-  std::vector<Segment> Segments(const vtkBloomLinearOperator* op, int size);
+  /**
+   * The output samples along one axis: the periodic interior, and the borders by table; with
+   * `single`, the whole axis by table.
+   */
+  std::vector<Segment> Segments(const vtkBloomLinearOperator* op, int size, bool single);
+
 
   /// The program of one variant, made on first use; null (with an error) if it fails.
   vtkOpenGLQuadHelper* Program(const std::string& variant);

@@ -167,14 +167,14 @@ const vtkBloomPassChainRunner::Interior& vtkBloomPassChainRunner::InteriorOf(
 
 //------------------------------------------------------------------------------
 std::vector<vtkBloomPassChainRunner::Segment> vtkBloomPassChainRunner::Segments(
-  const vtkBloomLinearOperator* op, int size)
+  const vtkBloomLinearOperator* op, int size, bool single)
 {
   if (!op)
   {
     return { { 0, size, OP_IDENTITY } };
   }
   const Interior& interior = this->InteriorOf(*op);
-  if (interior.End <= interior.Begin)
+  if (single || interior.End <= interior.Begin)
   {
     return { { 0, op->OutputSize, OP_TABLE } };
   }
