@@ -11,6 +11,7 @@
 //   BloomPassFrameTime --fast ...  as above, with vtkBloomPass::QUALITY_FAST
 //   BloomPassFrameTime --fragment ...  as above, every pass a fragment pass
 //                                  (vtkBloomPass::UseComputeShadersOff; with --fast or alone)
+//   BloomPassFrameTime --single-draw N ...  as above, vtkBloomPass::SingleDrawSamples N
 //   BloomPassFrameTime --direct ... / --fft ...  as above, the level blurs by their taps or
 //                                  through the FFT (vtkBloomParameters::ConvolutionMode; the
 //                                  default is AUTOMATIC; with the options above)
@@ -89,6 +90,7 @@ namespace
 bool Fast = false;     // --fast
 bool Fragment = false; // --fragment
 int Convolution = -1;  // --direct, --fft: vtkBloomParameters::ConvolutionMode
+int SingleDraw = -1;   // --single-draw N: vtkBloomPass::SingleDrawSamples
 
 // The timer on `scene` with `preset`, in the quality and shader stage the options ask for; false,
 // with a message, for an unknown scene or preset.
@@ -102,6 +104,10 @@ bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::strin
   }
   timer.Bloom->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
   timer.Bloom->SetUseComputeShaders(!Fragment);
+  if (SingleDraw >= 0)
+  {
+    timer.Bloom->SetSingleDrawSamples(SingleDraw);
+  }
   if (Convolution >= 0)
   {
     timer.Bloom->GetParameters()->SetConvolutionMode(Convolution);
@@ -875,9 +881,16 @@ int main(int argc, char* argv[])
   }
   while (argc > 1 &&
     (std::strcmp(argv[1], "--fast") == 0 || std::strcmp(argv[1], "--fragment") == 0 ||
-      std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0))
+      std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0 ||
+      (argc > 2 && std::strcmp(argv[1], "--single-draw") == 0)))
   {
-    if (std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0)
+    if (std::strcmp(argv[1], "--single-draw") == 0)
+    {
+      SingleDraw = std::atoi(argv[2]);
+      --argc;
+      ++argv;
+    }
+    else if (std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0)
     {
       Convolution = std::strcmp(argv[1], "--fft") == 0 ? vtkBloomParameters::CONVOLUTION_FFT
                                                        : vtkBloomParameters::CONVOLUTION_DIRECT;
