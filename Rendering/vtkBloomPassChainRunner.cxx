@@ -354,7 +354,10 @@ std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
   }
   // One draw per combination of x and y segments, cut to the region (a small pass: one draw,
   // every axis by its table)...
-  const bool single = static_cast<double>(width) * height <= this->SingleDrawSamples;
+  const int largest = this->SingleDrawSamples >= 0 ? this->SingleDrawSamples
+    : this->SoftwareRasterizer()                   ? 0
+                                                   : 512 * 512;
+  const bool single = static_cast<double>(width) * height <= largest;
   std::vector<Draw> draws;
   for (const Segment& sy : this->Segments(spec.Y, spec.SourceSize[1], single))
   {

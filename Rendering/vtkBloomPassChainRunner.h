@@ -98,8 +98,13 @@ public:
   bool UseCompute = true;
   /// For tests: every compute variant fails to build (the fallback to fragments then runs).
   bool SimulateComputeFailure = false;
-  /// A pass of at most this many output samples is one draw (vtkBloomPass::SingleDrawSamples).
-  int SingleDrawSamples = 512 * 512;
+  /// A pass of at most this many output samples is one draw (vtkBloomPass::SingleDrawSamples;
+  /// negative: automatic, by SoftwareRasterizer).
+  int SingleDrawSamples = -1;
+  /// Whether the context renders on the CPU (Mesa's llvmpipe or softpipe, SwiftShader), asked
+  /// once per context.
+  bool SoftwareRasterizer();
+  int Software = 0; ///< 0 not asked, 1 yes, -1 no
   int ComputePasses = 0; ///< passes drawn as compute since it was last set to 0
 
   /**

@@ -173,6 +173,23 @@ bool vtkBloomPassChainRunner::ComputeSupported()
 }
 
 //------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::SoftwareRasterizer()
+{
+  if (this->Software == 0)
+  {
+    const GLubyte* name = glGetString(GL_RENDERER);
+    const std::string renderer = name ? reinterpret_cast<const char*>(name) : "";
+    bool software = false;
+    for (const char* cpu : { "llvmpipe", "softpipe", "SwiftShader" })
+    {
+      software = software || renderer.find(cpu) != std::string::npos;
+    }
+    this->Software = software ? 1 : -1;
+  }
+  return this->Software > 0;
+}
+
+//------------------------------------------------------------------------------
 vtkBloomPassChainRunner::ImageTarget vtkBloomPassChainRunner::ComputeTarget(
   vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec, int width, int height)
 {

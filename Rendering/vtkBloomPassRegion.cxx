@@ -208,6 +208,7 @@ void vtkBloomPassChainRunner::ReleaseCompute()
   this->Variants.clear(); // they point at the programs
   this->FailedCompute.clear(); // a new context builds them afresh
   this->ComputeSupport = 0;
+  this->Software = 0;
 }
 
 //------------------------------------------------------------------------------
