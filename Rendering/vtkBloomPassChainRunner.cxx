@@ -356,7 +356,7 @@ std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
   // every axis by its table)...
   const int largest = this->SingleDrawSamples >= 0 ? this->SingleDrawSamples
     : this->SoftwareRasterizer()                   ? 0
-                                                   : 512 * 512;
+                                                   : 1 << 21;
   const bool single = static_cast<double>(width) * height <= largest;
   std::vector<Draw> draws;
   for (const Segment& sy : this->Segments(spec.Y, spec.SourceSize[1], single))
