@@ -116,7 +116,7 @@ int vtkBloomPassFFT::LinesPerGroup(const Pass& pass, int axis)
   {
     return 1;
   }
-  int lines = 16;
+  int lines = 8;
   while (lines > 1 && lines * pass.Length > MaximumLength)
   {
     lines /= 2;
