@@ -187,8 +187,8 @@ private:
   /**
    * The lines a work group transforms along `axis` with `pass`: columns (adjacent in memory)
    * as many as fit the 32 KiB of shared memory, up to 8 (runs of 64 bytes a row); rows one.
-   * On an NVIDIA H200 the 7680 x 6000 grid's column transforms took 8.0 ms with 8, 9.3 with
-   * 16 and about 80 with one (docs/gpu.md).
+   * The 7680 x 6000 grid's forward column transform took 8.0 ms with 8 and 8.9 with 16 on an
+   * NVIDIA H200, where one column a work group had taken about 80 on an H100 (docs/gpu.md).
    */
   static int LinesPerGroup(const Pass& pass, int axis);
   /// The padded grid of width x height images in `grid`, and why this context cannot use it
