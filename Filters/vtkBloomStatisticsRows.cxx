@@ -292,10 +292,11 @@ void vtkBloomStatisticsRows::AddRow(
   std::vector<double>& l = this->Scratch;
   l.resize(static_cast<size_t>(n));
   const BrightTest test{ this->Threshold, this->Knee, this->ClampLuminance };
-  // The input in three spans: before, within and after the output's own [begin, end).
-  vtkBloomExactSum outside, inside;
+  // The input in three spans: before, within and after the output's own [begin, end). The
+  // pixels outside are summed apart, once, for the input and the output.
+  vtkBloomExactSum outside;
+  bool anyOutside = false;
   double outsidePeak = -std::numeric_limits<double>::infinity();
-  double insidePeak = outsidePeak;
   const int spans[4] = { 0, begin, end, n };
   for (int k = 0; k < 3; ++k)
   {
@@ -307,15 +308,18 @@ void vtkBloomStatisticsRows::AddRow(
     RowBits bits;
     double* lum = l.data() + b;
     const size_t at = static_cast<size_t>(b) * nc;
-    this->Bright += MeasureRow(input + at, e - b, nc, lum, k == 1 ? insidePeak : outsidePeak,
-      bits, this->Mode, &test);
-    (k == 1 ? inside : outside).AddRow(lum, e - b, bits.Largest, (bits.Signs >> 63) != 0);
+    this->Bright += MeasureRow(
+      input + at, e - b, nc, lum, k == 1 ? this->PeakIn : outsidePeak, bits, this->Mode, &test);
+    (k == 1 ? this->EnergyIn : outside).AddRow(lum, e - b, bits.Largest, (bits.Signs >> 63) != 0);
+    anyOutside = anyOutside || k != 1;
   }
-  this->EnergyIn.Add(outside);
-  this->EnergyIn.Add(inside);
-  this->PeakIn = std::max(this->PeakIn, std::max(outsidePeak, insidePeak));
-  // The output: the input's own values outside the span, its own sum and peak within.
-  this->EnergyOut.Add(outside);
+  if (anyOutside)
+  {
+    this->EnergyIn.Add(outside);
+    this->EnergyOut.Add(outside);
+  }
+  this->PeakIn = std::max(this->PeakIn, outsidePeak);
+  // The output: the input's own values outside the span (added above), its own within.
   this->PeakOut = std::max(this->PeakOut, outsidePeak);
   if (begin < end)
   {
