@@ -262,8 +262,9 @@ public:
    * bilinear pairs need them. On a CPU rasterizer (Mesa's llvmpipe) a draw costs little and a
    * table fetch per tap much: there one draw made the default chain 15-30 % slower at 480 x 270.
    * Default -1, automatic: 2097152 (2^21: every pass of a 1920 x 1080 frame, all but the
-   * composite at 3840 x 2160) on a GPU, 0 on a CPU rasterizer (llvmpipe, softpipe,
-   * SwiftShader); 0: every pass drawn in pieces. On an NVIDIA H200 the default chain on
+   * composite at 3840 x 2160) on a GPU, 0 in the fast mode (QUALITY_FAST: its bilinear pairs
+   * are the interiors') and on a CPU rasterizer (llvmpipe, softpipe, SwiftShader); 0: every
+   * pass drawn in pieces. On an NVIDIA H200 the default chain on
    * lit-spheres then adds 0.31 ms (1080p) and 0.36 ms (4K) over a compute copy, against 0.39
    * and 0.50 in pieces (docs/gpu.md).
    */

@@ -354,9 +354,11 @@ std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
   }
   // One draw per combination of x and y segments, cut to the region (a small pass: one draw,
   // every axis by its table)...
-  const int largest = this->SingleDrawSamples >= 0 ? this->SingleDrawSamples
-    : this->SoftwareRasterizer()                   ? 0
-                                                   : 1 << 21;
+  // Automatic: none in the fast mode (its bilinear pairs are the interiors') or on a CPU
+  // rasterizer; else every pass up to 2^21 samples.
+  const int largest = this->SingleDrawSamples >= 0   ? this->SingleDrawSamples
+    : (this->Fast || this->SoftwareRasterizer()) ? 0
+                                                 : 1 << 21;
   const bool single = static_cast<double>(width) * height <= largest;
   std::vector<Draw> draws;
   for (const Segment& sy : this->Segments(spec.Y, spec.SourceSize[1], single))
