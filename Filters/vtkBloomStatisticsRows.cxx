@@ -5,7 +5,6 @@
 #include "vtkImageBloomThreshold.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <type_traits>
@@ -142,19 +141,6 @@ struct RowBits
   std::uint64_t Signs = 0;   ///< the sign bits or'ed
 };
 
-// The value below which the bright pass certainly keeps nothing (L for the luminance modes, the
-// largest colour value for the others), less a margin for rounding in the formulas: a vector
-// of pixels all below it skips the formula.
-double BrightEdge(int mode, double t0, double k)
-{
-  using M = vtkImageBloomThreshold;
-  if (mode == M::PER_CHANNEL || mode == M::NONE)
-  {
-    return -std::numeric_limits<double>::infinity(); // cheaper than the test
-  }
-  return (t0 - k) - 1e-9 * (std::abs(t0) + std::abs(k)) - std::numeric_limits<double>::min();
-}
-
 // The luminances of a row into `lum`, `peak` raised to their maximum (NaN ignored), `bits`
 // raised to theirs and, with a test, the number of bright pixels. A colour with a NaN or Inf
 // value has a NaN or infinite luminance, so "finite and within the clamp" is one test on L.
@@ -162,12 +148,9 @@ template <int NC, int Mode>
 VTKBLOOM_ALWAYS_INLINE vtkIdType MeasurePixels(
   const float* row, int n, double* lum, double& peak, RowBits& bits, const BrightTest* test)
 {
-  using M = vtkImageBloomThreshold;
-  constexpr bool ByLuminance = Mode == M::SMOOTHSTEP_KNEE || Mode == M::HARD_LUMINANCE;
   const double most = std::numeric_limits<double>::max();
   const double ceiling = test ? std::min(test->ClampLuminance, most) : most;
   const double t0 = test ? test->Threshold : 0.0, k = test ? test->Threshold * test->Knee : 0.0;
-  const double edge = BrightEdge(Mode, t0, k);
   const std::uint64_t magnitude = ~(std::uint64_t(1) << 63);
   vtkIdType count = 0;
   bool other = false;
@@ -191,13 +174,16 @@ VTKBLOOM_ALWAYS_INLINE vtkIdType MeasurePixels(
     {
       const Masks regular = (l >= -most) & (l <= ceiling);
       others |= ~regular;
-      const Masks possible = (ByLuminance ? l : b) >= edge;
-      bool any = false;
-      for (int q = 0; q < Width; ++q)
+      // The formula only where the bright pass's own zero test cannot rule out all four
+      // pixels (by their largest L and colour value; NaN lanes are others, counted apart).
+      double lmax = l[0], bmax = b[0];
+      for (int q = 1; q < Width; ++q)
       {
-        any = any || possible[q] != 0;
+        lmax = l[q] > lmax ? l[q] : lmax;
+        bmax = b[q] > bmax ? b[q] : bmax;
       }
-      if (any)
+      if (!vtkBloomBrightPassIsZeroBelow(
+            lmax, bmax, Mode, test->Threshold, test->Knee, test->ClampLuminance))
       {
         counted -= regular & (Kept<Mode>(l, b, t0, k) > 0.0);
       }
@@ -325,8 +311,8 @@ void vtkBloomStatisticsRows::AddRow(
   {
     RowBits bits;
     const size_t at = static_cast<size_t>(begin) * nc;
-    MeasureRow(output + at, end - begin, nc, l.data() + begin, this->PeakOut, bits, this->Mode,
-      nullptr);
+    MeasureRow(
+      output + at, end - begin, nc, l.data() + begin, this->PeakOut, bits, this->Mode, nullptr);
     this->EnergyOut.AddRow(l.data() + begin, end - begin, bits.Largest, (bits.Signs >> 63) != 0);
   }
 }
