@@ -20,18 +20,21 @@ std::uint64_t Bits(double x)
   return bits;
 }
 
-// The largest biased exponent of n values (0x7FF when one is Inf or NaN).
+// The largest biased exponent of n values (0x7FF when one is Inf or NaN), and whether one has
+// its sign bit set.
 VTKBLOOM_TARGET_CLONES
-std::uint64_t LargestExponent(const double* values, int n)
+std::uint64_t LargestExponent(const double* values, int n, bool& anyNegative)
 {
-  std::uint64_t largest = 0;
+  std::uint64_t largest = 0, signs = 0;
   for (int i = 0; i < n; ++i)
   {
     std::uint64_t bits;
     std::memcpy(&bits, values + i, sizeof(bits));
     const std::uint64_t biased = (bits >> 52) & 0x7FF;
     largest = biased > largest ? biased : largest;
+    signs |= bits;
   }
+  anyNegative = (signs >> 63) != 0;
   return largest;
 }
 
@@ -78,22 +81,13 @@ VTKBLOOM_ALWAYS_INLINE bool WindowSumOf(
 }
 
 VTKBLOOM_TARGET_CLONES
-bool WindowSum(const double* values, int n, std::int64_t base, bool anyNegative, std::int64_t sums[3])
+bool WindowSum(
+  const double* values, int n, std::int64_t base, bool anyNegative, std::int64_t sums[3])
 {
   return anyNegative ? WindowSumOf<true>(values, n, base, sums)
                      : WindowSumOf<false>(values, n, base, sums);
 }
 
-// Whether any of n values has its sign bit set.
-bool AnySignBit(const double* values, int n)
-{
-  std::uint64_t signs = 0;
-  for (int i = 0; i < n; ++i)
-  {
-    signs |= Bits(values[i]);
-  }
-  return (signs >> 63) != 0;
-}
 }
 
 //------------------------------------------------------------------------------
@@ -197,7 +191,9 @@ void vtkBloomExactSum::AddRow(const double* values, int n)
   for (int i = 0; i < n; i += MaximumBlock)
   {
     const int m = std::min(MaximumBlock, n - i);
-    this->AddBlock(values + i, m, LargestExponent(values + i, m), AnySignBit(values + i, m));
+    bool anyNegative = false;
+    const std::uint64_t largest = LargestExponent(values + i, m, anyNegative);
+    this->AddBlock(values + i, m, largest, anyNegative);
   }
 }
 
