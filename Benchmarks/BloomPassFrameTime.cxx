@@ -63,10 +63,11 @@
 // the occlusion query only, and with neither (no wait: the CPU submits the whole frame ahead
 // of the GPU), GPU time and the CPU's time in Render().
 //
-// One executable for every GPU timing of scripts/gpu-run.sh (about 830 lines): each mode is a
+// One executable for every GPU timing of scripts/gpu-run.sh (about 930 lines): each mode is a
 // function of its own (TimeFrames, ProfilePasses, QualityTable, SparseTable, SyncTable,
-// OrbitTable, SelectiveTable, PSFTable), and they share the scene set-up (SetUp) and the
-// frame statistics, which separate files would have to export for one caller each.
+// OrbitTable, SelectiveTable, PSFTable, RenderersTable), and they share the scene set-up
+// (SetUp), the frame timing (vtkBloomFrameTimer.h) and the frame statistics, which separate
+// files would have to export for one caller each.
 #include "vtkBloomFrameTimer.h"
 #include "vtkBloomParameters.h"
 
@@ -778,7 +779,7 @@ bool RenderersTable(const std::string& scene, int width, int height, int frames)
     renderers.push_back(renderer);
     passes.push_back(pass);
   }
-  GLuint query = 0;
+  vtkBloomRenderTiming timing;
   std::vector<double> cpu[2], gpu[2];
   for (int f = -3; f < frames; ++f)
   {
@@ -789,38 +790,15 @@ bool RenderersTable(const std::string& scene, int width, int height, int frames)
         renderers[i]->SetPass(bloom ? static_cast<vtkRenderPass*>(passes[i]) : steps.Get());
         renderers[i]->GetActiveCamera()->Azimuth(0.5);
       }
-      window->MakeCurrent();
-      const auto start = std::chrono::steady_clock::now();
-      if (query)
-      {
-        glBeginQuery(GL_TIME_ELAPSED, query);
-      }
-      window->Render();
-      if (query)
-      {
-        glEndQuery(GL_TIME_ELAPSED);
-      }
-      const double submit =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-      window->WaitForCompletion();
-      GLuint64 ns = 0;
-      if (query)
-      {
-        glGetQueryObjectui64v(query, GL_QUERY_RESULT, &ns);
-      }
-      else
-      {
-        glGenQueries(1, &query); // the context exists now
-      }
+      timing.Render(window);
       if (f >= 0)
       {
-        cpu[bloom].push_back(1e3 * submit);
-        gpu[bloom].push_back(1e-6 * static_cast<double>(ns));
+        cpu[bloom].push_back(1e3 * timing.LastSubmitSeconds);
+        gpu[bloom].push_back(1e3 * timing.LastGPUSeconds);
       }
     }
   }
-  window->MakeCurrent();
-  glDeleteQueries(1, &query);
+  timing.Release(window);
   const vtkBloomFrameStatistics plainCPU(cpu[0]), bloomCPU(cpu[1]), plainGPU(gpu[0]),
     bloomGPU(gpu[1]);
   std::printf("Four bloomed renderers (2 x 2 viewports of %s, vtkImageBloom's defaults) in one "

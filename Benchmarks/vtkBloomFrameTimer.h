@@ -38,6 +38,70 @@
 #include <string>
 #include <vector>
 
+/**
+ * One window's frames timed twice: the wall clock from the start of Render() to the end of
+ * glFinish (Render's return value; LastSubmitSeconds stops before the wait), and a
+ * GL_TIME_ELAPSED query around Render() (LastGPUSeconds; NaN for the first frame, before the
+ * context exists). Release() before the window goes.
+ */
+class vtkBloomRenderTiming
+{
+public:
+  double Render(vtkRenderWindow* window)
+  {
+    const bool timed = this->Query != 0;
+    if (timed)
+    {
+      window->MakeCurrent();
+    }
+    const auto start = std::chrono::steady_clock::now();
+    if (timed)
+    {
+      glBeginQuery(GL_TIME_ELAPSED, this->Query);
+    }
+    window->Render();
+    if (timed)
+    {
+      glEndQuery(GL_TIME_ELAPSED);
+    }
+    this->LastSubmitSeconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    window->WaitForCompletion();
+    const double wall =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    this->LastGPUSeconds = std::numeric_limits<double>::quiet_NaN();
+    if (timed)
+    {
+      GLuint64 ns = 0;
+      glGetQueryObjectui64v(this->Query, GL_QUERY_RESULT, &ns);
+      this->LastGPUSeconds = 1e-9 * static_cast<double>(ns);
+    }
+    else
+    {
+      glGenQueries(1, &this->Query); // the context exists now
+    }
+    return wall;
+  }
+
+  void Release(vtkRenderWindow* window)
+  {
+    if (this->Query)
+    {
+      window->MakeCurrent();
+      glDeleteQueries(1, &this->Query);
+      this->Query = 0;
+    }
+  }
+
+  double LastGPUSeconds = std::numeric_limits<double>::quiet_NaN();
+  /// Wall-clock seconds of the last frame's Render() alone (before glFinish): the CPU's time
+  /// to submit it, and any wait for the GPU within it.
+  double LastSubmitSeconds = std::numeric_limits<double>::quiet_NaN();
+
+private:
+  GLuint Query = 0;
+};
+
 class vtkBloomFrameTimer
 {
 public:
@@ -166,47 +230,15 @@ public:
       this->ComputeCopy };
     this->Renderer->SetPass(passes[kind]);
     this->Renderer->GetActiveCamera()->Azimuth(0.5);
-    const bool timed = this->Query != 0;
-    if (timed)
-    {
-      this->Window->MakeCurrent();
-    }
-    const auto start = std::chrono::steady_clock::now();
-    if (timed)
-    {
-      glBeginQuery(GL_TIME_ELAPSED, this->Query);
-    }
-    this->Window->Render();
-    if (timed)
-    {
-      glEndQuery(GL_TIME_ELAPSED);
-    }
-    this->LastSubmitSeconds =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    this->Window->WaitForCompletion();
-    const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    this->LastGPUSeconds = std::numeric_limits<double>::quiet_NaN();
-    if (timed)
-    {
-      GLuint64 ns = 0;
-      glGetQueryObjectui64v(this->Query, GL_QUERY_RESULT, &ns);
-      this->LastGPUSeconds = 1e-9 * static_cast<double>(ns);
-    }
-    else
-    {
-      glGenQueries(1, &this->Query); // the context exists now
-    }
+    const double wall = this->Timing.Render(this->Window);
+    this->LastGPUSeconds = this->Timing.LastGPUSeconds;
+    this->LastSubmitSeconds = this->Timing.LastSubmitSeconds;
     return wall;
   }
 
   ~vtkBloomFrameTimer()
   {
-    if (this->Query)
-    {
-      this->Window->MakeCurrent();
-      glDeleteQueries(1, &this->Query);
-    }
+    this->Timing.Release(this->Window);
     // The passes not set on the renderer last are not reached through the window.
     this->FloatCopy->ReleaseGraphicsResources(this->Window);
     this->Bloom->ReleaseGraphicsResources(this->Window);
@@ -228,7 +260,7 @@ public:
   double LastSubmitSeconds = std::numeric_limits<double>::quiet_NaN();
 
 private:
-  GLuint Query = 0; // GL_TIME_ELAPSED
+  vtkBloomRenderTiming Timing;
 };
 
 #endif
