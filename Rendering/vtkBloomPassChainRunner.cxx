@@ -280,8 +280,8 @@ vtkBloomPassChainRunner::VariantEntry& vtkBloomPassChainRunner::VariantOf(
   const bool flags[] = { draw.XMode == OP_PERIODIC && this->Linear(spec, spec.X),
     draw.YMode == OP_PERIODIC && this->Linear(spec, spec.Y), spec.ReadsSource && this->MaskSource,
     spec.ReadsSource && this->SanitizeSource, spec.ReadsSource && this->EmissionInAlpha,
-    composite && this->EmissionInAlpha, this->SanitizeOutput, spec.CompositeBloom,
-    spec.DiscardZero, draw.Zero, spec.Blend };
+    composite && this->EmissionInAlpha, this->SanitizeOutput, spec.CompositeBloom, spec.DiscardZero,
+    draw.Zero, spec.Blend };
   std::uintptr_t bits = 0;
   for (bool flag : flags)
   {
@@ -356,9 +356,9 @@ std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
   // every axis by its table)...
   // Automatic: none in the fast mode (its bilinear pairs are the interiors') or on a CPU
   // rasterizer; else every pass up to 2^21 samples.
-  const int largest = this->SingleDrawSamples >= 0   ? this->SingleDrawSamples
-    : (this->Fast || this->SoftwareRasterizer()) ? 0
-                                                 : 1 << 21;
+  const int largest = this->SingleDrawSamples >= 0 ? this->SingleDrawSamples
+    : (this->Fast || this->SoftwareRasterizer())   ? 0
+                                                   : 1 << 21;
   const bool single = static_cast<double>(width) * height <= largest;
   std::vector<Draw> draws;
   for (const Segment& sy : this->Segments(spec.Y, spec.SourceSize[1], single))

@@ -104,7 +104,7 @@ public:
   /// Whether the context renders on the CPU (Mesa's llvmpipe or softpipe, SwiftShader), asked
   /// once per context.
   bool SoftwareRasterizer();
-  int Software = 0; ///< 0 not asked, 1 yes, -1 no
+  int Software = 0;      ///< 0 not asked, 1 yes, -1 no
   int ComputePasses = 0; ///< passes drawn as compute since it was last set to 0
 
   /**
@@ -431,7 +431,6 @@ private:
    * `single`, the whole axis by table.
    */
   std::vector<Segment> Segments(const vtkBloomLinearOperator* op, int size, bool single);
-
 
   /// The program of one variant, made on first use; null (with an error) if it fails.
   vtkOpenGLQuadHelper* Program(const std::string& variant);

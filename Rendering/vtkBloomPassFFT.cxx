@@ -125,8 +125,7 @@ int vtkBloomPassFFT::LinesPerGroup(const Pass& pass, int axis)
 }
 
 //------------------------------------------------------------------------------
-std::string vtkBloomPassFFT::TransformDefines(
-  const Pass& pass, int n, bool fromTexture, int lines)
+std::string vtkBloomPassFFT::TransformDefines(const Pass& pass, int n, bool fromTexture, int lines)
 {
   // Enough invocations that each runs at most 4 butterflies of radix 2 (length <= 4096): each
   // keeps its butterflies' results in registers.
@@ -295,8 +294,8 @@ bool vtkBloomPassFFT::BuildPrograms(const int grid[2], std::string& why)
       for (size_t i = 0; i < passes.size(); ++i)
       {
         const bool fromTexture = axis == 0 && direction < 0.0f && i == 0;
-        programs.push_back(TransformDefines(
-          passes[i], grid[axis], fromTexture, LinesPerGroup(passes[i], axis)));
+        programs.push_back(
+          TransformDefines(passes[i], grid[axis], fromTexture, LinesPerGroup(passes[i], axis)));
       }
     }
   }
@@ -446,8 +445,7 @@ void vtkBloomPassFFT::RunPass(
 {
   const int n = this->Grid[axis];
   const int lines = LinesPerGroup(pass, axis);
-  const unsigned int program =
-    this->Program(TransformDefines(pass, n, source != nullptr, lines));
+  const unsigned int program = this->Program(TransformDefines(pass, n, source != nullptr, lines));
   glUseProgram(program);
   // Rows: samples adjacent, lines NX apart; columns: samples NX apart, lines adjacent.
   glUniform1i(this->Uniform(program, "sampleStride"), axis == 0 ? 1 : this->Grid[0]);

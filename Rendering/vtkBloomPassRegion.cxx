@@ -205,7 +205,7 @@ void vtkBloomPassChainRunner::ReleaseCompute()
     }
   }
   this->ComputePrograms.clear();
-  this->Variants.clear(); // they point at the programs
+  this->Variants.clear();      // they point at the programs
   this->FailedCompute.clear(); // a new context builds them afresh
   this->ComputeSupport = 0;
   this->Software = 0;

@@ -170,8 +170,8 @@ TEST(NumericsExactSum, HintedRowsEqualOneByOne)
       const bool negative = (signs >> 63) != 0;
       vtkBloomExactSum exact, wider;
       exact.AddRow(v.data(), n, largest, negative);
-      const std::uint64_t higher = std::min<std::uint64_t>(largest + (std::uint64_t(40) << 52),
-        std::uint64_t(0x7FE) << 52);
+      const std::uint64_t higher =
+        std::min<std::uint64_t>(largest + (std::uint64_t(40) << 52), std::uint64_t(0x7FE) << 52);
       wider.AddRow(v.data(), n, std::max(largest, higher), negative);
       const double a = OneByOne(v);
       EXPECT_TRUE(Same(a, exact.Get())) << "kind " << kind << ", n " << n;

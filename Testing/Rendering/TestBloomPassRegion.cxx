@@ -244,9 +244,9 @@ TEST(RenderingBloomPassRegion, RenderedFrameIsBitIdentical)
 
 //------------------------------------------------------------------------------
 // A small pass in one draw, its operators from their tables (SingleDrawSamples, the default at
-// this size on a GPU), and every pass in pieces (periodic interiors from uniform weights, borders from
-// the tables): the same weights, taps and order, so the same bits, for every preset, as compute
-// and as fragment passes.
+// this size on a GPU), and every pass in pieces (periodic interiors from uniform weights, borders
+// from the tables): the same weights, taps and order, so the same bits, for every preset, as
+// compute and as fragment passes.
 TEST(RenderingBloomPassRegion, SingleDrawsGiveTheSameBits)
 {
   vtkSmartPointer<vtkImageData> input =
