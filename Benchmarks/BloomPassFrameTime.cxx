@@ -12,6 +12,8 @@
 //   BloomPassFrameTime --fragment ...  as above, every pass a fragment pass
 //                                  (vtkBloomPass::UseComputeShadersOff; with --fast or alone)
 //   BloomPassFrameTime --single-draw N ...  as above, vtkBloomPass::SingleDrawSamples N
+//   BloomPassFrameTime --pairs ...  as above, vtkBloomPass::FuseSeparablePassesOff (the
+//                                  separable pairs as two passes, as before issue 37's fusion)
 //   BloomPassFrameTime --direct ... / --fft ...  as above, the level blurs by their taps or
 //                                  through the FFT (vtkBloomParameters::ConvolutionMode; the
 //                                  default is AUTOMATIC; with the options above)
@@ -92,6 +94,7 @@ bool Fast = false;     // --fast
 bool Fragment = false; // --fragment
 int Convolution = -1;  // --direct, --fft: vtkBloomParameters::ConvolutionMode
 int SingleDraw = -1;   // --single-draw N: vtkBloomPass::SingleDrawSamples
+bool Pairs = false;    // --pairs: vtkBloomPass::FuseSeparablePassesOff
 
 // The timer on `scene` with `preset`, in the quality and shader stage the options ask for; false,
 // with a message, for an unknown scene or preset.
@@ -109,6 +112,7 @@ bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::strin
   {
     timer.Bloom->SetSingleDrawSamples(SingleDraw);
   }
+  timer.Bloom->SetFuseSeparablePasses(!Pairs);
   if (Convolution >= 0)
   {
     timer.Bloom->GetParameters()->SetConvolutionMode(Convolution);
@@ -776,6 +780,11 @@ bool RenderersTable(const std::string& scene, int width, int height, int frames)
     pass->SetDelegatePass(steps);
     pass->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
     pass->SetUseComputeShaders(!Fragment);
+    pass->SetFuseSeparablePasses(!Pairs);
+    if (SingleDraw >= 0)
+    {
+      pass->SetSingleDrawSamples(SingleDraw);
+    }
     renderers.push_back(renderer);
     passes.push_back(pass);
   }
@@ -821,6 +830,35 @@ bool RenderersTable(const std::string& scene, int width, int height, int frames)
 
 int main(int argc, char* argv[])
 {
+  // Options first; they apply to every table that renders the bloom view.
+  while (argc > 1 &&
+    (std::strcmp(argv[1], "--fast") == 0 || std::strcmp(argv[1], "--fragment") == 0 ||
+      std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0 ||
+      std::strcmp(argv[1], "--pairs") == 0 ||
+      (argc > 2 && std::strcmp(argv[1], "--single-draw") == 0)))
+  {
+    if (std::strcmp(argv[1], "--single-draw") == 0)
+    {
+      SingleDraw = std::atoi(argv[2]);
+      --argc;
+      ++argv;
+    }
+    else if (std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0)
+    {
+      Convolution = std::strcmp(argv[1], "--fft") == 0 ? vtkBloomParameters::CONVOLUTION_FFT
+                                                       : vtkBloomParameters::CONVOLUTION_DIRECT;
+    }
+    else if (std::strcmp(argv[1], "--pairs") == 0)
+    {
+      Pairs = true;
+    }
+    else
+    {
+      (std::strcmp(argv[1], "--fast") == 0 ? Fast : Fragment) = true;
+    }
+    --argc;
+    ++argv;
+  }
   if (argc > 5 && std::strcmp(argv[1], "--selective") == 0)
   {
     return SelectiveTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0
@@ -856,29 +894,6 @@ int main(int argc, char* argv[])
              argc > 5 && std::strcmp(argv[5], "fast") == 0)
       ? 0
       : 1;
-  }
-  while (argc > 1 &&
-    (std::strcmp(argv[1], "--fast") == 0 || std::strcmp(argv[1], "--fragment") == 0 ||
-      std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0 ||
-      (argc > 2 && std::strcmp(argv[1], "--single-draw") == 0)))
-  {
-    if (std::strcmp(argv[1], "--single-draw") == 0)
-    {
-      SingleDraw = std::atoi(argv[2]);
-      --argc;
-      ++argv;
-    }
-    else if (std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0)
-    {
-      Convolution = std::strcmp(argv[1], "--fft") == 0 ? vtkBloomParameters::CONVOLUTION_FFT
-                                                       : vtkBloomParameters::CONVOLUTION_DIRECT;
-    }
-    else
-    {
-      (std::strcmp(argv[1], "--fast") == 0 ? Fast : Fragment) = true;
-    }
-    --argc;
-    ++argv;
   }
   if (argc > 1 && std::strcmp(argv[1], "--info") == 0)
   {

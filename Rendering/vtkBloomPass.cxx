@@ -242,6 +242,7 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   this->Runner.UseCompute = self->UseComputeShaders;
   this->Runner.SimulateComputeFailure = self->SimulateComputeShaderFailure;
   this->Runner.SingleDrawSamples = self->SingleDrawSamples;
+  this->Runner.FuseSeparablePasses = self->FuseSeparablePasses;
   this->Runner.ComputePasses = 0;
   this->Runner.Parameters = self->Parameters;
   this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
@@ -1008,6 +1009,7 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
      << "SimulateComputeShaderFailure: " << (this->SimulateComputeShaderFailure ? "On" : "Off")
      << "\n";
   os << indent << "SingleDrawSamples: " << this->SingleDrawSamples << "\n";
+  os << indent << "FuseSeparablePasses: " << (this->FuseSeparablePasses ? "On" : "Off") << "\n";
   os << indent << "LastComputePasses: " << this->LastComputePasses << "\n";
   os << indent << "CaptureResult: " << (this->CaptureResult ? "On" : "Off") << "\n";
   os << indent << "LastPSFGrid: " << this->LastPSFGrid[0] << " " << this->LastPSFGrid[1] << "\n";

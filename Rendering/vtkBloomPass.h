@@ -274,6 +274,21 @@ public:
 
   ///@{
   /**
+   * Where the chain runs a term as a separable pair of passes (its x half into a scratch
+   * target, then its y half: the blur of a level, the downsample's tent, the upsample), and
+   * the pair is one draw (SingleDrawSamples) of compute shaders in the exact mode, run it as
+   * one dispatch: each 16 x 16 work group sums the source rows its outputs read once into
+   * shared memory, then sums them through the y operator. The same sums in the same order, so
+   * the same bits (tested); one dispatch and one round trip through memory fewer per pair: the
+   * default chain's 32 passes become 19 (docs/gpu.md). Default on.
+   */
+  vtkSetMacro(FuseSeparablePasses, bool);
+  vtkGetMacro(FuseSeparablePasses, bool);
+  vtkBooleanMacro(FuseSeparablePasses, bool);
+  ///@}
+
+  ///@{
+  /**
    * For tests: make every compute program fail to build, as a driver's compiler might. A
    * compute variant that does not build is not fatal: the pass warns once and runs that
    * variant's passes as fragment passes, with the same result. Default off.
@@ -576,6 +591,7 @@ protected:
   bool UseComputeShaders;
   bool SimulateComputeShaderFailure = false;
   int SingleDrawSamples = -1;
+  bool FuseSeparablePasses = true;
   int LastComputePasses;
   bool CaptureResult;
   int LastBrightRegion[4];

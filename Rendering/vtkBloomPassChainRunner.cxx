@@ -47,6 +47,7 @@ void vtkBloomPassChainRunner::ReleaseOperators(vtkWindow* w)
   }
   this->Operators.clear();
   this->Interiors.clear();
+  this->TileRowCounts.clear();
   this->Variants.clear(); // keyed by the operators' addresses
   this->FFTBlur->ReleaseOperators();
 }
@@ -154,6 +155,10 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
      << "\n#define SANITIZE_OUTPUT " << (this->SanitizeOutput ? 1 : 0)
      << "\n#define COMPOSITE_BLOOM " << (spec.CompositeBloom ? 1 : 0) << "\n#define DISCARD_ZERO "
      << (spec.DiscardZero ? 1 : 0) << "\n#define ZERO_BLOOM " << (spec.ZeroBloom ? 1 : 0) << "\n";
+  if (spec.Tiled)
+  {
+    os << "#define TILE 1\n#define TILE_ROWS " << this->TileRows(*spec.Y) << "\n";
+  }
   return os.str();
 }
 
@@ -281,7 +286,7 @@ vtkBloomPassChainRunner::VariantEntry& vtkBloomPassChainRunner::VariantOf(
     draw.YMode == OP_PERIODIC && this->Linear(spec, spec.Y), spec.ReadsSource && this->MaskSource,
     spec.ReadsSource && this->SanitizeSource, spec.ReadsSource && this->EmissionInAlpha,
     composite && this->EmissionInAlpha, this->SanitizeOutput, spec.CompositeBloom, spec.DiscardZero,
-    draw.Zero, spec.Blend };
+    draw.Zero, spec.Blend, spec.Tiled };
   std::uintptr_t bits = 0;
   for (bool flag : flags)
   {
@@ -354,12 +359,8 @@ std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
   }
   // One draw per combination of x and y segments, cut to the region (a small pass: one draw,
   // every axis by its table)...
-  // Automatic: none in the fast mode (its bilinear pairs are the interiors') or on a CPU
-  // rasterizer; else every pass up to 2^21 samples.
-  const int largest = this->SingleDrawSamples >= 0 ? this->SingleDrawSamples
-    : (this->Fast || this->SoftwareRasterizer())   ? 0
-                                                   : 1 << 21;
-  const bool single = static_cast<double>(width) * height <= largest;
+  const bool single =
+    spec.Tiled || static_cast<double>(width) * height <= this->SingleDrawLimit();
   std::vector<Draw> draws;
   for (const Segment& sy : this->Segments(spec.Y, spec.SourceSize[1], single))
   {
@@ -393,6 +394,28 @@ std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
     }
   }
   return draws;
+}
+
+//------------------------------------------------------------------------------
+int vtkBloomPassChainRunner::SingleDrawLimit()
+{
+  // Automatic: none in the fast mode (its bilinear pairs are the interiors') or on a CPU
+  // rasterizer; else every pass up to 2^21 samples.
+  return this->SingleDrawSamples >= 0    ? this->SingleDrawSamples
+    : (this->Fast || this->SoftwareRasterizer()) ? 0
+                                                 : 1 << 21;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::Fuses(const vtkBloomLinearOperator& x, const vtkBloomLinearOperator& y)
+{
+  // The tiled pass evaluates both axes by their tables, as one draw does; the fast mode's
+  // bilinear pairs are the separable passes' own. A compute program that does not build runs
+  // as a fragment 2D pass: the same sums, each row summed again per output.
+  return this->FuseSeparablePasses && !this->Fast && this->UseCompute &&
+    !this->SimulateComputeFailure && this->ComputeSupported() &&
+    static_cast<double>(x.OutputSize) * y.OutputSize <= this->SingleDrawLimit() &&
+    this->TileRows(y) <= MaximumTileRows;
 }
 
 //------------------------------------------------------------------------------

@@ -101,6 +101,12 @@ public:
   /// A pass of at most this many output samples is one draw (vtkBloomPass::SingleDrawSamples;
   /// negative: automatic, by SoftwareRasterizer).
   int SingleDrawSamples = -1;
+  /**
+   * A separable pair of passes (x into a scratch target, then y) that is one draw is one
+   * compute dispatch instead (vtkBloomPass::FuseSeparablePasses): a 2D pass whose work groups
+   * sum the source rows they read once, in shared memory (TILE in vtkBloomPassFS.glsl).
+   */
+  bool FuseSeparablePasses = true;
   /// Whether the context renders on the CPU (Mesa's llvmpipe or softpipe, SwiftShader), asked
   /// once per context.
   bool SoftwareRasterizer();
@@ -295,7 +301,24 @@ private:
     int Level = -1;                     ///< the pyramid level it writes, for the profile
     const Box* Region = nullptr;        ///< restricted: the samples to compute, else all
     bool ZeroBloom = false; ///< composite where the bloom is known zero (no operator taps)
+    bool Tiled = false;     ///< X and Y both set: the x sums shared by a work group (Fuses)
   };
+
+  /// The most samples a pass may have to be one draw (SingleDrawSamples, or its automatic value).
+  int SingleDrawLimit();
+  /**
+   * Whether the separable pair x then y (x's output rows are y's input) runs as one tiled
+   * compute pass (PassSpec::Tiled): FuseSeparablePasses, compute shaders, the exact mode, a
+   * pass of one draw, and at most MaximumTileRows rows read by any 16 consecutive outputs of y.
+   */
+  bool Fuses(const vtkBloomLinearOperator& x, const vtkBloomLinearOperator& y);
+  /// The most input rows 16 consecutive output rows of `y` read (TILE_ROWS), found once.
+  int TileRows(const vtkBloomLinearOperator& y);
+  std::map<const vtkBloomLinearOperator*, int> TileRowCounts;
+  /// 112 rows of 16 RGBA float samples: 28 KiB of the 32 KiB of shared memory OpenGL 4.3 grants.
+  static constexpr int MaximumTileRows = 112;
+  /// Whether a blur's operator runs through the FFT (FFTBlurPass would take it).
+  bool UsesFFT(const vtkBloomLinearOperator& op);
 
   /**
    * The steps of Run() and what they pass on: with Restrict, the box each target can be

@@ -269,7 +269,12 @@ void vtkBloomPassChainRunner::DownsampleLevels(ChainRegions& regions)
       down.Level = static_cast<int>(i);
       down.Region = regions.Of(levelBox[i]);
       const int rows[2] = { level.Size[0], res.Levels[i - 1].Size[1] };
-      if (!TwoDimensional(term, this->Fast))
+      if (!TwoDimensional(term, this->Fast) && this->Fuses(term.X, term.Y))
+      {
+        down.Tiled = true; // both halves in one dispatch
+        down.Name = "down-xy";
+      }
+      else if (!TwoDimensional(term, this->Fast))
       {
         // The x half into Temp, then the y half and the step.
         PassSpec x;
@@ -325,6 +330,27 @@ void vtkBloomPassChainRunner::BlurLevels(ChainRegions& regions)
     const Box xBox =
       Reach(&level.BlurPass.X, nullptr, regions.Level[i], level.Size[0], level.Size[1]);
     regions.Blur[i] = Reach(nullptr, &level.BlurPass.Y, xBox, level.Size[0], level.Size[1]);
+    vtkBloomPassTarget& blurred = cascade && i == last ? res.Accum[last] : res.Work[i];
+    regions.LastAccumulated = cascade && i == last;
+    regions.Blurred[i] = regions.LastAccumulated ? &res.Levels[i] : &res.Work[i];
+    const double weight = regions.LastAccumulated ? level.Weight : 1.0;
+    if (!this->UsesFFT(level.BlurPass.X) && !this->UsesFFT(level.BlurPass.Y) &&
+      this->Fuses(level.BlurPass.X, level.BlurPass.Y))
+    {
+      PassSpec xy;
+      xy.Source = res.Levels[i].Color;
+      xy.SourceSize = level.Size;
+      xy.X = &level.BlurPass.X;
+      xy.Y = &level.BlurPass.Y;
+      xy.Tiled = true;
+      xy.Weight = weight;
+      xy.Name = "blur-xy";
+      xy.Level = static_cast<int>(i);
+      xy.Region = regions.Of(regions.Blur[i]);
+      const int zero[2] = { 0, 0 };
+      this->Pass(&blurred, zero, xy);
+      continue;
+    }
     PassSpec x;
     x.Source = res.Levels[i].Color;
     x.SourceSize = level.Size;
@@ -340,18 +366,18 @@ void vtkBloomPassChainRunner::BlurLevels(ChainRegions& regions)
     y.Name = "blur-y";
     y.Level = static_cast<int>(i);
     y.Region = regions.Of(regions.Blur[i]);
-    if (cascade && i == last)
-    {
-      y.Weight = level.Weight;
-      this->BlurPass(res.Accum[last], y, 1);
-      regions.LastAccumulated = true;
-    }
-    else
-    {
-      this->BlurPass(res.Work[i], y, 1);
-      regions.Blurred[i] = &res.Work[i];
-    }
+    y.Weight = weight;
+    this->BlurPass(blurred, y, 1);
   }
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::UsesFFT(const vtkBloomLinearOperator& op)
+{
+  // Compute shaders only, as any compute pass: without them (or when they are made to fail)
+  // the direct pass runs, whatever ConvolutionMode asks.
+  return this->UseCompute && !this->SimulateComputeFailure && this->ComputeSupported() &&
+    this->FFTBlur->Choose(this->Resources.Context, op, this->Parameters->GetConvolutionMode());
 }
 
 //------------------------------------------------------------------------------
@@ -368,11 +394,8 @@ void vtkBloomPassChainRunner::BlurPass(vtkBloomPassTarget& target, const PassSpe
 bool vtkBloomPassChainRunner::FFTBlurPass(
   vtkBloomPassTarget& target, const PassSpec& spec, int axis)
 {
-  // Compute shaders only, as any compute pass: without them (or when they are made to fail)
-  // the direct pass runs, whatever ConvolutionMode asks.
   const vtkBloomLinearOperator& op = axis == 0 ? *spec.X : *spec.Y;
-  if (!this->UseCompute || this->SimulateComputeFailure || !this->ComputeSupported() ||
-    !this->FFTBlur->Choose(this->Resources.Context, op, this->Parameters->GetConvolutionMode()))
+  if (!this->UsesFFT(op))
   {
     return false;
   }
@@ -493,14 +516,23 @@ void vtkBloomPassChainRunner::AccumulateCascade(ChainRegions& regions)
     {
       accumBox[i] = accumBox[i].Union(regions.Blur[i]);
     }
-    x.Region = regions.Of(xBox);
-    this->BlurPass(res.Temp, x, 0);
     PassSpec y;
-    y.Source = res.Temp.Color;
     const int size[2] = { level.Size[0], res.Accum[i + 1].Size[1] };
-    y.SourceSize = size;
+    if (!this->UsesFFT(level.Up.X) && this->Fuses(level.Up.X, level.Up.Y))
+    {
+      y = x; // both halves in one dispatch
+      y.Tiled = true;
+      y.Name = "up-xy";
+    }
+    else
+    {
+      x.Region = regions.Of(xBox);
+      this->BlurPass(res.Temp, x, 0);
+      y.Source = res.Temp.Color;
+      y.SourceSize = size;
+      y.Name = "up-y";
+    }
     y.Y = &level.Up.Y;
-    y.Name = "up-y";
     y.Level = static_cast<int>(i);
     y.Region = regions.Of(accumBox[i]);
     if (level.Weight != 0.0)

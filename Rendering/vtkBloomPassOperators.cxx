@@ -166,6 +166,33 @@ const vtkBloomPassChainRunner::Interior& vtkBloomPassChainRunner::InteriorOf(
 }
 
 //------------------------------------------------------------------------------
+int vtkBloomPassChainRunner::TileRows(const vtkBloomLinearOperator& y)
+{
+  auto found = this->TileRowCounts.find(&y);
+  if (found != this->TileRowCounts.end())
+  {
+    return found->second;
+  }
+  // A tile's 16 output rows may start anywhere (a restricted pass starts at its region): the
+  // largest span over every 16 consecutive rows, First increasing along the band. Rounded up
+  // to 16, so that operators of one shape share a program.
+  int rows = 0;
+  for (int j = 0; j < y.OutputSize; ++j)
+  {
+    if (j > 0 && y.First[j] < y.First[j - 1])
+    {
+      rows = MaximumTileRows + 1; // not a band whose rows advance: never tiled
+      break;
+    }
+    const int last = std::min(j + 15, y.OutputSize - 1);
+    rows = std::max(rows, y.First[last] + y.Width - y.First[j]);
+  }
+  rows = (rows + 15) / 16 * 16;
+  this->TileRowCounts[&y] = rows;
+  return rows;
+}
+
+//------------------------------------------------------------------------------
 std::vector<vtkBloomPassChainRunner::Segment> vtkBloomPassChainRunner::Segments(
   const vtkBloomLinearOperator* op, int size, bool single)
 {

@@ -37,6 +37,14 @@
   is a uniform zero (not a constant, which the compiler could fold), so the result is the
   full composite's bit for bit.
 
+  TILE (compute only, both axes OP_TABLE): the x half of the pass computed once per row. A 2D
+  pass re-sums a source row for every output row that reads it; a separable pair of passes
+  writes the rows to a target and reads them back in a second dispatch. Here each 16 x 16 work
+  group first sums the at most TILE_ROWS source rows its outputs read, for its 16 columns, into
+  shared memory, then each output sums its column's rows through the y operator: the same sums
+  in the same order as the separable pair (vtkBloomPass::FuseSeparablePasses), kept in 32-bit
+  floats as the exact mode's targets keep them: the same bits.
+
   COMPUTE: the same pass as a compute shader (OpenGL 4.3; vtkBloomPass::UseComputeShaders),
   one invocation per output sample of the draw's region, written with imageStore into the
   target bound as image unit 0 (IMAGE_FORMAT) at targetOffset (the composite's origin in the
@@ -72,6 +80,12 @@ uniform float weight;       // SCALE, KARIS_TERM and ADD weight
 #endif
 #ifndef ZERO_BLOOM
 #define ZERO_BLOOM 0
+#endif
+#ifndef TILE
+#define TILE 0
+#endif
+#if TILE && defined(COMPUTE)
+shared vec4 tileRows[TILE_ROWS * 16]; // the x sums of the group's rows, 16 columns a row
 #endif
 #if X_LINEAR || Y_LINEAR
 uniform vec2 sourceTexel; // 1 / the source texture's size
@@ -373,21 +387,75 @@ bool tapIsOn(uint any, uint all, int k, float w)
   return ((any >> uint(k)) & 1u) != 0u && (((all >> uint(k)) & 1u) != 0u || w != 0.0);
 }
 
+// The x half of output column p.x on source row r (X_LINEAR aside).
+vec4 rowSum(int px, int r)
+{
+  vec4 row = vec4(0.0);
+  for (int kx = 0; kx < X_COUNT; ++kx)
+  {
+    float wx = weightX(px, kx);
+    if (tapIsOn(X_ANY, X_ALL, kx, wx))
+    {
+      row += wx * fetchSource(ivec2(xFirst + kx, r));
+    }
+  }
+  return row;
+}
+
+#if TILE && defined(COMPUTE)
+// The x sums of the source rows the work group's outputs read, for the group's columns, into
+// tileRows; returns the first of those rows. Every invocation reaches the barrier.
+int sumTileRows(ivec2 p, bool column)
+{
+  int y0 = regionOffset.y + int(gl_WorkGroupID.y) * 16;
+  int yLast = min(y0 + 15, regionOffset.y + int(regionSize.y) - 1);
+  setUpY(y0);
+  int r0 = yFirst;
+  setUpY(yLast);
+  int r1 = min(min(yFirst + Y_COUNT, r0 + TILE_ROWS), textureSize(source, 0).y);
+  if (column)
+  {
+    setUpX(p.x);
+    for (int r = r0 + int(gl_LocalInvocationID.y); r < r1; r += 16)
+    {
+      tileRows[(r - r0) * 16 + int(gl_LocalInvocationID.x)] = rowSum(p.x, r);
+    }
+  }
+  memoryBarrierShared();
+  barrier();
+  return r0;
+}
+#endif
+
 void main()
 {
   // The output sample this fragment computes; texCoord spans the draw's region.
 #ifdef COMPUTE
+  ivec2 p = regionOffset + ivec2(gl_GlobalInvocationID.xy);
+#if TILE
+  int tileFirst = sumTileRows(p, float(gl_GlobalInvocationID.x) < regionSize.x);
+#endif
   if (any(greaterThanEqual(vec2(gl_GlobalInvocationID.xy), regionSize)))
   {
     return;
   }
-  ivec2 p = regionOffset + ivec2(gl_GlobalInvocationID.xy);
 #else
   ivec2 p = regionOffset + ivec2(floor(texCoord * regionSize));
 #endif
 
 #if ZERO_BLOOM
   vec4 sum = vec4(zeroBloom);
+#elif TILE && defined(COMPUTE)
+  setUpY(p.y);
+  vec4 sum = vec4(0.0);
+  for (int ky = 0; ky < Y_COUNT; ++ky)
+  {
+    float wy = weightY(p.y, ky);
+    if (tapIsOn(Y_ANY, Y_ALL, ky, wy))
+    {
+      sum += wy * tileRows[(yFirst + ky - tileFirst) * 16 + int(gl_LocalInvocationID.x)];
+    }
+  }
 #elif STEP != STEP_COMPOSITE || COMPOSITE_BLOOM
   setUpX(p.x);
   setUpY(p.y);
@@ -398,19 +466,19 @@ void main()
     float wy = weightY(p.y, ky);
     if (tapIsOn(Y_ANY, Y_ALL, ky, wy))
     {
+#if X_LINEAR || Y_LINEAR
       vec4 row = vec4(0.0);
       for (int kx = 0; kx < X_COUNT; ++kx)
       {
         float wx = weightX(p.x, kx);
         if (tapIsOn(X_ANY, X_ALL, kx, wx))
         {
-#if X_LINEAR || Y_LINEAR
           row += wx * textureLod(source, (vec2(positionX(kx), positionY(ky)) + 0.5) * sourceTexel, 0.0);
-#else
-          row += wx * fetchSource(ivec2(xFirst + kx, yFirst + ky));
-#endif
         }
       }
+#else
+      vec4 row = rowSum(p.x, yFirst + ky);
+#endif
       sum += wy * row;
     }
   }

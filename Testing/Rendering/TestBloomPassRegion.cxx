@@ -269,6 +269,55 @@ TEST(RenderingBloomPassRegion, SingleDrawsGiveTheSameBits)
 }
 
 //------------------------------------------------------------------------------
+// A separable pair of passes as one tiled compute dispatch (FuseSeparablePasses: the x sums in
+// shared memory) and as two passes through a target: the same bits, for every preset, with
+// either precision of the scene (the exact chain's own targets are 32-bit floats), full and
+// restricted to the bright region (whose tiles start at the region, not at 0); and the default
+// chain runs in fewer passes.
+TEST(RenderingBloomPassRegion, FusedSeparablePassesGiveTheSameBits)
+{
+  vtkSmartPointer<vtkImageData> input =
+    SparseImage(301, 207, { { 100, 160, 60, 90 }, { 20, 24, 150, 170 }, { 250, 251, 10, 11 } });
+  for (const std::string& preset : Presets())
+  {
+    for (const int precision : { vtkBloomPass::FLOAT32, vtkBloomPass::FLOAT16 })
+    {
+      for (const bool restrict : { false, true })
+      {
+        const std::string what = preset + ", float" + std::to_string(precision) +
+          (restrict ? ", restricted" : ", full");
+        Gpu gpu;
+        UsePreset(gpu.Pass, preset);
+        gpu.Pass->SetFloatPrecision(precision);
+        gpu.Pass->GetParameters()->SetRestrictToBrightRegion(restrict);
+        gpu.Pass->SetSingleDrawSamples(512 * 512); // the automatic value is 0 on llvmpipe
+        gpu.Pass->FuseSeparablePassesOn();
+        vtkSmartPointer<vtkImageData> fused = gpu.Apply(input);
+        const int fusedPasses = gpu.Pass->GetNumberOfPasses();
+        gpu.Pass->FuseSeparablePassesOff();
+        vtkSmartPointer<vtkImageData> pairs = gpu.Apply(input);
+        const int pairPasses = gpu.Pass->GetNumberOfPasses();
+        EXPECT_TRUE(SameBits(fused, pairs)) << what;
+        std::cout << "[ fused ] " << what << ": " << fusedPasses << " passes (" << pairPasses
+                  << " as pairs)\n";
+        GLint major = 0, minor = 0;
+        glGetIntegerv(GL_MAJOR_VERSION, &major);
+        glGetIntegerv(GL_MINOR_VERSION, &minor);
+        if (!restrict) // a restricted chain's passes depend on its probes
+        {
+          EXPECT_LE(fusedPasses, pairPasses) << what;
+        }
+        if (preset == "default" && !restrict && major * 10 + minor >= 43)
+        {
+          // Each level's blur, downsample tent and upsample is one pass fewer.
+          EXPECT_LE(fusedPasses + 10, pairPasses) << what;
+        }
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
 // The fast mode approximates the exact pass: per preset, within a few per cent (relative L2
 // of the colour), but not bit for bit (it does take the bilinear path), in fewer passes or as
 // many.
