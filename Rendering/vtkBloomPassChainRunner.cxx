@@ -133,6 +133,16 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
   // VariantOf's key holds everything read here: a new #define needs its value there too.
   std::ostringstream os;
   os << "#define X_MODE " << xMode << "\n#define Y_MODE " << yMode << "\n";
+  // A table's width as a constant (the uniform holds the same value), so that the loop over
+  // its taps unrolls: on an NVIDIA H100 each small pass waited on its taps' fetches one by one.
+  if (xMode == OP_TABLE)
+  {
+    os << "#define X_TABLE_WIDTH " << spec.X->Width << "\n";
+  }
+  if (yMode == OP_TABLE)
+  {
+    os << "#define Y_TABLE_WIDTH " << spec.Y->Width << "\n";
+  }
   if (xMode == OP_PERIODIC)
   {
     os << this->InteriorOf(*spec.X).Defines("X", this->Linear(spec, spec.X));
@@ -158,6 +168,12 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
   if (spec.Tiled)
   {
     os << "#define TILE 1\n#define TILE_ROWS " << this->TileRows(*spec.Y) << "\n";
+  }
+  if (spec.Tiled && spec.Second)
+  {
+    os << "#define TILE2 1\n#define TILE2_ROWS " << this->TileRows(*spec.Second->Y)
+       << "\n#define TILE2_ADDEND " << (spec.SecondIsAddend ? 1 : 0) << "\n#define X2_WIDTH "
+       << spec.Second->X->Width << "\n#define Y2_WIDTH " << spec.Second->Y->Width << "\n";
   }
   return os.str();
 }
@@ -194,6 +210,18 @@ void vtkBloomPassChainRunner::Pass(
   }
   const bool compute = image.Texture != 0;
   const PassTextures textures = this->PassTexturesOf(spec);
+  const TextureNames names = NamesOf(textures);
+  // Into one of the chain's own targets, a compute pass's barrier waits for the pass that
+  // needs it (BeforeComputePass); anything else first makes every pending write visible.
+  const bool deferred = compute && target && this->Deferring;
+  if (deferred)
+  {
+    this->BeforeComputePass(names, image.Texture);
+  }
+  else
+  {
+    this->FlushComputeWrites();
+  }
   for (vtkTextureObject* texture : textures.Textures)
   {
     if (texture)
@@ -234,7 +262,12 @@ void vtkBloomPassChainRunner::Pass(
       quad->Render();
     }
   }
-  if (compute)
+  if (deferred)
+  {
+    this->AfterComputePass(names, image.Texture);
+    ++this->ComputePasses;
+  }
+  else if (compute)
   {
     this->EndCompute();
     ++this->ComputePasses;
@@ -286,7 +319,7 @@ vtkBloomPassChainRunner::VariantEntry& vtkBloomPassChainRunner::VariantOf(
     draw.YMode == OP_PERIODIC && this->Linear(spec, spec.Y), spec.ReadsSource && this->MaskSource,
     spec.ReadsSource && this->SanitizeSource, spec.ReadsSource && this->EmissionInAlpha,
     composite && this->EmissionInAlpha, this->SanitizeOutput, spec.CompositeBloom, spec.DiscardZero,
-    draw.Zero, spec.Blend, spec.Tiled };
+    draw.Zero, spec.Blend, spec.Tiled, spec.SecondIsAddend };
   std::uintptr_t bits = 0;
   for (bool flag : flags)
   {
@@ -297,7 +330,9 @@ vtkBloomPassChainRunner::VariantEntry& vtkBloomPassChainRunner::VariantOf(
     static_cast<std::uintptr_t>(draw.YMode), static_cast<std::uintptr_t>(spec.Step),
     static_cast<std::uintptr_t>(mode),
     static_cast<std::uintptr_t>(composite ? this->Resources.BackgroundMode : 0),
-    static_cast<std::uintptr_t>(format), bits };
+    static_cast<std::uintptr_t>(format), bits,
+    reinterpret_cast<std::uintptr_t>(spec.Second ? spec.Second->X : nullptr),
+    reinterpret_cast<std::uintptr_t>(spec.Second ? spec.Second->Y : nullptr) };
   VariantEntry& entry = this->Variants[key];
   if (entry.Variant.empty())
   {
@@ -359,8 +394,7 @@ std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
   }
   // One draw per combination of x and y segments, cut to the region (a small pass: one draw,
   // every axis by its table)...
-  const bool single =
-    spec.Tiled || static_cast<double>(width) * height <= this->SingleDrawLimit();
+  const bool single = spec.Tiled || static_cast<double>(width) * height <= this->SingleDrawLimit();
   std::vector<Draw> draws;
   for (const Segment& sy : this->Segments(spec.Y, spec.SourceSize[1], single))
   {
@@ -401,13 +435,14 @@ int vtkBloomPassChainRunner::SingleDrawLimit()
 {
   // Automatic: none in the fast mode (its bilinear pairs are the interiors') or on a CPU
   // rasterizer; else every pass up to 2^21 samples.
-  return this->SingleDrawSamples >= 0    ? this->SingleDrawSamples
+  return this->SingleDrawSamples >= 0            ? this->SingleDrawSamples
     : (this->Fast || this->SoftwareRasterizer()) ? 0
                                                  : 1 << 21;
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassChainRunner::Fuses(const vtkBloomLinearOperator& x, const vtkBloomLinearOperator& y)
+bool vtkBloomPassChainRunner::Fuses(
+  const vtkBloomLinearOperator& x, const vtkBloomLinearOperator& y)
 {
   // The tiled pass evaluates both axes by their tables, as one draw does; the fast mode's
   // bilinear pairs are the separable passes' own. A compute program that does not build runs
@@ -416,6 +451,15 @@ bool vtkBloomPassChainRunner::Fuses(const vtkBloomLinearOperator& x, const vtkBl
     !this->SimulateComputeFailure && this->ComputeSupported() &&
     static_cast<double>(x.OutputSize) * y.OutputSize <= this->SingleDrawLimit() &&
     this->TileRows(y) <= MaximumTileRows;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::FusesTwo(const vtkBloomLinearOperator& x,
+  const vtkBloomLinearOperator& y, const vtkBloomLinearOperator& x2,
+  const vtkBloomLinearOperator& y2)
+{
+  return x.OutputSize == x2.OutputSize && y.OutputSize == y2.OutputSize && this->Fuses(x, y) &&
+    this->Fuses(x2, y2) && this->TileRows(y) + this->TileRows(y2) <= MaximumTileRows;
 }
 
 //------------------------------------------------------------------------------
@@ -431,7 +475,10 @@ vtkBloomPassChainRunner::PassTextures vtkBloomPassChainRunner::PassTexturesOf(co
     spec.Step == STEP_COMPOSITE &&
         this->Resources.BackgroundMode == vtkBloomPassResources::BACKGROUND_TEXTURE
       ? this->Resources.Background.Color.Get()
-      : nullptr };
+      : nullptr,
+    spec.Second ? spec.Second->Source : nullptr,
+    spec.Second ? this->OperatorTexture(*spec.Second->X) : nullptr,
+    spec.Second ? this->OperatorTexture(*spec.Second->Y) : nullptr };
   return t;
 }
 
@@ -455,6 +502,10 @@ void vtkBloomPassChainRunner::SetDrawUniforms(
   u.Float("zeroBloom", 0.0);
   u.Int("xWidth", spec.X ? spec.X->Width : 0);
   u.Int("yWidth", spec.Y ? spec.Y->Width : 0);
+  if (spec.Second)
+  {
+    u.Float("weight2", spec.Second->Weight);
+  }
   const float texel[2] = { 1.0f / spec.Source->GetWidth(), 1.0f / spec.Source->GetHeight() };
   u.Float2("sourceTexel", texel);
   // The interior's weights of each axis evaluated as a periodic convolution.
@@ -533,6 +584,7 @@ void vtkBloomPassChainRunner::SetStepUniforms(Uniforms& u, int step)
 //------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::Clear(vtkBloomPassTarget& target)
 {
+  this->FlushComputeWrites();
   vtkOpenGLState* state = this->Resources.Context->GetState();
   target.FBO->Bind();
   target.FBO->ActivateDrawBuffer(0);

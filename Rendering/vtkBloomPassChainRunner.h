@@ -302,6 +302,14 @@ private:
     const Box* Region = nullptr;        ///< restricted: the samples to compute, else all
     bool ZeroBloom = false; ///< composite where the bloom is known zero (no operator taps)
     bool Tiled = false;     ///< X and Y both set: the x sums shared by a work group (Fuses)
+    /**
+     * Tiled only: a second separable term of the same output (its Source, SourceSize, X, Y
+     * and Weight), its x sums shared too (TILE2 in vtkBloomPassFS.glsl): the ADD step's addend
+     * (SecondIsAddend), or added to the result times its Weight. What a pass of its own would
+     * have written into a target for this one to read, the same bits (FusesTwo).
+     */
+    const PassSpec* Second = nullptr;
+    bool SecondIsAddend = false;
   };
 
   /// The most samples a pass may have to be one draw (SingleDrawSamples, or its automatic value).
@@ -312,10 +320,20 @@ private:
    * pass of one draw, and at most MaximumTileRows rows read by any 16 consecutive outputs of y.
    */
   bool Fuses(const vtkBloomLinearOperator& x, const vtkBloomLinearOperator& y);
+  /// Fuses both terms, of one output size, into one tiled pass (their rows shared memory).
+  bool FusesTwo(const vtkBloomLinearOperator& x, const vtkBloomLinearOperator& y,
+    const vtkBloomLinearOperator& x2, const vtkBloomLinearOperator& y2);
+  /**
+   * CASCADE: level i's blur runs inside its upsample-and-accumulate pass (the pass's addend,
+   * TILE2) rather than as a pass into Work: a blurred level below the last, with a weight, and
+   * both terms fused (FusesTwo).
+   */
+  bool BlurInUpsample(size_t i);
   /// The most input rows 16 consecutive output rows of `y` read (TILE_ROWS), found once.
   int TileRows(const vtkBloomLinearOperator& y);
   std::map<const vtkBloomLinearOperator*, int> TileRowCounts;
-  /// 112 rows of 16 RGBA float samples: 28 KiB of the 32 KiB of shared memory OpenGL 4.3 grants.
+  /// 112 rows of 16 RGBA float samples (both terms together): 28 KiB of the 32 KiB of shared
+  /// memory OpenGL 4.3 grants.
   static constexpr int MaximumTileRows = 112;
   /// Whether a blur's operator runs through the FFT (FFTBlurPass would take it).
   bool UsesFFT(const vtkBloomLinearOperator& op);
@@ -338,14 +356,21 @@ private:
     /// The region a pass computes: `box` when restricted, else null (the whole target).
     const Box* Of(const Box& box) const;
   };
+  /// Run()'s steps; Run() makes their last writes visible (FlushComputeWrites).
+  bool RunSteps(vtkTextureObject* emission, bool mask);
   /// Whether this Run() measures the bright region (Restrict, probed and explored over frames).
   bool ChooseRestrict();
   /// 1. The bright pass into level 0; false when nothing is bright (the bloom is skipped).
   bool BrightPass(vtkTextureObject* emission, ChainRegions& regions);
-  /// 2. The pyramid: each level from the unblurred level above it.
-  void DownsampleLevels(ChainRegions& regions);
-  /// 3. The blur of each contributing level.
-  void BlurLevels(ChainRegions& regions);
+  /**
+   * 2. and 3. The pyramid, each level from the unblurred level above it (DownsampleLevel), and
+   * the blur of each contributing level (BlurLevel), interleaved: level i - 1's blur after level
+   * i's downsample, which read the same level, so that the two run side by side on the GPU
+   * (see DeferBarriers).
+   */
+  void DownsampleAndBlurLevels(ChainRegions& regions);
+  void DownsampleLevel(ChainRegions& regions, size_t i);
+  void BlurLevel(ChainRegions& regions, size_t i);
   /// 4. The accumulation into Full (DIRECT) or the Accum targets (CASCADE).
   void AccumulateDirect(ChainRegions& regions);
   void AccumulateCascade(ChainRegions& regions);
@@ -583,10 +608,29 @@ private:
   /// The textures a pass reads, in a fixed order, and their samplers' names.
   struct PassTextures
   {
-    std::array<vtkTextureObject*, 8> Textures;
-    static constexpr const char* Samplers[8] = { "source", "xRows", "yRows", "addend", "scene",
-      "emitterDepth", "sceneDepth", "background" };
+    std::array<vtkTextureObject*, 11> Textures;
+    static constexpr const char* Samplers[11] = { "source", "xRows", "yRows", "addend", "scene",
+      "emitterDepth", "sceneDepth", "background", "source2", "x2Rows", "y2Rows" };
   };
+
+  /**
+   * With DeferBarriers, a compute pass into one of the chain's targets makes no barrier of its
+   * own: the next pass that reads a texture written since the last barrier, or writes one read
+   * or written since, issues it first (BeforeComputePass). Independent passes (a level's blur
+   * and the next level's downsample) then overlap on the GPU instead of each waiting for the
+   * one before. Anything else that touches the targets (a clear, a fragment pass, the FFT, the
+   * region's reduction, the composite) flushes first (FlushComputeWrites). Profiling keeps a
+   * barrier after every pass, so that each pass's timestamps hold its own work.
+   */
+  bool DeferBarriers = true;
+  bool Deferring = false; ///< within Run(), with DeferBarriers and not Profiling
+  using TextureNames = std::array<unsigned int, 11>; ///< PassTextures' names, 0 where absent
+  static TextureNames NamesOf(const PassTextures& textures);
+  void BeforeComputePass(const TextureNames& reads, unsigned int written);
+  void AfterComputePass(const TextureNames& reads, unsigned int written);
+  void FlushComputeWrites();
+  std::vector<unsigned int> PendingWrites; ///< texture names written since the last barrier
+  std::vector<unsigned int> PendingReads;  ///< and read since
 
   /**
    * One draw's program variant (its #defines) and compute program, found once: the key holds
@@ -601,7 +645,7 @@ private:
     ComputeProgram* Program = nullptr; ///< null: not made, or it did not build
     bool Asked = false;                ///< Compute() was asked for Program
   };
-  using VariantKey = std::array<std::uintptr_t, 9>;
+  using VariantKey = std::array<std::uintptr_t, 11>;
   std::map<VariantKey, VariantEntry> Variants;
   VariantEntry& VariantOf(const PassSpec& spec, const Draw& draw, unsigned int format);
   /**

@@ -39,6 +39,16 @@ bool TwoDimensional(const vtkBloomChain::Term& term, bool fast)
 //------------------------------------------------------------------------------
 bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
 {
+  this->Deferring = this->DeferBarriers && !this->Profiling;
+  const bool ran = this->RunSteps(emission, mask);
+  this->FlushComputeWrites();
+  this->Deferring = false;
+  return ran;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::RunSteps(vtkTextureObject* emission, bool mask)
+{
   vtkBloomParameters* parameters = this->Parameters;
   const vtkBloomChain& c = this->Resources.Chain;
   this->MaskSource = mask;
@@ -74,8 +84,7 @@ bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
   {
     return false;
   }
-  this->DownsampleLevels(regions);                    // 2. the pyramid
-  this->BlurLevels(regions);                          // 3. the blur of each contributing level
+  this->DownsampleAndBlurLevels(regions);             // 2. the pyramid, 3. the blur of each level
   if (c.AccumulateMode == vtkBloomParameters::DIRECT) // 4. accumulate
   {
     this->AccumulateDirect(regions);
@@ -237,138 +246,182 @@ bool vtkBloomPassChainRunner::BrightPassPSF(
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassChainRunner::DownsampleLevels(ChainRegions& regions)
+void vtkBloomPassChainRunner::DownsampleAndBlurLevels(ChainRegions& regions)
 {
-  // Each level from the unblurred level above it; each term is one two-dimensional pass, added
+  const size_t n = this->Resources.Chain.Levels.size();
+  regions.LastAccumulated = false;
+  for (size_t i = 1; i < n; ++i)
+  {
+    this->DownsampleLevel(regions, i);
+    this->BlurLevel(regions, i - 1); // reads level i - 1, as the downsample did: no barrier
+  }
+  this->BlurLevel(regions, n - 1);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::DownsampleLevel(ChainRegions& regions, size_t i)
+{
+  // Level i from the unblurred level above it; each term is one two-dimensional pass, added
   // to the previous terms.
   vtkBloomPassResources& res = this->Resources;
   const vtkBloomChain& c = res.Chain;
   const int zero[2] = { 0, 0 };
   std::vector<Box>& levelBox = regions.Level;
-  for (size_t i = 1; i < c.Levels.size(); ++i)
+  const vtkBloomChain::Level& level = c.Levels[i];
+  vtkBloomPassTarget& dst = level.Karis ? res.Work[i] : res.Levels[i];
+  const int* above = res.Levels[i - 1].Size;
+  for (const vtkBloomChain::Term& term : level.Down)
   {
-    const vtkBloomChain::Level& level = c.Levels[i];
-    vtkBloomPassTarget& dst = level.Karis ? res.Work[i] : res.Levels[i];
-    const int* above = res.Levels[i - 1].Size;
-    for (const vtkBloomChain::Term& term : level.Down)
+    levelBox[i] = levelBox[i].Union(Reach(&term.X, &term.Y, levelBox[i - 1], above[0], above[1]));
+  }
+  const std::vector<vtkBloomChain::Term>& terms = level.Down;
+  if (!level.Karis && terms.size() == 2 &&
+    this->FusesTwo(terms[1].X, terms[1].Y, terms[0].X, terms[0].Y))
+  {
+    // Both terms (the default's 2 x 2 box and 4 x 4 tent) in one tiled pass: the first as the
+    // second's TILE2 term, as its own pass would have written it before the second blended.
+    PassSpec first;
+    first.Source = res.Levels[i - 1].Color;
+    first.SourceSize = res.Levels[i - 1].Size;
+    first.X = &terms[0].X;
+    first.Y = &terms[0].Y;
+    first.Weight = terms[0].Weight;
+    PassSpec down = first;
+    down.X = &terms[1].X;
+    down.Y = &terms[1].Y;
+    down.Weight = terms[1].Weight;
+    down.Tiled = true;
+    down.Second = &first;
+    down.Name = "down";
+    down.Level = static_cast<int>(i);
+    down.Region = regions.Of(levelBox[i]);
+    this->Pass(&dst, zero, down);
+    return;
+  }
+  for (size_t t = 0; t < level.Down.size(); ++t)
+  {
+    const vtkBloomChain::Term& term = level.Down[t];
+    PassSpec down;
+    down.Source = res.Levels[i - 1].Color;
+    down.SourceSize = res.Levels[i - 1].Size;
+    down.X = &term.X;
+    down.Y = &term.Y;
+    down.Step = level.Karis ? STEP_KARIS_TERM : STEP_SCALE;
+    down.Weight = term.Weight;
+    down.Blend = t > 0;
+    down.Name = "down";
+    down.Level = static_cast<int>(i);
+    down.Region = regions.Of(levelBox[i]);
+    const int rows[2] = { level.Size[0], res.Levels[i - 1].Size[1] };
+    if (!TwoDimensional(term, this->Fast) && this->Fuses(term.X, term.Y))
     {
-      levelBox[i] = levelBox[i].Union(Reach(&term.X, &term.Y, levelBox[i - 1], above[0], above[1]));
+      down.Tiled = true; // both halves in one dispatch
+      down.Name = "down-xy";
     }
-    for (size_t t = 0; t < level.Down.size(); ++t)
+    else if (!TwoDimensional(term, this->Fast))
     {
-      const vtkBloomChain::Term& term = level.Down[t];
-      PassSpec down;
-      down.Source = res.Levels[i - 1].Color;
-      down.SourceSize = res.Levels[i - 1].Size;
-      down.X = &term.X;
-      down.Y = &term.Y;
-      down.Step = level.Karis ? STEP_KARIS_TERM : STEP_SCALE;
-      down.Weight = term.Weight;
-      down.Blend = t > 0;
-      down.Name = "down";
-      down.Level = static_cast<int>(i);
-      down.Region = regions.Of(levelBox[i]);
-      const int rows[2] = { level.Size[0], res.Levels[i - 1].Size[1] };
-      if (!TwoDimensional(term, this->Fast) && this->Fuses(term.X, term.Y))
-      {
-        down.Tiled = true; // both halves in one dispatch
-        down.Name = "down-xy";
-      }
-      else if (!TwoDimensional(term, this->Fast))
-      {
-        // The x half into Temp, then the y half and the step.
-        PassSpec x;
-        x.Source = down.Source;
-        x.SourceSize = down.SourceSize;
-        x.X = &term.X;
-        x.Name = "down-x";
-        x.Level = static_cast<int>(i);
-        const Box xBox = Reach(&term.X, nullptr, levelBox[i - 1], above[0], above[1]);
-        x.Region = regions.Of(xBox);
-        this->Pass(&res.Temp, zero, x);
-        down.Source = res.Temp.Color;
-        down.SourceSize = rows;
-        down.X = nullptr;
-        down.Name = "down-y";
-      }
-      this->Pass(&dst, zero, down);
+      // The x half into Temp, then the y half and the step.
+      PassSpec x;
+      x.Source = down.Source;
+      x.SourceSize = down.SourceSize;
+      x.X = &term.X;
+      x.Name = "down-x";
+      x.Level = static_cast<int>(i);
+      const Box xBox = Reach(&term.X, nullptr, levelBox[i - 1], above[0], above[1]);
+      x.Region = regions.Of(xBox);
+      this->Pass(&res.Temp, zero, x);
+      down.Source = res.Temp.Color;
+      down.SourceSize = rows;
+      down.X = nullptr;
+      down.Name = "down-y";
     }
-    if (level.Karis)
-    {
-      PassSpec normalize;
-      normalize.Source = res.Work[i].Color;
-      normalize.SourceSize = level.Size;
-      normalize.Step = STEP_KARIS_NORMALIZE;
-      normalize.Name = "karis-normalize";
-      normalize.Level = static_cast<int>(i);
-      normalize.Region = regions.Of(levelBox[i]);
-      this->Pass(&res.Levels[i], zero, normalize);
-    }
+    this->Pass(&dst, zero, down);
+  }
+  if (level.Karis)
+  {
+    PassSpec normalize;
+    normalize.Source = res.Work[i].Color;
+    normalize.SourceSize = level.Size;
+    normalize.Step = STEP_KARIS_NORMALIZE;
+    normalize.Name = "karis-normalize";
+    normalize.Level = static_cast<int>(i);
+    normalize.Region = regions.Of(levelBox[i]);
+    this->Pass(&res.Levels[i], zero, normalize);
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassChainRunner::BlurLevels(ChainRegions& regions)
+void vtkBloomPassChainRunner::BlurLevel(ChainRegions& regions, size_t i)
 {
   // x into Temp, y into Work (CASCADE: the last level goes straight into its accumulation,
   // scaled by its weight).
   vtkBloomPassResources& res = this->Resources;
   const vtkBloomChain& c = res.Chain;
-  const size_t n = c.Levels.size();
-  const size_t last = n - 1;
+  const size_t last = c.Levels.size() - 1;
   const bool cascade = c.AccumulateMode != vtkBloomParameters::DIRECT;
-  regions.LastAccumulated = false;
-  for (size_t i = 0; i < n; ++i)
+  const vtkBloomChain::Level& level = c.Levels[i];
+  regions.Blurred[i] = &res.Levels[i];
+  regions.Blur[i] = regions.Level[i];
+  if (!level.Blur)
   {
-    const vtkBloomChain::Level& level = c.Levels[i];
-    regions.Blurred[i] = &res.Levels[i];
-    regions.Blur[i] = regions.Level[i];
-    if (!level.Blur)
-    {
-      continue;
-    }
-    const Box xBox =
-      Reach(&level.BlurPass.X, nullptr, regions.Level[i], level.Size[0], level.Size[1]);
-    regions.Blur[i] = Reach(nullptr, &level.BlurPass.Y, xBox, level.Size[0], level.Size[1]);
-    vtkBloomPassTarget& blurred = cascade && i == last ? res.Accum[last] : res.Work[i];
-    regions.LastAccumulated = cascade && i == last;
-    regions.Blurred[i] = regions.LastAccumulated ? &res.Levels[i] : &res.Work[i];
-    const double weight = regions.LastAccumulated ? level.Weight : 1.0;
-    if (!this->UsesFFT(level.BlurPass.X) && !this->UsesFFT(level.BlurPass.Y) &&
-      this->Fuses(level.BlurPass.X, level.BlurPass.Y))
-    {
-      PassSpec xy;
-      xy.Source = res.Levels[i].Color;
-      xy.SourceSize = level.Size;
-      xy.X = &level.BlurPass.X;
-      xy.Y = &level.BlurPass.Y;
-      xy.Tiled = true;
-      xy.Weight = weight;
-      xy.Name = "blur-xy";
-      xy.Level = static_cast<int>(i);
-      xy.Region = regions.Of(regions.Blur[i]);
-      const int zero[2] = { 0, 0 };
-      this->Pass(&blurred, zero, xy);
-      continue;
-    }
-    PassSpec x;
-    x.Source = res.Levels[i].Color;
-    x.SourceSize = level.Size;
-    x.X = &level.BlurPass.X;
-    x.Name = "blur-x";
-    x.Level = static_cast<int>(i);
-    x.Region = regions.Of(xBox);
-    this->BlurPass(res.Temp, x, 0);
-    PassSpec y;
-    y.Source = res.Temp.Color;
-    y.SourceSize = level.Size;
-    y.Y = &level.BlurPass.Y;
-    y.Name = "blur-y";
-    y.Level = static_cast<int>(i);
-    y.Region = regions.Of(regions.Blur[i]);
-    y.Weight = weight;
-    this->BlurPass(blurred, y, 1);
+    return;
   }
+  const Box xBox =
+    Reach(&level.BlurPass.X, nullptr, regions.Level[i], level.Size[0], level.Size[1]);
+  regions.Blur[i] = Reach(nullptr, &level.BlurPass.Y, xBox, level.Size[0], level.Size[1]);
+  if (this->BlurInUpsample(i))
+  {
+    return; // AccumulateCascade blurs it, inside level i's upsample
+  }
+  vtkBloomPassTarget& blurred = cascade && i == last ? res.Accum[last] : res.Work[i];
+  regions.LastAccumulated = cascade && i == last;
+  regions.Blurred[i] = regions.LastAccumulated ? &res.Levels[i] : &res.Work[i];
+  const double weight = regions.LastAccumulated ? level.Weight : 1.0;
+  if (!this->UsesFFT(level.BlurPass.X) && !this->UsesFFT(level.BlurPass.Y) &&
+    this->Fuses(level.BlurPass.X, level.BlurPass.Y))
+  {
+    PassSpec xy;
+    xy.Source = res.Levels[i].Color;
+    xy.SourceSize = level.Size;
+    xy.X = &level.BlurPass.X;
+    xy.Y = &level.BlurPass.Y;
+    xy.Tiled = true;
+    xy.Weight = weight;
+    xy.Name = "blur-xy";
+    xy.Level = static_cast<int>(i);
+    xy.Region = regions.Of(regions.Blur[i]);
+    const int zero[2] = { 0, 0 };
+    this->Pass(&blurred, zero, xy);
+    return;
+  }
+  PassSpec x;
+  x.Source = res.Levels[i].Color;
+  x.SourceSize = level.Size;
+  x.X = &level.BlurPass.X;
+  x.Name = "blur-x";
+  x.Level = static_cast<int>(i);
+  x.Region = regions.Of(xBox);
+  this->BlurPass(res.Temp, x, 0);
+  PassSpec y;
+  y.Source = res.Temp.Color;
+  y.SourceSize = level.Size;
+  y.Y = &level.BlurPass.Y;
+  y.Name = "blur-y";
+  y.Level = static_cast<int>(i);
+  y.Region = regions.Of(regions.Blur[i]);
+  y.Weight = weight;
+  this->BlurPass(blurred, y, 1);
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::BlurInUpsample(size_t i)
+{
+  const vtkBloomChain& c = this->Resources.Chain;
+  const vtkBloomChain::Level& level = c.Levels[i];
+  return c.AccumulateMode != vtkBloomParameters::DIRECT && i + 1 < c.Levels.size() && level.Blur &&
+    level.Weight != 0.0 && !this->UsesFFT(level.BlurPass.X) && !this->UsesFFT(level.BlurPass.Y) &&
+    !this->UsesFFT(level.Up.X) &&
+    this->FusesTwo(level.Up.X, level.Up.Y, level.BlurPass.X, level.BlurPass.Y);
 }
 
 //------------------------------------------------------------------------------
@@ -407,6 +460,7 @@ bool vtkBloomPassChainRunner::FFTBlurPass(
   const double samples = static_cast<double>(width) * height;
   const std::string name = std::string(spec.Name) + "-fft";
   const std::string level = spec.Level >= 0 ? " L" + std::to_string(spec.Level) : "";
+  this->FlushComputeWrites(); // the FFT's own passes barrier after themselves
   if (this->Profiling)
   {
     this->BeginProfiledSpan();
@@ -535,11 +589,22 @@ void vtkBloomPassChainRunner::AccumulateCascade(ChainRegions& regions)
     y.Y = &level.Up.Y;
     y.Level = static_cast<int>(i);
     y.Region = regions.Of(accumBox[i]);
+    PassSpec blur; // the level's blur, as the pass BlurLevel left out would have written it
     if (level.Weight != 0.0)
     {
       y.Step = STEP_ADD;
       y.Weight = level.Weight;
       y.Addend = regions.Blurred[i]->Color;
+    }
+    if (this->BlurInUpsample(i))
+    {
+      blur.Source = res.Levels[i].Color;
+      blur.SourceSize = level.Size;
+      blur.X = &level.BlurPass.X;
+      blur.Y = &level.BlurPass.Y;
+      y.Second = &blur;
+      y.SecondIsAddend = true;
+      y.Addend = nullptr;
     }
     this->Pass(&res.Accum[i], zero, y);
   }

@@ -15,6 +15,7 @@
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
 
+#include <algorithm>
 #include <string>
 
 //------------------------------------------------------------------------------
@@ -363,6 +364,64 @@ void vtkBloomPassChainRunner::Dispatch(const ImageTarget& image, bool blend, con
   glBindImageTexture(0, image.Texture, image.Level, GL_FALSE, 0,
     blend ? GL_READ_WRITE : GL_WRITE_ONLY, image.Format);
   glDispatchCompute((rect.X1 - rect.X0 + 15) / 16, (rect.Y1 - rect.Y0 + 15) / 16, 1);
+}
+
+//------------------------------------------------------------------------------
+vtkBloomPassChainRunner::TextureNames vtkBloomPassChainRunner::NamesOf(const PassTextures& textures)
+{
+  TextureNames names = {};
+  for (size_t t = 0; t < names.size(); ++t)
+  {
+    names[t] = textures.Textures[t] ? textures.Textures[t]->GetHandle() : 0;
+  }
+  return names;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::BeforeComputePass(const TextureNames& reads, unsigned int written)
+{
+  auto pending = [](const std::vector<unsigned int>& names, unsigned int name)
+  { return std::find(names.begin(), names.end(), name) != names.end(); };
+  // Read after write, write after read, write after write: only these need the barrier.
+  bool hazard = pending(this->PendingWrites, written) || pending(this->PendingReads, written);
+  for (unsigned int name : reads)
+  {
+    hazard = hazard || (name && pending(this->PendingWrites, name));
+  }
+  if (hazard)
+  {
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+    this->PendingWrites.clear();
+    this->PendingReads.clear();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::AfterComputePass(const TextureNames& reads, unsigned int written)
+{
+  this->PendingWrites.push_back(written);
+  for (unsigned int name : reads)
+  {
+    if (name)
+    {
+      this->PendingReads.push_back(name);
+    }
+  }
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  this->Resources.Context->GetShaderCache()->ReleaseCurrentShader();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::FlushComputeWrites()
+{
+  if (!this->PendingWrites.empty())
+  {
+    // What follows may clear, draw into, read back or sample any target.
+    glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+      GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT | GL_PIXEL_BUFFER_BARRIER_BIT);
+  }
+  this->PendingWrites.clear();
+  this->PendingReads.clear();
 }
 
 //------------------------------------------------------------------------------

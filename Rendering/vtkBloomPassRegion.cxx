@@ -113,6 +113,7 @@ void vtkBloomPassChainRunner::PrepareTarget(
         held.Y1 >= dirty.Y1);
     if (!covered)
     {
+      this->FlushComputeWrites();
       vtkOpenGLState* state = this->Resources.Context->GetState();
       target.FBO->Bind();
       target.FBO->ActivateDrawBuffer(0);
@@ -332,6 +333,7 @@ void vtkBloomPassChainRunner::ReleaseCostTiming()
 //------------------------------------------------------------------------------
 vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::MeasureBrightRegion()
 {
+  this->FlushComputeWrites(); // the bright pass's writes, read by the reduction
   vtkBloomPassResources& res = this->Resources;
   vtkOpenGLState* state = res.Context->GetState();
   if (this->Profiling)

@@ -45,6 +45,12 @@
   in the same order as the separable pair (vtkBloomPass::FuseSeparablePasses), kept in 32-bit
   floats as the exact mode's targets keep them: the same bits.
 
+  TILE2: a second separable term of the same output, from its own source and operators (both
+  by table, X2_WIDTH and Y2_WIDTH taps), its x sums shared the same way (TILE2_ROWS rows): with TILE2_ADDEND it is the ADD
+  step's addend (the upsample's blurred level, which a pass of its own would have written),
+  else weight2 times it is added to the result (the downsample's other term, which a pass of its
+  own would have written before this one blended over it).
+
   COMPUTE: the same pass as a compute shader (OpenGL 4.3; vtkBloomPass::UseComputeShaders),
   one invocation per output sample of the draw's region, written with imageStore into the
   target bound as image unit 0 (IMAGE_FORMAT) at targetOffset (the composite's origin in the
@@ -87,6 +93,19 @@ uniform float weight;       // SCALE, KARIS_TERM and ADD weight
 #if TILE && defined(COMPUTE)
 shared vec4 tileRows[TILE_ROWS * 16]; // the x sums of the group's rows, 16 columns a row
 #endif
+#ifndef TILE2
+#define TILE2 0
+#endif
+#ifndef TILE2_ADDEND
+#define TILE2_ADDEND 0
+#endif
+#if TILE2 && defined(COMPUTE)
+uniform sampler2D source2;
+uniform sampler2D x2Rows;
+uniform sampler2D y2Rows;
+uniform float weight2;
+shared vec4 tileRows2[TILE2_ROWS * 16];
+#endif
 #if X_LINEAR || Y_LINEAR
 uniform vec2 sourceTexel; // 1 / the source texture's size
 #endif
@@ -94,7 +113,11 @@ uniform vec2 sourceTexel; // 1 / the source texture's size
 #if X_MODE == OP_TABLE
 uniform sampler2D xRows;
 uniform int xWidth;
+#ifdef X_TABLE_WIDTH
+#define X_COUNT X_TABLE_WIDTH // a constant: the taps' loop unrolls, their fetches overlap
+#else
 #define X_COUNT xWidth
+#endif
 #define X_ANY 0xffffffffu
 #define X_ALL 0u
 #elif X_MODE == OP_PERIODIC
@@ -113,7 +136,11 @@ uniform float xOffsets[X_PERIOD * X_ROW];
 #if Y_MODE == OP_TABLE
 uniform sampler2D yRows;
 uniform int yWidth;
+#ifdef Y_TABLE_WIDTH
+#define Y_COUNT Y_TABLE_WIDTH
+#else
 #define Y_COUNT yWidth
+#endif
 #define Y_ANY 0xffffffffu
 #define Y_ALL 0u
 #elif Y_MODE == OP_PERIODIC
@@ -427,11 +454,62 @@ int sumTileRows(ivec2 p, bool column)
 }
 #endif
 
+#if TILE2 && defined(COMPUTE)
+// The second term's x sums into tileRows2, as sumTileRows does (whose barrier covers them: call
+// this first); returns its first row. Its taps are its tables' (a zero weight skipped, as
+// tapIsOn skips it for OP_TABLE), its source read as it is.
+int sumTileRows2(ivec2 p, bool column)
+{
+  int y0 = regionOffset.y + int(gl_WorkGroupID.y) * 16;
+  int yLast = min(y0 + 15, regionOffset.y + int(regionSize.y) - 1);
+  int r0 = int(texelFetch(y2Rows, ivec2(0, y0), 0).r);
+  int r1 = int(texelFetch(y2Rows, ivec2(0, yLast), 0).r) + Y2_WIDTH;
+  r1 = min(min(r1, r0 + TILE2_ROWS), textureSize(source2, 0).y);
+  if (column)
+  {
+    int first = int(texelFetch(x2Rows, ivec2(0, p.x), 0).r);
+    for (int r = r0 + int(gl_LocalInvocationID.y); r < r1; r += 16)
+    {
+      vec4 row = vec4(0.0);
+      for (int kx = 0; kx < X2_WIDTH; ++kx)
+      {
+        float wx = texelFetch(x2Rows, ivec2(kx + 1, p.x), 0).r;
+        if (wx != 0.0)
+        {
+          row += wx * texelFetch(source2, ivec2(first + kx, r), 0);
+        }
+      }
+      tileRows2[(r - r0) * 16 + int(gl_LocalInvocationID.x)] = row;
+    }
+  }
+  return r0;
+}
+
+// The second term at p, from the shared x sums (tileFirst2: the first row they hold).
+vec4 sumTerm2(ivec2 p, int tileFirst2)
+{
+  int first = int(texelFetch(y2Rows, ivec2(0, p.y), 0).r);
+  vec4 sum = vec4(0.0);
+  for (int ky = 0; ky < Y2_WIDTH; ++ky)
+  {
+    float wy = texelFetch(y2Rows, ivec2(ky + 1, p.y), 0).r;
+    if (wy != 0.0)
+    {
+      sum += wy * tileRows2[(first + ky - tileFirst2) * 16 + int(gl_LocalInvocationID.x)];
+    }
+  }
+  return sum;
+}
+#endif
+
 void main()
 {
   // The output sample this fragment computes; texCoord spans the draw's region.
 #ifdef COMPUTE
   ivec2 p = regionOffset + ivec2(gl_GlobalInvocationID.xy);
+#if TILE2
+  int tileFirst2 = sumTileRows2(p, float(gl_GlobalInvocationID.x) < regionSize.x);
+#endif
 #if TILE
   int tileFirst = sumTileRows(p, float(gl_GlobalInvocationID.x) < regionSize.x);
 #endif
@@ -495,6 +573,8 @@ void main()
   result = vec4(k * sum.rgb, k);
 #elif STEP == STEP_KARIS_NORMALIZE
   result = vec4(sum.rgb / sum.a, 0.0);
+#elif STEP == STEP_ADD && TILE2 && TILE2_ADDEND && defined(COMPUTE)
+  result = sum + weight * sumTerm2(p, tileFirst2);
 #elif STEP == STEP_ADD
   result = sum + weight * texelFetch(addend, p, 0);
 #else // STEP_COMPOSITE
@@ -544,6 +624,9 @@ void main()
   }
 #endif
 #ifdef COMPUTE
+#if TILE2 && !TILE2_ADDEND
+  result += weight2 * sumTerm2(p, tileFirst2);
+#endif
 #if BLEND
   result += imageLoad(target, targetOffset + p);
 #endif

@@ -213,14 +213,17 @@ TEST(RenderingBloomPassFFTBlur, AutomaticChoosesByTheCostModel)
   // A few taps per sample: the direct passes.
   const Result market =
     Agreement("webgpu-market", vtkBloomParameters::CONVOLUTION_AUTOMATIC, 301, 207);
-  EXPECT_TRUE(Has(market.Profile, "blur-x L1"));
+  // (its x and y halves as one tiled pass, or inside the level's upsample, where vtkBloomPass
+  // fuses them, as on a GPU)
+  EXPECT_TRUE(Has(market.Profile, "blur-x L1") || Has(market.Profile, "blur-xy L1") ||
+    Has(market.Profile, "up-xy L1"));
   for (const std::string& name : market.Profile)
   {
     EXPECT_EQ(name.find("-fft"), std::string::npos) << name;
   }
   // DIRECT never takes the FFT.
   const Result direct = Agreement("ping-pong", vtkBloomParameters::CONVOLUTION_DIRECT, 480, 400);
-  EXPECT_TRUE(Has(direct.Profile, "blur-x L0"));
+  EXPECT_TRUE(Has(direct.Profile, "blur-x L0") || Has(direct.Profile, "blur-xy L0"));
   EXPECT_FALSE(Has(direct.Profile, "blur-x-fft L0"));
 }
 

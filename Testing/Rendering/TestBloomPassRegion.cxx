@@ -2,6 +2,7 @@
 // bright pass covers only the box its output can be non-zero in) against the full chain, bit
 // for bit, and of its fast mode (QUALITY_FAST) against the exact pass.
 #include "vtkBloomExampleScenes.h"
+#include "vtkBloomParameters.h"
 #include "vtkBloomPass.h"
 #include "vtkBloomTestSupport.h"
 
@@ -284,8 +285,8 @@ TEST(RenderingBloomPassRegion, FusedSeparablePassesGiveTheSameBits)
     {
       for (const bool restrict : { false, true })
       {
-        const std::string what = preset + ", float" + std::to_string(precision) +
-          (restrict ? ", restricted" : ", full");
+        const std::string what =
+          preset + ", float" + std::to_string(precision) + (restrict ? ", restricted" : ", full");
         Gpu gpu;
         UsePreset(gpu.Pass, preset);
         gpu.Pass->SetFloatPrecision(precision);
