@@ -278,9 +278,11 @@ public:
    * target, then its y half: the blur of a level, the downsample's tent, the upsample), and
    * the pair is one draw (SingleDrawSamples) of compute shaders in the exact mode, run it as
    * one dispatch: each 16 x 16 work group sums the source rows its outputs read once into
-   * shared memory, then sums them through the y operator. The same sums in the same order, so
-   * the same bits (tested); one dispatch and one round trip through memory fewer per pair: the
-   * default chain's 32 passes become 19 (docs/gpu.md). Default on.
+   * shared memory, then sums them through the y operator. A level's two downsample terms
+   * share one such pass, and so do a level's blur and its upsample-and-accumulate (CASCADE).
+   * The same sums in the same order, so the same bits (tested); the default chain's 32
+   * dependent dispatches become 11: on an NVIDIA H100 it then adds 0.10 ms (1080p) and
+   * 0.17 ms (4K) over a compute copy, against 0.28 and 0.36 (docs/gpu.md). Default on.
    */
   vtkSetMacro(FuseSeparablePasses, bool);
   vtkGetMacro(FuseSeparablePasses, bool);
