@@ -243,6 +243,7 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   this->Runner.SimulateComputeFailure = self->SimulateComputeShaderFailure;
   this->Runner.SingleDrawSamples = self->SingleDrawSamples;
   this->Runner.FuseSeparablePasses = self->FuseSeparablePasses;
+  this->Runner.SourceSamples = nullptr; // Render() names the multisampled scene
   this->Runner.ComputePasses = 0;
   this->Runner.Parameters = self->Parameters;
   this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
@@ -693,6 +694,10 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // In one render the emission is the scene's colour where its alpha says so.
   in.Runner.EmissionInAlpha = inScene;
   const bool twoRenders = selective && !inScene;
+  // A multisampled scene's bright pass thresholds its samples before their mean.
+  in.Runner.SourceSamples =
+    this->ThresholdSamples && res.Samples > 1 && !selective ? res.Multisample.Color.Get() : nullptr;
+  in.Runner.SourceSampleCount = res.Samples;
   const bool bloom =
     in.RunBloom(this, twoRenders ? res.Emitter.Color : res.Scene.Color, twoRenders);
   this->LastBloomSkipped = !bloom;
@@ -1010,6 +1015,7 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "SingleDrawSamples: " << this->SingleDrawSamples << "\n";
   os << indent << "FuseSeparablePasses: " << (this->FuseSeparablePasses ? "On" : "Off") << "\n";
+  os << indent << "ThresholdSamples: " << (this->ThresholdSamples ? "On" : "Off") << "\n";
   os << indent << "LastComputePasses: " << this->LastComputePasses << "\n";
   os << indent << "CaptureResult: " << (this->CaptureResult ? "On" : "Off") << "\n";
   os << indent << "LastPSFGrid: " << this->LastPSFGrid[0] << " " << this->LastPSFGrid[1] << "\n";

@@ -291,6 +291,23 @@ public:
 
   ///@{
   /**
+   * Where the scene is multisampled (the framebuffer the pass renders into has samples), the
+   * bright pass thresholds each sample and takes their mean, before the chain's resample,
+   * instead of thresholding the resolved pixel. A thin line or point covering part of a pixel
+   * then brings light in proportion to its coverage, as it brings colour to the scene, so its
+   * glow stays steady as it moves by a fraction of a pixel; thresholded after the resolve, its
+   * pixels glow only while their coverage keeps them above the threshold, and the glow
+   * flickers (TestBloomPassMotion, docs/rendering.md). Where every sample of a pixel is alike
+   * (inside a surface, and every single-sample scene) the two are the same. Whole-scene bloom
+   * only: selective bloom's emission is weighted and masked per pixel. Default on.
+   */
+  vtkSetMacro(ThresholdSamples, bool);
+  vtkGetMacro(ThresholdSamples, bool);
+  vtkBooleanMacro(ThresholdSamples, bool);
+  ///@}
+
+  ///@{
+  /**
    * For tests: make every compute program fail to build, as a driver's compiler might. A
    * compute variant that does not build is not fatal: the pass warns once and runs that
    * variant's passes as fragment passes, with the same result. Default off.
@@ -594,6 +611,7 @@ protected:
   bool SimulateComputeShaderFailure = false;
   int SingleDrawSamples = -1;
   bool FuseSeparablePasses = true;
+  bool ThresholdSamples = true;
   int LastComputePasses;
   bool CaptureResult;
   int LastBrightRegion[4];

@@ -169,6 +169,10 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
   {
     os << "#define TILE 1\n#define TILE_ROWS " << this->TileRows(*spec.Y) << "\n";
   }
+  if (spec.Samples)
+  {
+    os << "#define SAMPLE_THRESHOLD " << spec.SampleCount << "\n";
+  }
   if (spec.Tiled && spec.Second)
   {
     os << "#define TILE2 1\n#define TILE2_ROWS " << this->TileRows(*spec.Second->Y)
@@ -332,7 +336,8 @@ vtkBloomPassChainRunner::VariantEntry& vtkBloomPassChainRunner::VariantOf(
     static_cast<std::uintptr_t>(composite ? this->Resources.BackgroundMode : 0),
     static_cast<std::uintptr_t>(format), bits,
     reinterpret_cast<std::uintptr_t>(spec.Second ? spec.Second->X : nullptr),
-    reinterpret_cast<std::uintptr_t>(spec.Second ? spec.Second->Y : nullptr) };
+    reinterpret_cast<std::uintptr_t>(spec.Second ? spec.Second->Y : nullptr),
+    static_cast<std::uintptr_t>(spec.Samples ? spec.SampleCount : 0) };
   VariantEntry& entry = this->Variants[key];
   if (entry.Variant.empty())
   {
@@ -478,7 +483,7 @@ vtkBloomPassChainRunner::PassTextures vtkBloomPassChainRunner::PassTexturesOf(co
       : nullptr,
     spec.Second ? spec.Second->Source : nullptr,
     spec.Second ? this->OperatorTexture(*spec.Second->X) : nullptr,
-    spec.Second ? this->OperatorTexture(*spec.Second->Y) : nullptr };
+    spec.Second ? this->OperatorTexture(*spec.Second->Y) : nullptr, spec.Samples };
   return t;
 }
 

@@ -81,6 +81,13 @@ public:
    */
   bool ThresholdEmission = true;
   /**
+   * The multisampled scene (its colour before the resolve) and its samples: the bright pass
+   * thresholds each sample and takes their mean (SAMPLE_THRESHOLD in vtkBloomPassFS.glsl;
+   * vtkBloomPass::ThresholdSamples). Null: the resolved emission, as it is. Set before Run().
+   */
+  vtkTextureObject* SourceSamples = nullptr;
+  int SourceSampleCount = 0;
+  /**
    * The pass into the framebuffer (the composite, or the copy of the captured result) goes
    * over what the framebuffer holds, premultiplied (GL_ONE, GL_ONE_MINUS_SRC_ALPHA), instead of
    * replacing it: a renderer on a higher layer, which clears nothing, blooms over the layers
@@ -310,6 +317,9 @@ private:
      */
     const PassSpec* Second = nullptr;
     bool SecondIsAddend = false;
+    /// The bright pass: the multisampled source, thresholded sample by sample (SourceSamples).
+    vtkTextureObject* Samples = nullptr;
+    int SampleCount = 0;
   };
 
   /// The most samples a pass may have to be one draw (SingleDrawSamples, or its automatic value).
@@ -608,9 +618,10 @@ private:
   /// The textures a pass reads, in a fixed order, and their samplers' names.
   struct PassTextures
   {
-    std::array<vtkTextureObject*, 11> Textures;
-    static constexpr const char* Samplers[11] = { "source", "xRows", "yRows", "addend", "scene",
-      "emitterDepth", "sceneDepth", "background", "source2", "x2Rows", "y2Rows" };
+    std::array<vtkTextureObject*, 12> Textures;
+    static constexpr const char* Samplers[12] = { "source", "xRows", "yRows", "addend", "scene",
+      "emitterDepth", "sceneDepth", "background", "source2", "x2Rows", "y2Rows",
+      "sourceSamples" };
   };
 
   /**
@@ -624,7 +635,7 @@ private:
    */
   bool DeferBarriers = true;
   bool Deferring = false; ///< within Run(), with DeferBarriers and not Profiling
-  using TextureNames = std::array<unsigned int, 11>; ///< PassTextures' names, 0 where absent
+  using TextureNames = std::array<unsigned int, 12>; ///< PassTextures' names, 0 where absent
   static TextureNames NamesOf(const PassTextures& textures);
   void BeforeComputePass(const TextureNames& reads, unsigned int written);
   void AfterComputePass(const TextureNames& reads, unsigned int written);
@@ -645,7 +656,7 @@ private:
     ComputeProgram* Program = nullptr; ///< null: not made, or it did not build
     bool Asked = false;                ///< Compute() was asked for Program
   };
-  using VariantKey = std::array<std::uintptr_t, 11>;
+  using VariantKey = std::array<std::uintptr_t, 12>;
   std::map<VariantKey, VariantEntry> Variants;
   VariantEntry& VariantOf(const PassSpec& spec, const Draw& draw, unsigned int format);
   /**

@@ -9,6 +9,7 @@
 #include "vtkBloomPassFFTBlur.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomVTKCompat.h"
+#include "vtkImageBloomThreshold.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLState.h"
@@ -156,6 +157,15 @@ bool vtkBloomPassChainRunner::BrightPass(vtkTextureObject* emission, ChainRegion
   bright.Y = c.SourceIsIdentity ? nullptr : &c.Source.Y;
   bright.Step = STEP_THRESHOLD;
   bright.ReadsSource = true;
+  // A multisampled scene, thresholded sample by sample: whole-scene bloom only (selective
+  // bloom's emission is masked or weighted per pixel).
+  if (this->SourceSamples && this->ThresholdEmission && !this->MaskSource &&
+    !this->EmissionInAlpha &&
+    this->Parameters->GetThresholdMode() != vtkImageBloomThreshold::NONE)
+  {
+    bright.Samples = this->SourceSamples;
+    bright.SampleCount = this->SourceSampleCount;
+  }
   // Restricted, the bright region's reduction also tells whether the bloom is empty. As
   // fragments, the zero samples are not written (the level is cleared first): fewer writes. A
   // compute bright pass that no query counts writes its zeros instead: a clear goes through

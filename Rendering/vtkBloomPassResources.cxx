@@ -158,9 +158,11 @@ void vtkBloomPassMultisampleTarget::Allocate(vtkOpenGLRenderWindow* context, int
     return;
   }
   this->Release(context);
-  this->Color = vtkSmartPointer<vtkRenderbuffer>::New();
+  this->Color = vtkSmartPointer<vtkTextureObject>::New();
   this->Color->SetContext(context);
-  this->Color->Create(format, width, height, samples);
+  this->Color->SetSamples(static_cast<unsigned int>(samples));
+  this->Color->SetInternalFormat(format);
+  this->Color->Allocate2D(width, height, 4, VTK_FLOAT);
   // The depth's format is the scene target's, as a depth resolve requires.
   this->Depth = vtkSmartPointer<vtkRenderbuffer>::New();
   this->Depth->SetContext(context);
@@ -187,15 +189,17 @@ void vtkBloomPassMultisampleTarget::Release(vtkWindow* window)
   {
     this->FBO->ReleaseGraphicsResources(window);
   }
-  for (vtkRenderbuffer* buffer : { this->Color.Get(), this->Depth.Get() })
+  if (this->Color)
   {
-    if (buffer)
-    {
-      buffer->ReleaseGraphicsResources(window);
-    }
+    this->Color->ReleaseGraphicsResources(window);
+  }
+  if (this->Depth)
+  {
+    this->Depth->ReleaseGraphicsResources(window);
   }
   this->FBO = nullptr;
-  this->Color = this->Depth = nullptr;
+  this->Color = nullptr;
+  this->Depth = nullptr;
   this->Size[0] = this->Size[1] = this->Samples = 0;
 }
 

@@ -88,11 +88,13 @@ struct vtkBloomPassSceneTarget : vtkBloomPassTarget
 
 //------------------------------------------------------------------------------
 // A multisampled float colour and depth, where the delegate renders when the framebuffer the
-// pass was called with is multisampled; resolved once into a single-sample scene target.
+// pass was called with is multisampled; resolved once into a single-sample scene target. The
+// colour is a multisample texture, which the bright pass may read sample by sample
+// (vtkBloomPass::ThresholdSamples).
 struct vtkBloomPassMultisampleTarget
 {
   vtkSmartPointer<vtkOpenGLFramebufferObject> FBO;
-  vtkSmartPointer<vtkRenderbuffer> Color;
+  vtkSmartPointer<vtkTextureObject> Color;
   vtkSmartPointer<vtkRenderbuffer> Depth;
   int Size[2] = { 0, 0 };
   int Samples = 0;

@@ -51,6 +51,12 @@
   else weight2 times it is added to the result (the downsample's other term, which a pass of its
   own would have written before this one blended over it).
 
+  SAMPLE_THRESHOLD (the bright pass of a multisampled scene, vtkBloomPass::ThresholdSamples):
+  each of the SAMPLE_THRESHOLD samples of a source pixel goes through the bright pass, and the
+  pixel is their mean, before the resample; the step then thresholds nothing more. A thin line
+  or a point that covers part of a pixel then brings light in proportion to its coverage, as
+  the scene does, rather than nothing until its resolved colour crosses the threshold.
+
   COMPUTE: the same pass as a compute shader (OpenGL 4.3; vtkBloomPass::UseComputeShaders),
   one invocation per output sample of the draw's region, written with imageStore into the
   target bound as image unit 0 (IMAGE_FORMAT) at targetOffset (the composite's origin in the
@@ -89,6 +95,13 @@ uniform float weight;       // SCALE, KARIS_TERM and ADD weight
 #endif
 #ifndef TILE
 #define TILE 0
+#endif
+#ifndef SAMPLE_THRESHOLD
+#define SAMPLE_THRESHOLD 0
+#endif
+#if SAMPLE_THRESHOLD
+uniform sampler2DMS sourceSamples; // the scene before its resolve
+vec3 brightPass(vec3 c);
 #endif
 #if TILE && defined(COMPUTE)
 shared vec4 tileRows[TILE_ROWS * 16]; // the x sums of the group's rows, 16 columns a row
@@ -288,6 +301,21 @@ float positionY(int k)
 // and +-Inf the largest finite float, before any resampling.
 vec4 fetchSource(ivec2 q)
 {
+#if SAMPLE_THRESHOLD
+  vec3 bright = vec3(0.0);
+  for (int s = 0; s < SAMPLE_THRESHOLD; ++s)
+  {
+    vec4 one = texelFetch(sourceSamples, q, s);
+#if SANITIZE_SOURCE
+    for (int i = 0; i < 3; ++i)
+    {
+      one[i] = isnan(one[i]) ? 0.0 : clamp(one[i], -FLOAT_MAX, FLOAT_MAX);
+    }
+#endif
+    bright += brightPass(one.rgb);
+  }
+  return vec4(bright / float(SAMPLE_THRESHOLD), 0.0);
+#endif
   vec4 value = texelFetch(source, q, 0);
 #if SANITIZE_SOURCE
   for (int i = 0; i < 4; ++i)
@@ -565,6 +593,8 @@ void main()
   vec4 result;
 #if STEP == STEP_SCALE
   result = weight * sum;
+#elif STEP == STEP_THRESHOLD && SAMPLE_THRESHOLD
+  result = vec4(sum.rgb, 0.0); // thresholded sample by sample (fetchSource)
 #elif STEP == STEP_THRESHOLD
   result = vec4(brightPass(sum.rgb), 0.0);
 #elif STEP == STEP_KARIS_TERM
