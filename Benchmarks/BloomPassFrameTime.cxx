@@ -14,6 +14,9 @@
 //   BloomPassFrameTime --single-draw N ...  as above, vtkBloomPass::SingleDrawSamples N
 //   BloomPassFrameTime --pairs ...  as above, vtkBloomPass::FuseSeparablePassesOff (the
 //                                  separable pairs as two passes, as before issue 37's fusion)
+//   BloomPassFrameTime --samples N ...  as above in a window of N samples (multisampling)
+//   BloomPassFrameTime --resolved ...  as above, vtkBloomPass::ThresholdSamplesOff (a
+//                                  multisampled scene thresholded after its resolve)
 //   BloomPassFrameTime --direct ... / --fft ...  as above, the level blurs by their taps or
 //                                  through the FFT (vtkBloomParameters::ConvolutionMode; the
 //                                  default is AUTOMATIC; with the options above)
@@ -95,12 +98,15 @@ bool Fragment = false; // --fragment
 int Convolution = -1;  // --direct, --fft: vtkBloomParameters::ConvolutionMode
 int SingleDraw = -1;   // --single-draw N: vtkBloomPass::SingleDrawSamples
 bool Pairs = false;    // --pairs: vtkBloomPass::FuseSeparablePassesOff
+int Samples = 0;       // --samples N: a multisampled window
+bool Resolved = false; // --resolved: vtkBloomPass::ThresholdSamplesOff
 
 // The timer on `scene` with `preset`, in the quality and shader stage the options ask for; false,
 // with a message, for an unknown scene or preset.
 bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::string& preset,
   int width, int height)
 {
+  timer.Samples = Samples;
   if (!timer.Setup(scene, width, height) || !timer.UsePreset(preset))
   {
     std::fprintf(stderr, "unknown scene %s or preset %s\n", scene.c_str(), preset.c_str());
@@ -113,6 +119,7 @@ bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::strin
     timer.Bloom->SetSingleDrawSamples(SingleDraw);
   }
   timer.Bloom->SetFuseSeparablePasses(!Pairs);
+  timer.Bloom->SetThresholdSamples(!Resolved);
   if (Convolution >= 0)
   {
     timer.Bloom->GetParameters()->SetConvolutionMode(Convolution);
@@ -836,14 +843,19 @@ int main(int argc, char* argv[])
   while (argc > 1 &&
     (std::strcmp(argv[1], "--fast") == 0 || std::strcmp(argv[1], "--fragment") == 0 ||
       std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0 ||
-      std::strcmp(argv[1], "--pairs") == 0 ||
-      (argc > 2 && std::strcmp(argv[1], "--single-draw") == 0)))
+      std::strcmp(argv[1], "--pairs") == 0 || std::strcmp(argv[1], "--resolved") == 0 ||
+      (argc > 2 && std::strcmp(argv[1], "--single-draw") == 0) ||
+      (argc > 2 && std::strcmp(argv[1], "--samples") == 0)))
   {
-    if (std::strcmp(argv[1], "--single-draw") == 0)
+    if (std::strcmp(argv[1], "--single-draw") == 0 || std::strcmp(argv[1], "--samples") == 0)
     {
-      SingleDraw = std::atoi(argv[2]);
+      (std::strcmp(argv[1], "--samples") == 0 ? Samples : SingleDraw) = std::atoi(argv[2]);
       --argc;
       ++argv;
+    }
+    else if (std::strcmp(argv[1], "--resolved") == 0)
+    {
+      Resolved = true;
     }
     else if (std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0)
     {

@@ -114,11 +114,14 @@ public:
     COMPUTE_COPY, ///< a float target copied by a compute pass (vtkBloomPass, strength 0)
   };
 
+  /// The window's samples (multisampling; 0: none), set before Setup.
+  int Samples = 0;
+
   /// The offscreen window of width x height, its renderer, and the three passes' delegates.
   void AttachWindow(int width, int height)
   {
     this->Window->SetOffScreenRendering(1);
-    this->Window->SetMultiSamples(0);
+    this->Window->SetMultiSamples(this->Samples);
     this->Window->SetSize(width, height);
     this->Window->AddRenderer(this->Renderer);
     this->Bloom->SetDelegatePass(this->Steps);

@@ -19,6 +19,8 @@
 #                    fast mode
 #   fusion.md        the default preset's frame time and four renderers with
 #                    vtkBloomPass::FuseSeparablePasses off (BloomPassFrameTime --pairs)
+#   samples.md       the default preset in a window of 4 samples, each sample thresholded
+#                    (vtkBloomPass::ThresholdSamples), then after the resolve (--resolved)
 #   renderers.md     four bloomed renderers in one window (2 x 2 viewports) against the same
 #                    four plain, at 1920x1080 and 3840x2160: the CPU's time in Render() and the
 #                    GPU's (BloomPassFrameTime --renderers)
@@ -44,8 +46,8 @@
 #   render.png       `vtk-bloom render` of lit-spheres at 3840x2160
 #   run.log          everything printed
 #
-# STEPS (default "tests frametime renderers fusion profile quality sparse sync orbit selective psf
-# stages render")
+# STEPS (default "tests frametime renderers fusion samples profile quality sparse sync orbit
+# selective psf stages render")
 # picks the steps. At most 8 files come back from the device tool: pick fewer steps there.
 # The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
 # CUDA image) and the pack at the absolute paths it was built with.
@@ -54,7 +56,7 @@ cd "${VTKBLOOM_GPU_ROOT:-$PWD}" || exit 1
 OUT=${OUT:-$(mktemp -d)}
 mkdir -p "$OUT"
 FRAMES=${FRAMES:-50}
-STEPS=${STEPS:-tests frametime renderers fusion profile quality sparse sync orbit selective psf stages render}
+STEPS=${STEPS:-tests frametime renderers fusion samples profile quality sparse sync orbit selective psf stages render}
 PRESETS=${PRESETS:-all}
 step() { [[ " $STEPS " == *" $1 "* ]]; }
 exec > >(tee "$OUT/run.log") 2>&1
@@ -146,6 +148,18 @@ echo "== the chain's separable pairs as two passes each (FuseSeparablePasses off
     echo
   done
 } | tee "$OUT/fusion.md"
+fi
+
+if step samples; then
+echo "== a multisampled window (4 samples): the samples thresholded apart, then after the resolve"
+{
+  for size in "1920 1080" "3840 2160"; do
+    timeout 300 "$bin/BloomPassFrameTime" --samples 4 all $size "$FRAMES" default
+    echo
+    timeout 300 "$bin/BloomPassFrameTime" --samples 4 --resolved all $size "$FRAMES" default
+    echo
+  done
+} | tee "$OUT/samples.md"
 fi
 
 if step profile; then
