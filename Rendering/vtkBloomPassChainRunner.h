@@ -620,8 +620,7 @@ private:
   {
     std::array<vtkTextureObject*, 12> Textures;
     static constexpr const char* Samplers[12] = { "source", "xRows", "yRows", "addend", "scene",
-      "emitterDepth", "sceneDepth", "background", "source2", "x2Rows", "y2Rows",
-      "sourceSamples" };
+      "emitterDepth", "sceneDepth", "background", "source2", "x2Rows", "y2Rows", "sourceSamples" };
   };
 
   /**

@@ -160,8 +160,7 @@ bool vtkBloomPassChainRunner::BrightPass(vtkTextureObject* emission, ChainRegion
   // A multisampled scene, thresholded sample by sample: whole-scene bloom only (selective
   // bloom's emission is masked or weighted per pixel).
   if (this->SourceSamples && this->ThresholdEmission && !this->MaskSource &&
-    !this->EmissionInAlpha &&
-    this->Parameters->GetThresholdMode() != vtkImageBloomThreshold::NONE)
+    !this->EmissionInAlpha && this->Parameters->GetThresholdMode() != vtkImageBloomThreshold::NONE)
   {
     bright.Samples = this->SourceSamples;
     bright.SampleCount = this->SourceSampleCount;
