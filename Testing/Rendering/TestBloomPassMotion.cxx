@@ -120,23 +120,36 @@ double CoefficientOfVariation(const std::vector<double>& values)
   return mean != 0.0 ? std::sqrt(variance) / std::abs(mean) : 0.0;
 }
 
+/// An offscreen 320x180 window of `samples` samples, its one renderer drawn through a bloom pass.
+struct BloomView
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkBloomPass> Bloom;
+  vtkNew<vtkRenderStepsPass> Steps;
+
+  explicit BloomView(int samples)
+  {
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(samples);
+    this->Window->SetSize(320, 180);
+    this->Window->AddRenderer(this->Renderer);
+    this->Bloom->SetDelegatePass(this->Steps);
+    this->Renderer->SetPass(this->Bloom);
+  }
+};
+
 /**
  * Sweep `frames` camera steps of `degrees` (azimuth) over a scene, `configure` applied to the
- * pass after the scene's own set-up; a window of width x height with `samples` samples.
+ * pass after the scene's own set-up, in a BloomView of 4 samples.
  */
 Energies Sweep(const std::function<void(vtkRenderer*, vtkBloomPass*)>& scene,
   const std::function<void(vtkBloomPass*)>& configure, int frames, double degrees)
 {
-  vtkNew<vtkRenderWindow> window;
-  window->SetOffScreenRendering(1);
-  window->SetMultiSamples(4);
-  window->SetSize(320, 180);
-  vtkNew<vtkRenderer> renderer;
-  window->AddRenderer(renderer);
-  vtkNew<vtkBloomPass> bloom;
-  vtkNew<vtkRenderStepsPass> steps;
-  bloom->SetDelegatePass(steps);
-  renderer->SetPass(bloom);
+  BloomView view(4);
+  vtkRenderWindow* window = view.Window;
+  vtkRenderer* renderer = view.Renderer;
+  vtkBloomPass* bloom = view.Bloom;
   scene(renderer, bloom);
   configure(bloom);
   bloom->SetFloatPrecisionTo32Bit();
@@ -247,21 +260,13 @@ TEST(RenderingBloomPassMotion, ThresholdedSamplesKeepTheLookOfSurfaces)
     std::vector<float> results[2];
     for (const bool perSample : { true, false })
     {
-      vtkNew<vtkRenderWindow> window;
-      window->SetOffScreenRendering(1);
-      window->SetMultiSamples(samples);
-      window->SetSize(320, 180);
-      vtkNew<vtkRenderer> renderer;
-      window->AddRenderer(renderer);
-      vtkNew<vtkBloomPass> bloom;
-      vtkNew<vtkRenderStepsPass> steps;
-      bloom->SetDelegatePass(steps);
-      renderer->SetPass(bloom);
-      ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", renderer, bloom));
+      BloomView view(samples);
+      vtkBloomPass* bloom = view.Bloom;
+      ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", view.Renderer, bloom));
       bloom->SetThresholdSamples(perSample);
       bloom->SetFloatPrecisionTo32Bit();
       bloom->CaptureResultOn();
-      window->Render();
+      view.Window->Render();
       vtkNew<vtkImageData> scene, result;
       ASSERT_TRUE(bloom->ReadSceneImage(scene));
       ASSERT_TRUE(bloom->ReadResultImage(result));
