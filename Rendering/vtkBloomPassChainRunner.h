@@ -12,7 +12,11 @@
  * chain's own targets where the context has OpenGL 4.3 a compute program of the same file
  * (vtkBloomPassCompute.cxx). With Restrict each pass covers only the box its output can be
  * non-zero in (vtkBloomPassRegion.cxx); with Fast the interiors run as bilinear pairs of taps
- * (vtkBloomPassOperators.cxx).
+ * (vtkBloomPassOperators.cxx). A separable pair of passes that is one draw runs as one tiled
+ * compute pass (PassSpec::Tiled), and a second term of the same output may share it
+ * (PassSpec::Second: a level's two downsample terms, a level's blur inside its upsample); the
+ * compute passes into the chain's targets barrier only where a later pass needs it
+ * (DeferBarriers).
  */
 
 #ifndef vtkBloomPassChainRunner_h
