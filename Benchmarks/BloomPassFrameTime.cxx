@@ -68,7 +68,7 @@
 // the occlusion query only, and with neither (no wait: the CPU submits the whole frame ahead
 // of the GPU), GPU time and the CPU's time in Render().
 //
-// One executable for every GPU timing of scripts/gpu-run.sh (about 930 lines): each mode is a
+// One executable for every GPU timing of scripts/gpu-run.sh (about 970 lines): each mode is a
 // function of its own (TimeFrames, ProfilePasses, QualityTable, SparseTable, SyncTable,
 // OrbitTable, SelectiveTable, PSFTable, RenderersTable), and they share the scene set-up
 // (SetUp), the frame timing (vtkBloomFrameTimer.h) and the frame statistics, which separate
@@ -371,10 +371,11 @@ bool QualityTable(const std::string& scene, int width, int height, int frames, c
     out << "preset,quality,gpu_ms_over_floor,passes,rel_l2_vs_exact,rel_l2_vs_reference,"
            "max_abs_over_peak_vs_reference\n";
   }
-  std::printf("%s over black, %dx%d, vtkImageBloom REFERENCE (double) on the same float render "
-              "as the reference\n\n| preset | quality | bloom over the floor GPU | passes | relative L2 "
-              "against the exact pass | relative L2 against REFERENCE | max abs / peak against "
-              "REFERENCE |\n|---|---|---|---|---|---|---|\n",
+  std::printf(
+    "%s over black, %dx%d, vtkImageBloom REFERENCE (double) on the same float render "
+    "as the reference\n\n| preset | quality | bloom over the floor GPU | passes | relative L2 "
+    "against the exact pass | relative L2 against REFERENCE | max abs / peak against "
+    "REFERENCE |\n|---|---|---|---|---|---|---|\n",
     scene.c_str(), width, height);
   for (const std::string& preset : presets)
   {

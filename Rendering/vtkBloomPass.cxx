@@ -243,7 +243,6 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   this->Runner.SimulateComputeFailure = self->SimulateComputeShaderFailure;
   this->Runner.SingleDrawSamples = self->SingleDrawSamples;
   this->Runner.FuseSeparablePasses = self->FuseSeparablePasses;
-  this->Runner.SourceSamples = nullptr; // Render() names the multisampled scene
   this->Runner.ComputePasses = 0;
   this->Runner.Parameters = self->Parameters;
   this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
@@ -354,6 +353,12 @@ void vtkBloomPass::vtkInternals::PlanTile(
 bool vtkBloomPass::vtkInternals::RunBloom(vtkBloomPass* self, vtkTextureObject* source, bool mask)
 {
   self->LastPSFGrid[0] = self->LastPSFGrid[1] = 0;
+  // A multisampled scene's samples, for a bright pass that thresholds each (the runner's bright
+  // pass says where it applies: whole-scene bloom, with a threshold).
+  const vtkBloomPassResources& res = this->Resources;
+  this->Runner.SourceSamples =
+    self->ThresholdSamples && res.Samples > 1 ? res.Multisample.Color.Get() : nullptr;
+  this->Runner.SourceSampleCount = res.Samples;
   if (self->Parameters->GetBloomMode() == vtkBloomParameters::BLOOM_PSF)
   {
     return this->RunPSF(self, source, mask);
@@ -694,10 +699,6 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // In one render the emission is the scene's colour where its alpha says so.
   in.Runner.EmissionInAlpha = inScene;
   const bool twoRenders = selective && !inScene;
-  // A multisampled scene's bright pass thresholds its samples before their mean.
-  in.Runner.SourceSamples =
-    this->ThresholdSamples && res.Samples > 1 && !selective ? res.Multisample.Color.Get() : nullptr;
-  in.Runner.SourceSampleCount = res.Samples;
   const bool bloom =
     in.RunBloom(this, twoRenders ? res.Emitter.Color : res.Scene.Color, twoRenders);
   this->LastBloomSkipped = !bloom;

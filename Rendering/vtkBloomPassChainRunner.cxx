@@ -133,8 +133,8 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
   // VariantOf's key holds everything read here: a new #define needs its value there too.
   std::ostringstream os;
   os << "#define X_MODE " << xMode << "\n#define Y_MODE " << yMode << "\n";
-  // A table's width as a constant (the uniform holds the same value), so that the loop over
-  // its taps unrolls: on an NVIDIA H100 each small pass waited on its taps' fetches one by one.
+  // A table's width as a constant, so that the loop over its taps unrolls: on an NVIDIA H100
+  // each small pass waited on its taps' fetches one by one.
   if (xMode == OP_TABLE)
   {
     os << "#define X_TABLE_WIDTH " << spec.X->Width << "\n";
@@ -505,8 +505,6 @@ void vtkBloomPassChainRunner::SetDrawUniforms(
   u.Float2("regionSize", size);
   u.Float("weight", spec.Weight);
   u.Float("zeroBloom", 0.0);
-  u.Int("xWidth", spec.X ? spec.X->Width : 0);
-  u.Int("yWidth", spec.Y ? spec.Y->Width : 0);
   if (spec.Second)
   {
     u.Float("weight2", spec.Second->Weight);

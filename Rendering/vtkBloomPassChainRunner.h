@@ -16,7 +16,7 @@
  * compute pass (PassSpec::Tiled), and a second term of the same output may share it
  * (PassSpec::Second: a level's two downsample terms, a level's blur inside its upsample); the
  * compute passes into the chain's targets barrier only where a later pass needs it
- * (DeferBarriers).
+ * (Deferring).
  */
 
 #ifndef vtkBloomPassChainRunner_h
@@ -380,7 +380,7 @@ private:
    * 2. and 3. The pyramid, each level from the unblurred level above it (DownsampleLevel), and
    * the blur of each contributing level (BlurLevel), interleaved: level i - 1's blur after level
    * i's downsample, which read the same level, so that the two run side by side on the GPU
-   * (see DeferBarriers).
+   * (see Deferring).
    */
   void DownsampleAndBlurLevels(ChainRegions& regions);
   void DownsampleLevel(ChainRegions& regions, size_t i);
@@ -628,16 +628,15 @@ private:
   };
 
   /**
-   * With DeferBarriers, a compute pass into one of the chain's targets makes no barrier of its
-   * own: the next pass that reads a texture written since the last barrier, or writes one read
+   * Within Run() (Deferring), a compute pass into one of the chain's targets makes no barrier of
+   * its own: the next pass that reads a texture written since the last barrier, or writes one read
    * or written since, issues it first (BeforeComputePass). Independent passes (a level's blur
    * and the next level's downsample) then overlap on the GPU instead of each waiting for the
    * one before. Anything else that touches the targets (a clear, a fragment pass, the FFT, the
    * region's reduction, the composite) flushes first (FlushComputeWrites). Profiling keeps a
    * barrier after every pass, so that each pass's timestamps hold its own work.
    */
-  bool DeferBarriers = true;
-  bool Deferring = false; ///< within Run(), with DeferBarriers and not Profiling
+  bool Deferring = false;                            ///< within Run(), not Profiling
   using TextureNames = std::array<unsigned int, 12>; ///< PassTextures' names, 0 where absent
   static TextureNames NamesOf(const PassTextures& textures);
   void BeforeComputePass(const TextureNames& reads, unsigned int written);

@@ -40,7 +40,7 @@ bool TwoDimensional(const vtkBloomChain::Term& term, bool fast)
 //------------------------------------------------------------------------------
 bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
 {
-  this->Deferring = this->DeferBarriers && !this->Profiling;
+  this->Deferring = !this->Profiling;
   const bool ran = this->RunSteps(emission, mask);
   this->FlushComputeWrites();
   this->Deferring = false;
@@ -158,7 +158,8 @@ bool vtkBloomPassChainRunner::BrightPass(vtkTextureObject* emission, ChainRegion
   bright.Step = STEP_THRESHOLD;
   bright.ReadsSource = true;
   // A multisampled scene, thresholded sample by sample: whole-scene bloom only (selective
-  // bloom's emission is masked or weighted per pixel).
+  // bloom's emission is masked, weighted by alpha, or not thresholded; this is where that is
+  // decided).
   if (this->SourceSamples && this->ThresholdEmission && !this->MaskSource &&
     !this->EmissionInAlpha && this->Parameters->GetThresholdMode() != vtkImageBloomThreshold::NONE)
   {

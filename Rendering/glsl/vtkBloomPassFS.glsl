@@ -125,12 +125,7 @@ uniform vec2 sourceTexel; // 1 / the source texture's size
 
 #if X_MODE == OP_TABLE
 uniform sampler2D xRows;
-uniform int xWidth;
-#ifdef X_TABLE_WIDTH
 #define X_COUNT X_TABLE_WIDTH // a constant: the taps' loop unrolls, their fetches overlap
-#else
-#define X_COUNT xWidth
-#endif
 #define X_ANY 0xffffffffu
 #define X_ALL 0u
 #elif X_MODE == OP_PERIODIC
@@ -148,12 +143,7 @@ uniform float xOffsets[X_PERIOD * X_ROW];
 
 #if Y_MODE == OP_TABLE
 uniform sampler2D yRows;
-uniform int yWidth;
-#ifdef Y_TABLE_WIDTH
 #define Y_COUNT Y_TABLE_WIDTH
-#else
-#define Y_COUNT yWidth
-#endif
 #define Y_ANY 0xffffffffu
 #define Y_ALL 0u
 #elif Y_MODE == OP_PERIODIC
