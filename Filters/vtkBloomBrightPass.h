@@ -18,6 +18,7 @@
 #include <cmath>
 #include <limits>
 #include <type_traits>
+#include <utility>
 
 /**
  * Calls f(std::integral_constant<int, Mode>()) for a vtkImageBloomThreshold mode (an unknown
@@ -201,39 +202,60 @@ inline bool vtkBloomBrightPassKeepsAny(
   return any;
 }
 
+/// The scalar type of Real: Real itself, or the lanes' type of a GCC vector.
+template <typename Real, typename = void>
+struct vtkBloomScalarOf
+{
+  using type = Real;
+};
+template <typename Real>
+struct vtkBloomScalarOf<Real, std::enable_if_t<!std::is_arithmetic<Real>::value>>
+{
+  using type = std::decay_t<decltype(std::declval<Real>()[0])>;
+};
+
 /**
  * True when vtkBloomBrightPass certainly gives zero for every finite colour whose luminance is at
  * most `luminance` and whose largest value is at most `brightness` (the comparisons are the
  * formula's own, evaluated as it evaluates them, and monotone). False when that cannot be
- * decided: a luminance above the clamp (the firefly guard rescales first), mode NONE, or a
- * colour the mode keeps.
+ * decided: a luminance above the clamp (the firefly guard rescales first) or NaN, mode NONE, or
+ * a colour the mode keeps. For a GCC vector Real the answer is a lane mask (what Real's
+ * comparisons give), each lane the scalar answer for its own values.
  */
 template <typename Real>
-inline bool vtkBloomBrightPassIsZeroBelow(
+inline auto vtkBloomBrightPassIsZeroBelow(
   Real luminance, Real brightness, int mode, double threshold, double knee, double clampLuminance)
 {
-  if (!(luminance <= static_cast<Real>(clampLuminance)))
-  {
-    return false;
-  }
-  const Real t0 = static_cast<Real>(threshold);
-  const Real k = static_cast<Real>(threshold * knee);
+  using Scalar = typename vtkBloomScalarOf<Real>::type;
+  using Mask = decltype(luminance < luminance);
+  const Scalar t0 = static_cast<Scalar>(threshold);
+  const Scalar k = static_cast<Scalar>(threshold * knee);
+  const Scalar zero(0);
+  Mask below{}; // false: undecided
   switch (mode)
   {
     case vtkImageBloomThreshold::SMOOTHSTEP_KNEE:
       // smoothstep 0, or the step lum >= T
-      return k > Real(0) ? luminance <= t0 - k : luminance < t0;
+      below = k > zero ? Mask(luminance <= t0 - k) : Mask(luminance < t0);
+      break;
     case vtkImageBloomThreshold::HARD_LUMINANCE:
-      return luminance <= t0;
+      below = luminance <= t0;
+      break;
     case vtkImageBloomThreshold::QUADRATIC_KNEE:
       // Both terms of the factor <= 0, evaluated as the formula evaluates them.
-      return k >= Real(0) && brightness - t0 + k <= Real(0) && brightness - t0 <= Real(0);
+      if (k >= zero)
+      {
+        below = Mask((brightness - t0 + k <= zero) & (brightness - t0 <= zero));
+      }
+      break;
     case vtkImageBloomThreshold::PER_CHANNEL:
     case vtkImageBloomThreshold::EXCESS_KNEE:
-      return brightness <= t0;
+      below = brightness <= t0;
+      break;
     default:
-      return false;
+      break;
   }
+  return Mask(below & (luminance <= static_cast<Scalar>(clampLuminance)));
 }
 
 /**

@@ -12,11 +12,16 @@
  * 0 <= p < 2046, is added as three 32-bit pieces. Non-finite values are summed apart and make
  * the result non-finite.
  *
- * AddRow() adds a whole array faster: per block of at most 2048 values it sums, in three 64-bit
- * integers, every value in a 64-binade window below the block's largest exponent, exactly (a
- * fixed-point sum, which vectorizes; without the sign handling when no value is negative), then
- * adds those three integers to the chunks; the rare values below the window take the one-by-one
- * path. The result is the same bit for bit.
+ * AddRow() adds a whole array faster, per block of at most 2048 values whose magnitudes are
+ * below 2^top. First by extraction (Rump, Ogita and Oishi 2008): with sigma = 2^(top + 12),
+ * q = (sigma + x) - sigma keeps the bits of x down to 2^(top - 41), exactly, and the q of a
+ * block add up in double without rounding; the remainders x - q, also exact, go through the
+ * same step 41 binades lower. Two such levels (four where a value lies below 2^(top - 30))
+ * are a few double additions per value, in vector lanes; they need IEEE's
+ * default arithmetic (round to nearest, no flush to zero), which AddRow checks. A block that
+ * leaves a remainder, has a top too large or too small, or holds Inf or NaN is summed as
+ * three 64-bit integers of a fixed-point window 64 binades below its largest exponent, the
+ * rare values below the window one by one. Either way the result is the same bit for bit.
  */
 
 #ifndef vtkBloomExactSum_h
@@ -52,11 +57,10 @@ public:
   void AddRow(const double* values, int n);
 
   /**
-   * AddRow for a caller that has already seen the values: `largestBits` is the largest of their
-   * bit patterns with the sign cleared (its exponent field bounds every value; 0x7FF there means
-   * Inf or NaN) and `anyNegative` whether a sign bit is set. A wrong hint gives a wrong sum.
+   * AddRow for a caller that has already seen the values: no value's magnitude exceeds
+   * `largestMagnitude` (NaN values aside, which this finds). A smaller bound gives a wrong sum.
    */
-  void AddRow(const double* values, int n, std::uint64_t largestBits, bool anyNegative);
+  void AddRow(const double* values, int n, double largestMagnitude);
 
   /// Add another sum.
   void Add(const vtkBloomExactSum& other);
@@ -74,7 +78,10 @@ private:
 
   /// Add v 2^(bit - 1074) for a signed 64-bit v and 0 <= bit < 2080.
   void AddInteger(std::int64_t v, int bit);
-  /// One block of AddRow (n <= MaximumBlock) whose largest biased exponent is `largest`.
+  /// One block of AddRow (n <= MaximumBlock) by extraction, its values below 2^top; false, and
+  /// nothing added, when a remainder is left or top is out of range.
+  bool AddExtracted(const double* values, int n, int top);
+  /// One block through the fixed-point window, its largest biased exponent `largest`.
   void AddBlock(const double* values, int n, std::uint64_t largest, bool anyNegative);
 
   // Chunk k holds bits of weight 2^(32 k - 1074); the largest double reaches chunk 65, and the

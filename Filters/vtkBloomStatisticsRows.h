@@ -52,7 +52,7 @@ private:
   double PeakIn = -std::numeric_limits<double>::infinity();
   double PeakOut = -std::numeric_limits<double>::infinity();
   vtkIdType Bright = 0;
-  std::vector<double> Scratch;
+  std::vector<double> Luminance, Brightness; ///< a row's L and largest colour values
 };
 
 #endif

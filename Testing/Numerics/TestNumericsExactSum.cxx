@@ -7,12 +7,17 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cfenv>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
 #include <random>
 #include <vector>
+
+#if defined(__SSE__) || defined(_M_X64)
+#include <xmmintrin.h> // _mm_getcsr, _mm_setcsr
+#endif
 
 namespace
 {
@@ -41,7 +46,9 @@ bool Same(double a, double b)
 
 // Values of one kind: uniform [0, 1); signed over 200 binades; signed over the whole finite
 // range, subnormals included; random finite bit patterns; small subnormals only; near the
-// largest double; a near-cancelling mix (x and -x with one tiny leftover).
+// largest double; signed over 60 binades (the extraction's four levels); positive over 20
+// binades, a frame's luminances (its two levels).
+constexpr int NumberOfKinds = 8;
 std::vector<double> Values(int kind, int n, std::mt19937_64& g)
 {
   std::vector<double> v(n);
@@ -70,6 +77,12 @@ std::vector<double> Values(int kind, int n, std::mt19937_64& g)
       case 4:
         x = sign * std::ldexp(static_cast<double>(g() % 1000), -1074);
         break;
+      case 6:
+        x = sign * std::ldexp(r, static_cast<int>(g() % 60) - 30);
+        break;
+      case 7:
+        x = std::ldexp(r, static_cast<int>(g() % 20) - 10);
+        break;
       default:
         x = sign * std::numeric_limits<double>::max() * r;
         break;
@@ -85,7 +98,7 @@ TEST(NumericsExactSum, RowsEqualOneByOne)
 {
   std::mt19937_64 g(42);
   const int lengths[] = { 1, 2, 7, 2047, 2048, 2049, 4096, 4097, 6000 };
-  for (int kind = 0; kind < 6; ++kind)
+  for (int kind = 0; kind < NumberOfKinds; ++kind)
   {
     for (int n : lengths)
     {
@@ -148,36 +161,96 @@ TEST(NumericsExactSum, MergingIsExact)
   EXPECT_TRUE(Same(total.Get(), OneByOne(v)));
 }
 
-// AddRow with the caller's hint (the largest magnitude's bits and whether a sign is set, as the
-// composite's statistics find them) gives the same bits as without; a hint from a larger value
-// than the row holds only widens the window.
+// AddRow with the caller's hint (the largest magnitude, as the composite's statistics find it)
+// gives the same bits as without; a larger bound than the row holds only moves the levels up,
+// and a NaN the bound leaves out still makes the sum NaN.
 TEST(NumericsExactSum, HintedRowsEqualOneByOne)
 {
   std::mt19937_64 g(17);
-  for (int kind = 0; kind < 6; ++kind)
+  for (int kind = 0; kind < NumberOfKinds; ++kind)
   {
     for (int n : { 1, 5, 2048, 4097 })
     {
       const std::vector<double> v = Values(kind, n, g);
-      std::uint64_t largest = 0, signs = 0;
+      double largest = 0.0;
       for (double x : v)
       {
-        std::uint64_t bits;
-        std::memcpy(&bits, &x, sizeof(bits));
-        signs |= bits;
-        largest = std::max(largest, bits & ~(std::uint64_t(1) << 63));
+        largest = std::max(largest, std::fabs(x));
       }
-      const bool negative = (signs >> 63) != 0;
       vtkBloomExactSum exact, wider;
-      exact.AddRow(v.data(), n, largest, negative);
-      const std::uint64_t higher =
-        std::min<std::uint64_t>(largest + (std::uint64_t(40) << 52), std::uint64_t(0x7FE) << 52);
-      wider.AddRow(v.data(), n, std::max(largest, higher), negative);
+      exact.AddRow(v.data(), n, largest);
+      wider.AddRow(
+        v.data(), n, std::min(std::ldexp(largest, 40), std::numeric_limits<double>::max()));
       const double a = OneByOne(v);
       EXPECT_TRUE(Same(a, exact.Get())) << "kind " << kind << ", n " << n;
-      EXPECT_TRUE(Same(a, wider.Get())) << "kind " << kind << ", n " << n << " (wider window)";
+      EXPECT_TRUE(Same(a, wider.Get())) << "kind " << kind << ", n " << n << " (larger bound)";
     }
   }
+  std::vector<double> v(100, 0.5);
+  v[37] = std::nan("");
+  vtkBloomExactSum s;
+  s.AddRow(v.data(), static_cast<int>(v.size()), 0.5);
+  EXPECT_TRUE(std::isnan(s.Get()));
+}
+
+// The extraction needs IEEE's default arithmetic; under another rounding direction, or with
+// subnormals flushed (x86's FTZ and DAZ, which some applications set for speed), AddRow takes
+// the integer path and still gives the sum to the last bit. Rows of values and their negatives
+// with subnormals among them: the sum is the subnormals' alone, so a lost one shows.
+TEST(NumericsExactSum, RowsAreExactInAnyFloatingPointEnvironment)
+{
+  std::mt19937_64 g(23);
+  std::vector<std::vector<double>> rows;
+  for (int kind : { 0, 6, 7 })
+  {
+    std::vector<double> v = Values(kind, 1500, g);
+    const size_t half = v.size();
+    for (size_t i = 0; i < half; ++i)
+    {
+      v.push_back(-v[i]);
+    }
+    for (int i = 0; i < 40; ++i)
+    {
+      v.push_back(std::ldexp(static_cast<double>(g() % 1000 + 1), -1074));
+    }
+    std::shuffle(v.begin(), v.end(), g);
+    rows.push_back(v);
+  }
+  std::vector<double> expected;
+  for (const std::vector<double>& v : rows)
+  {
+    expected.push_back(OneByOne(v));
+  }
+  auto check = [&](const char* environment)
+  {
+    for (size_t r = 0; r < rows.size(); ++r)
+    {
+      const std::vector<double>& v = rows[r];
+      double largest = 0.0;
+      for (double x : v)
+      {
+        largest = std::max(largest, std::fabs(x));
+      }
+      vtkBloomExactSum hinted;
+      hinted.AddRow(v.data(), static_cast<int>(v.size()), largest);
+      EXPECT_TRUE(Same(expected[r], ByRow(v))) << environment << ", row " << r;
+      EXPECT_TRUE(Same(expected[r], hinted.Get())) << environment << ", row " << r << " (hinted)";
+    }
+  };
+  check("round to nearest");
+  for (int direction : { FE_UPWARD, FE_DOWNWARD, FE_TOWARDZERO })
+  {
+    const int saved = std::fegetround();
+    ASSERT_EQ(std::fesetround(direction), 0);
+    check("directed rounding");
+    std::fesetround(saved);
+  }
+#if defined(__SSE__) || defined(_M_X64)
+  const unsigned int saved = _mm_getcsr();
+  _mm_setcsr(saved | 0x8040u); // flush to zero, denormals are zero
+  check("FTZ and DAZ");
+  _mm_setcsr(saved);
+#endif
 }
 
 // Chunks are carried once in many additions, not after each (vtkBloomExactSum::Grow): a sum
