@@ -7,11 +7,13 @@
  * chain's composite has the rows in the cache instead of in passes of their own over the
  * frame (vtkBloomFastChain). Float pixels only. Each row is measured four pixels at a time in
  * vector lanes (GCC vector types, compiled for AVX2 too where the compiler clones functions):
- * the luminances and their maximum; the bright count as brightness * factor > 0
- * (vtkBloomBrightPassFactor), exact because the factor is never negative and rounding is
- * monotone, with the few colours that are not finite or above the firefly clamp sent through
- * vtkBloomBrightPass itself; and the luminances' exact sum (vtkBloomExactSum::AddRow). A row
- * the composite copied from the input is measured once, for both.
+ * first the luminances and largest colour values, their extremes and whether all are finite,
+ * in one loop; then the bright count, only when the bright pass's zero test cannot rule out
+ * the row's largest values, as brightness * factor > 0 (vtkBloomBrightPassFactor), exact
+ * because the factor is never negative and rounding is monotone, with the colours that are not
+ * finite or above the firefly clamp sent through vtkBloomBrightPass itself; and the
+ * luminances' exact sum (vtkBloomExactSum::AddRow, bounded by the extremes). A row the
+ * composite copied from the input is measured once, for both.
  */
 
 #ifndef vtkBloomStatisticsRows_h
