@@ -15,7 +15,6 @@ namespace
 // Four pixels per step in vector lanes (elsewhere the one-pixel loop does every pixel).
 typedef double Lanes __attribute__((vector_size(32)));
 typedef std::int64_t Masks __attribute__((vector_size(32)));
-typedef std::uint64_t Bits __attribute__((vector_size(32)));
 typedef float Floats8 __attribute__((vector_size(32), aligned(4), may_alias));
 typedef double Pairs __attribute__((vector_size(32))); // four pairs of floats, as 64-bit lanes
 typedef double Doubles8 __attribute__((vector_size(64)));
@@ -126,9 +125,9 @@ struct RowExtremes
 };
 
 // The luminances of n pixels into `lum` and, with Bright, their largest colour values into
-// `bright`, and the extremes of both. Per vector: the pixels' load, L and b, and three selects; the
-// finiteness rides on a plain sum of the L, which only a NaN, an Inf or an overflow (then
-// conservatively) makes non-finite.
+// `bright`, and the extremes of both. Per vector: the pixels' load, L and b, and their extremes;
+// whether every L is finite rides on a plain sum of them, which only a NaN, an Inf or an
+// overflow (then conservatively) makes non-finite.
 template <int NC, bool Bright>
 VTKBLOOM_ALWAYS_INLINE RowExtremes Luminances(const float* row, int n, double* lum, double* bright)
 {
