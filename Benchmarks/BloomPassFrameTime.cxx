@@ -14,6 +14,8 @@
 //   BloomPassFrameTime --single-draw N ...  as above, vtkBloomPass::SingleDrawSamples N
 //   BloomPassFrameTime --pairs ...  as above, vtkBloomPass::FuseSeparablePassesOff (the
 //                                  separable pairs as two passes, as before issue 37's fusion)
+//   BloomPassFrameTime --unfolded ...  as above, vtkBloomPass::FoldLastBlurOff (the last
+//                                  level blurred by a pass of its own)
 //   BloomPassFrameTime --samples N ...  as above in a window of N samples (multisampling)
 //   BloomPassFrameTime --resolved ...  as above, vtkBloomPass::ThresholdSamplesOff (a
 //                                  multisampled scene thresholded after its resolve)
@@ -98,6 +100,7 @@ bool Fragment = false; // --fragment
 int Convolution = -1;  // --direct, --fft: vtkBloomParameters::ConvolutionMode
 int SingleDraw = -1;   // --single-draw N: vtkBloomPass::SingleDrawSamples
 bool Pairs = false;    // --pairs: vtkBloomPass::FuseSeparablePassesOff
+bool Unfolded = false; // --unfolded: vtkBloomPass::FoldLastBlurOff
 int Samples = 0;       // --samples N: a multisampled window
 bool Resolved = false; // --resolved: vtkBloomPass::ThresholdSamplesOff
 
@@ -119,6 +122,7 @@ bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::strin
     timer.Bloom->SetSingleDrawSamples(SingleDraw);
   }
   timer.Bloom->SetFuseSeparablePasses(!Pairs);
+  timer.Bloom->SetFoldLastBlur(!Unfolded);
   timer.Bloom->SetThresholdSamples(!Resolved);
   if (Convolution >= 0)
   {
@@ -797,6 +801,7 @@ bool RenderersTable(const std::string& scene, int width, int height, int frames)
     pass->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
     pass->SetUseComputeShaders(!Fragment);
     pass->SetFuseSeparablePasses(!Pairs);
+    pass->SetFoldLastBlur(!Unfolded);
     if (SingleDraw >= 0)
     {
       pass->SetSingleDrawSamples(SingleDraw);
@@ -851,6 +856,7 @@ int main(int argc, char* argv[])
     (std::strcmp(argv[1], "--fast") == 0 || std::strcmp(argv[1], "--fragment") == 0 ||
       std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0 ||
       std::strcmp(argv[1], "--pairs") == 0 || std::strcmp(argv[1], "--resolved") == 0 ||
+      std::strcmp(argv[1], "--unfolded") == 0 ||
       (argc > 2 && std::strcmp(argv[1], "--single-draw") == 0) ||
       (argc > 2 && std::strcmp(argv[1], "--samples") == 0)))
   {
@@ -872,6 +878,10 @@ int main(int argc, char* argv[])
     else if (std::strcmp(argv[1], "--pairs") == 0)
     {
       Pairs = true;
+    }
+    else if (std::strcmp(argv[1], "--unfolded") == 0)
+    {
+      Unfolded = true;
     }
     else
     {
