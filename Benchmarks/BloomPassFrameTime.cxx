@@ -176,17 +176,19 @@ bool TimeFrames(const std::string& scene, const std::string& preset, int width, 
                 "CPU: the wall clock in Render(), before the wait for the GPU\n"
                 "| scene | preset | size | plain, mean | float + compute copy, mean | float + "
                 "VTK blit, mean | bloom: median | mean | p99 | max | bloom over plain, mean | "
-                "bloom over compute copy, mean | passes | CPU: plain, mean | CPU: compute copy, "
-                "mean | CPU: bloom, mean / p99 | CPU: bloom over plain, mean | CPU: bloom over "
-                "the copy, mean |\n"
-                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
+                "bloom over compute copy, mean | by the medians | passes | CPU: plain, mean | "
+                "CPU: compute copy, mean | CPU: bloom, mean / p99 | CPU: bloom over plain, mean | "
+                "CPU: bloom over the copy, mean |\n"
+                "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
       frames);
   }
+  // Over the copy by the medians too: a stall of the card that lands on a few frames of one
+  // kind moves the means (see p99) but not the medians.
   std::printf("| %s | %s | %dx%d | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %+.3f | "
-              "%+.3f | %d | %.3f | %.3f | %.3f / %.3f | %+.3f | %+.3f |\n",
+              "%+.3f | %+.3f | %d | %.3f | %.3f | %.3f / %.3f | %+.3f | %+.3f |\n",
     scene.c_str(), preset.c_str(), width, height, plain.Mean, copy.Mean, blit.Mean, bloom.Median,
     bloom.Mean, bloom.P99, bloom.Max, bloom.Mean - plain.Mean, bloom.Mean - copy.Mean,
-    timer.Bloom->GetNumberOfPasses(), plainCPU.Mean, copyCPU.Mean, bloomCPU.Mean, bloomCPU.P99,
+    bloom.Median - copy.Median, timer.Bloom->GetNumberOfPasses(), plainCPU.Mean, copyCPU.Mean, bloomCPU.Mean, bloomCPU.P99,
     bloomCPU.Mean - plainCPU.Mean, bloomCPU.Mean - copyCPU.Mean);
   std::fflush(stdout);
   return true;
