@@ -16,6 +16,8 @@
 //                                  separable pairs as two passes, as before issue 37's fusion)
 //   BloomPassFrameTime --unfolded ...  as above, vtkBloomPass::FoldLastBlurOff (the last
 //                                  level blurred by a pass of its own)
+//   BloomPassFrameTime --unrestricted ...  as above, RestrictToBrightRegion off (the whole
+//                                  chain every frame, no bright-region probes)
 //   BloomPassFrameTime --samples N ...  as above in a window of N samples (multisampling)
 //   BloomPassFrameTime --resolved ...  as above, vtkBloomPass::ThresholdSamplesOff (a
 //                                  multisampled scene thresholded after its resolve)
@@ -95,14 +97,15 @@
 
 namespace
 {
-bool Fast = false;     // --fast
-bool Fragment = false; // --fragment
-int Convolution = -1;  // --direct, --fft: vtkBloomParameters::ConvolutionMode
-int SingleDraw = -1;   // --single-draw N: vtkBloomPass::SingleDrawSamples
-bool Pairs = false;    // --pairs: vtkBloomPass::FuseSeparablePassesOff
-bool Unfolded = false; // --unfolded: vtkBloomPass::FoldLastBlurOff
-int Samples = 0;       // --samples N: a multisampled window
-bool Resolved = false; // --resolved: vtkBloomPass::ThresholdSamplesOff
+bool Fast = false;         // --fast
+bool Fragment = false;     // --fragment
+int Convolution = -1;      // --direct, --fft: vtkBloomParameters::ConvolutionMode
+int SingleDraw = -1;       // --single-draw N: vtkBloomPass::SingleDrawSamples
+bool Pairs = false;        // --pairs: vtkBloomPass::FuseSeparablePassesOff
+bool Unfolded = false;     // --unfolded: vtkBloomPass::FoldLastBlurOff
+bool Unrestricted = false; // --unrestricted: vtkBloomParameters::RestrictToBrightRegionOff
+int Samples = 0;           // --samples N: a multisampled window
+bool Resolved = false;     // --resolved: vtkBloomPass::ThresholdSamplesOff
 
 // The timer on `scene` with `preset`, in the quality and shader stage the options ask for; false,
 // with a message, for an unknown scene or preset.
@@ -123,6 +126,10 @@ bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::strin
   }
   timer.Bloom->SetFuseSeparablePasses(!Pairs);
   timer.Bloom->SetFoldLastBlur(!Unfolded);
+  if (Unrestricted)
+  {
+    timer.Bloom->GetParameters()->SetRestrictToBrightRegion(false);
+  }
   timer.Bloom->SetThresholdSamples(!Resolved);
   if (Convolution >= 0)
   {
@@ -188,8 +195,8 @@ bool TimeFrames(const std::string& scene, const std::string& preset, int width, 
               "%+.3f | %+.3f | %d | %.3f | %.3f | %.3f / %.3f | %+.3f | %+.3f |\n",
     scene.c_str(), preset.c_str(), width, height, plain.Mean, copy.Mean, blit.Mean, bloom.Median,
     bloom.Mean, bloom.P99, bloom.Max, bloom.Mean - plain.Mean, bloom.Mean - copy.Mean,
-    bloom.Median - copy.Median, timer.Bloom->GetNumberOfPasses(), plainCPU.Mean, copyCPU.Mean, bloomCPU.Mean, bloomCPU.P99,
-    bloomCPU.Mean - plainCPU.Mean, bloomCPU.Mean - copyCPU.Mean);
+    bloom.Median - copy.Median, timer.Bloom->GetNumberOfPasses(), plainCPU.Mean, copyCPU.Mean,
+    bloomCPU.Mean, bloomCPU.P99, bloomCPU.Mean - plainCPU.Mean, bloomCPU.Mean - copyCPU.Mean);
   std::fflush(stdout);
   return true;
 }
@@ -858,7 +865,7 @@ int main(int argc, char* argv[])
     (std::strcmp(argv[1], "--fast") == 0 || std::strcmp(argv[1], "--fragment") == 0 ||
       std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0 ||
       std::strcmp(argv[1], "--pairs") == 0 || std::strcmp(argv[1], "--resolved") == 0 ||
-      std::strcmp(argv[1], "--unfolded") == 0 ||
+      std::strcmp(argv[1], "--unfolded") == 0 || std::strcmp(argv[1], "--unrestricted") == 0 ||
       (argc > 2 && std::strcmp(argv[1], "--single-draw") == 0) ||
       (argc > 2 && std::strcmp(argv[1], "--samples") == 0)))
   {
@@ -884,6 +891,10 @@ int main(int argc, char* argv[])
     else if (std::strcmp(argv[1], "--unfolded") == 0)
     {
       Unfolded = true;
+    }
+    else if (std::strcmp(argv[1], "--unrestricted") == 0)
+    {
+      Unrestricted = true;
     }
     else
     {
