@@ -243,7 +243,6 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   this->Runner.SimulateComputeFailure = self->SimulateComputeShaderFailure;
   this->Runner.SingleDrawSamples = self->SingleDrawSamples;
   this->Runner.FuseSeparablePasses = self->FuseSeparablePasses;
-  this->Runner.FoldLastBlur = self->FoldLastBlur;
   this->Runner.ComputePasses = 0;
   this->Runner.Parameters = self->Parameters;
   this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
@@ -1017,7 +1016,6 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "SingleDrawSamples: " << this->SingleDrawSamples << "\n";
   os << indent << "FuseSeparablePasses: " << (this->FuseSeparablePasses ? "On" : "Off") << "\n";
-  os << indent << "FoldLastBlur: " << (this->FoldLastBlur ? "On" : "Off") << "\n";
   os << indent << "ThresholdSamples: " << (this->ThresholdSamples ? "On" : "Off") << "\n";
   os << indent << "LastComputePasses: " << this->LastComputePasses << "\n";
   os << indent << "CaptureResult: " << (this->CaptureResult ? "On" : "Off") << "\n";

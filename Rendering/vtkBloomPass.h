@@ -291,21 +291,6 @@ public:
 
   ///@{
   /**
-   * CASCADE accumulates from the last (smallest) level up: its blur, times its weight, is the
-   * last accumulation, which the upsample into the level above reads. With FoldLastBlur the
-   * upsample reads the unblurred last level through the product of the two operators instead
-   * (composed in double, the weight in it, vtkBloomLinearOperator::Compose): the same linear
-   * operator with one rounding to float instead of two, and one dependent pass fewer. Not the
-   * same bits as the unfolded chain: within float rounding of it (tested to 1e-6 relative L2
-   * for every preset). The exact mode only, where no FFT runs on either side. Default on.
-   */
-  vtkSetMacro(FoldLastBlur, bool);
-  vtkGetMacro(FoldLastBlur, bool);
-  vtkBooleanMacro(FoldLastBlur, bool);
-  ///@}
-
-  ///@{
-  /**
    * Where the scene is multisampled (the framebuffer the pass renders into has samples), the
    * bright pass thresholds each sample and takes their mean, before the chain's resample,
    * instead of thresholding the resolved pixel. A thin line or point covering part of a pixel
@@ -626,7 +611,6 @@ protected:
   bool SimulateComputeShaderFailure = false;
   int SingleDrawSamples = -1;
   bool FuseSeparablePasses = true;
-  bool FoldLastBlur = true;
   bool ThresholdSamples = true;
   int LastComputePasses;
   bool CaptureResult;

@@ -118,11 +118,6 @@ public:
    * sum the source rows they read once, in shared memory (TILE in vtkBloomPassFS.glsl).
    */
   bool FuseSeparablePasses = true;
-  /**
-   * CASCADE: the last level's blur and weight composed into the upsample that reads it, one
-   * operator rounded once (vtkBloomPass::FoldLastBlur; vtkBloomPassResources::LastUpFolded).
-   */
-  bool FoldLastBlur = true;
   /// Whether the context renders on the CPU (Mesa's llvmpipe or softpipe, SwiftShader), asked
   /// once per context.
   bool SoftwareRasterizer();
@@ -348,18 +343,6 @@ private:
    * both terms fused (FusesTwo).
    */
   bool BlurInUpsample(size_t i);
-  /**
-   * Whether the last level's blur is folded into the upsample that reads it (FoldLastBlur): the
-   * exact mode, a chain that has the folded operators, and no FFT on either side.
-   */
-  bool FoldsLastBlur();
-  /// CASCADE: the upsample into level i, the last level's blur folded in where FoldsLastBlur.
-  struct UpOperators
-  {
-    const vtkBloomLinearOperator* X;
-    const vtkBloomLinearOperator* Y;
-  };
-  UpOperators UpInto(size_t i);
   /// The most input rows 16 consecutive output rows of `y` read (TILE_ROWS), found once.
   int TileRows(const vtkBloomLinearOperator& y);
   std::map<const vtkBloomLinearOperator*, int> TileRowCounts;
@@ -374,8 +357,7 @@ private:
    * non-zero in (Level: the pyramid's levels, Blur: after their blur, Accum: CASCADE's
    * accumulations); without, every box is the whole target. Blurred is each level's blurred
    * target (the level itself where it is not blurred); LastAccumulated, whether the last
-   * level's blur already wrote its CASCADE accumulation; LastFolded, whether no pass writes it
-   * (FoldsLastBlur).
+   * level's blur already wrote its CASCADE accumulation.
    */
   struct ChainRegions
   {
@@ -385,7 +367,6 @@ private:
     std::vector<Box> Accum;
     std::vector<vtkBloomPassTarget*> Blurred;
     bool LastAccumulated = false;
-    bool LastFolded = false; ///< the last level is blurred by the upsample that reads it
     /// The region a pass computes: `box` when restricted, else null (the whole target).
     const Box* Of(const Box& box) const;
   };

@@ -260,7 +260,6 @@ void vtkBloomPassChainRunner::DownsampleAndBlurLevels(ChainRegions& regions)
 {
   const size_t n = this->Resources.Chain.Levels.size();
   regions.LastAccumulated = false;
-  regions.LastFolded = false;
   for (size_t i = 1; i < n; ++i)
   {
     this->DownsampleLevel(regions, i);
@@ -384,11 +383,6 @@ void vtkBloomPassChainRunner::BlurLevel(ChainRegions& regions, size_t i)
   {
     return; // AccumulateCascade blurs it, inside level i's upsample
   }
-  if (i == last && this->FoldsLastBlur())
-  {
-    regions.LastFolded = true; // the upsample into level i - 1 blurs it, with its weight
-    return;
-  }
   vtkBloomPassTarget& blurred = cascade && i == last ? res.Accum[last] : res.Work[i];
   regions.LastAccumulated = cascade && i == last;
   regions.Blurred[i] = regions.LastAccumulated ? &res.Levels[i] : &res.Work[i];
@@ -434,38 +428,10 @@ bool vtkBloomPassChainRunner::BlurInUpsample(size_t i)
 {
   const vtkBloomChain& c = this->Resources.Chain;
   const vtkBloomChain::Level& level = c.Levels[i];
-  if (c.AccumulateMode == vtkBloomParameters::DIRECT || i + 1 >= c.Levels.size())
-  {
-    return false;
-  }
-  const UpOperators up = this->UpInto(i);
-  return level.Blur && level.Weight != 0.0 && !this->UsesFFT(level.BlurPass.X) &&
-    !this->UsesFFT(level.BlurPass.Y) && !this->UsesFFT(*up.X) &&
-    this->FusesTwo(*up.X, *up.Y, level.BlurPass.X, level.BlurPass.Y);
-}
-
-//------------------------------------------------------------------------------
-bool vtkBloomPassChainRunner::FoldsLastBlur()
-{
-  const vtkBloomChain& c = this->Resources.Chain;
-  const vtkBloomChain::Term& folded = this->Resources.LastUpFolded;
-  const size_t n = c.Levels.size();
-  // The fast mode evaluates operators by bilinear pairs of taps, which a composed operator's
-  // wider rows would only make longer: it keeps its passes.
-  return this->FoldLastBlur && !this->Fast && c.AccumulateMode != vtkBloomParameters::DIRECT &&
-    n >= 2 && folded.X.OutputSize > 0 && !this->UsesFFT(c.Levels[n - 1].BlurPass.X) &&
-    !this->UsesFFT(c.Levels[n - 1].BlurPass.Y) && !this->UsesFFT(c.Levels[n - 2].Up.X) &&
-    !this->UsesFFT(folded.X) && !this->UsesFFT(folded.Y);
-}
-
-//------------------------------------------------------------------------------
-vtkBloomPassChainRunner::UpOperators vtkBloomPassChainRunner::UpInto(size_t i)
-{
-  const vtkBloomChain& c = this->Resources.Chain;
-  const vtkBloomChain::Term& up = i + 2 == c.Levels.size() && this->FoldsLastBlur()
-    ? this->Resources.LastUpFolded
-    : c.Levels[i].Up;
-  return { &up.X, &up.Y };
+  return c.AccumulateMode != vtkBloomParameters::DIRECT && i + 1 < c.Levels.size() && level.Blur &&
+    level.Weight != 0.0 && !this->UsesFFT(level.BlurPass.X) && !this->UsesFFT(level.BlurPass.Y) &&
+    !this->UsesFFT(level.Up.X) &&
+    this->FusesTwo(level.Up.X, level.Up.Y, level.BlurPass.X, level.BlurPass.Y);
 }
 
 //------------------------------------------------------------------------------
@@ -587,7 +553,7 @@ void vtkBloomPassChainRunner::AccumulateCascade(ChainRegions& regions)
   const size_t last = c.Levels.size() - 1;
   std::vector<Box>& accumBox = regions.Accum;
   accumBox[last] = regions.Blur[last];
-  if (!regions.LastAccumulated && !regions.LastFolded)
+  if (!regions.LastAccumulated)
   {
     PassSpec scale;
     scale.Source = regions.Blurred[last]->Color;
@@ -601,26 +567,22 @@ void vtkBloomPassChainRunner::AccumulateCascade(ChainRegions& regions)
   for (size_t i = last; i-- > 0;)
   {
     const vtkBloomChain::Level& level = c.Levels[i];
-    // From the last level's folded upsample, the unblurred last level itself.
-    const bool folded = regions.LastFolded && i + 1 == last;
-    const UpOperators up = this->UpInto(i);
     PassSpec x;
-    x.Source = folded ? res.Levels[last].Color : res.Accum[i + 1].Color;
+    x.Source = res.Accum[i + 1].Color;
     x.SourceSize = res.Accum[i + 1].Size;
-    x.X = up.X;
+    x.X = &level.Up.X;
     x.Name = "up-x";
     x.Level = static_cast<int>(i);
     const int* below = res.Accum[i + 1].Size;
-    const Box xBox =
-      Reach(up.X, nullptr, folded ? regions.Level[last] : accumBox[i + 1], below[0], below[1]);
-    accumBox[i] = Reach(nullptr, up.Y, xBox, level.Size[0], level.Size[1]);
+    const Box xBox = Reach(&level.Up.X, nullptr, accumBox[i + 1], below[0], below[1]);
+    accumBox[i] = Reach(nullptr, &level.Up.Y, xBox, level.Size[0], level.Size[1]);
     if (level.Weight != 0.0)
     {
       accumBox[i] = accumBox[i].Union(regions.Blur[i]);
     }
     PassSpec y;
     const int size[2] = { level.Size[0], res.Accum[i + 1].Size[1] };
-    if (!this->UsesFFT(*up.X) && this->Fuses(*up.X, *up.Y))
+    if (!this->UsesFFT(level.Up.X) && this->Fuses(level.Up.X, level.Up.Y))
     {
       y = x; // both halves in one dispatch
       y.Tiled = true;
@@ -634,7 +596,7 @@ void vtkBloomPassChainRunner::AccumulateCascade(ChainRegions& regions)
       y.SourceSize = size;
       y.Name = "up-y";
     }
-    y.Y = up.Y;
+    y.Y = &level.Up.Y;
     y.Level = static_cast<int>(i);
     y.Region = regions.Of(accumBox[i]);
     PassSpec blur; // the level's blur, as the pass BlurLevel left out would have written it

@@ -273,20 +273,6 @@ void vtkBloomPassResources::BuildChain(vtkBloomParameters* parameters, int width
     this->Chain.Build(parameters, width, height);
   }
   std::copy(part, part + 4, this->ChainPart);
-  this->LastUpFolded = vtkBloomChain::Term();
-  const size_t levels = this->Chain.Levels.size();
-  if (this->Chain.AccumulateMode != vtkBloomParameters::DIRECT && levels >= 2 &&
-    this->Chain.Levels[levels - 1].Blur)
-  {
-    const vtkBloomChain::Level& last = this->Chain.Levels[levels - 1];
-    const vtkBloomChain::Term& up = this->Chain.Levels[levels - 2].Up;
-    this->LastUpFolded.X = up.X.Compose(last.BlurPass.X);
-    this->LastUpFolded.Y = up.Y.Compose(last.BlurPass.Y);
-    for (double& w : this->LastUpFolded.X.Weights)
-    {
-      w *= last.Weight;
-    }
-  }
   this->ChainTime = parametersTime;
   this->ChainParameters = parameters;
   this->ChainIsFast = fast;

@@ -153,13 +153,6 @@ public:
   std::vector<vtkBloomPassTarget> Levels;              // L_i
   std::vector<vtkBloomPassTarget> Work;                // blurred levels and Karis sums
   std::vector<vtkBloomPassTarget> Accum;               // CASCADE accumulation A_i
-  /**
-   * CASCADE with a blurred last level: the upsample from the last level into the one above it
-   * with the last level's blur and weight composed in, in double (X: Up.X w B.X, Y: Up.Y B.Y),
-   * which the runner applies to the unblurred last level instead of blurring it into its own
-   * accumulation first (vtkBloomPass::FoldLastBlur). Empty (OutputSize 0) otherwise.
-   */
-  vtkBloomChain::Term LastUpFolded;
   vtkBloomPassTarget Temp;                // the output of every x pass, at most the size of level 0
   vtkBloomPassTarget Full;                // DIRECT: the full-size bloom
   std::vector<vtkBloomPassTarget> Reduce; // the bright region's reduction (RGBA32F boxes)

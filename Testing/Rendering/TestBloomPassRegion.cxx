@@ -319,47 +319,6 @@ TEST(RenderingBloomPassRegion, FusedSeparablePassesGiveTheSameBits)
 }
 
 //------------------------------------------------------------------------------
-// The last level's blur folded into the upsample that reads it (FoldLastBlur): the same linear
-// operator rounded once instead of twice, so within float rounding of the unfolded chain for
-// every preset, full and restricted to the bright region, in one dependent pass fewer where
-// the preset accumulates by CASCADE with a blurred last level (the default).
-TEST(RenderingBloomPassRegion, FoldedLastBlurStaysWithinFloatRounding)
-{
-  vtkSmartPointer<vtkImageData> input =
-    SparseImage(301, 207, { { 100, 160, 60, 90 }, { 20, 24, 150, 170 }, { 250, 251, 10, 11 } });
-  for (const std::string& preset : Presets())
-  {
-    for (const bool restrict : { false, true })
-    {
-      const std::string what = preset + (restrict ? ", restricted" : ", full");
-      Gpu gpu;
-      UsePreset(gpu.Pass, preset);
-      gpu.Pass->SetFloatPrecisionTo32Bit();
-      gpu.Pass->GetParameters()->SetRestrictToBrightRegion(restrict);
-      gpu.Pass->SetSingleDrawSamples(512 * 512);
-      gpu.Pass->FoldLastBlurOn();
-      vtkSmartPointer<vtkImageData> folded = gpu.Apply(input);
-      const int foldedPasses = gpu.Pass->GetNumberOfPasses();
-      gpu.Pass->FoldLastBlurOff();
-      vtkSmartPointer<vtkImageData> unfolded = gpu.Apply(input);
-      const int unfoldedPasses = gpu.Pass->GetNumberOfPasses();
-      const double error = vtkBloomTest::ColourRelativeL2(folded, unfolded);
-      std::cout << "[ folded ] " << what << ": relative L2 " << error << ", " << foldedPasses
-                << " passes (" << unfoldedPasses << " unfolded)\n";
-      EXPECT_LE(error, 1e-6) << what;
-      if (!restrict)
-      {
-        EXPECT_LE(foldedPasses, unfoldedPasses) << what;
-      }
-      if (preset == "default" && !restrict)
-      {
-        EXPECT_LT(foldedPasses, unfoldedPasses) << what;
-      }
-    }
-  }
-}
-
-//------------------------------------------------------------------------------
 // The fast mode approximates the exact pass: per preset, within a few per cent (relative L2
 // of the colour), but not bit for bit (it does take the bilinear path), in fewer passes or as
 // many.
