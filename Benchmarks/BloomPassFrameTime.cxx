@@ -14,8 +14,6 @@
 //   BloomPassFrameTime --single-draw N ...  as above, vtkBloomPass::SingleDrawSamples N
 //   BloomPassFrameTime --pairs ...  as above, vtkBloomPass::FuseSeparablePassesOff (the
 //                                  separable pairs as two passes, as before issue 37's fusion)
-//   BloomPassFrameTime --unfolded ...  as above, vtkBloomPass::FoldLastBlurOff (the last
-//                                  level blurred by a pass of its own)
 //   BloomPassFrameTime --unrestricted ...  as above, RestrictToBrightRegion off (the whole
 //                                  chain every frame, no bright-region probes)
 //   BloomPassFrameTime --samples N ...  as above in a window of N samples (multisampling)
@@ -102,7 +100,6 @@ bool Fragment = false;     // --fragment
 int Convolution = -1;      // --direct, --fft: vtkBloomParameters::ConvolutionMode
 int SingleDraw = -1;       // --single-draw N: vtkBloomPass::SingleDrawSamples
 bool Pairs = false;        // --pairs: vtkBloomPass::FuseSeparablePassesOff
-bool Unfolded = false;     // --unfolded: vtkBloomPass::FoldLastBlurOff
 bool Unrestricted = false; // --unrestricted: vtkBloomParameters::RestrictToBrightRegionOff
 int Samples = 0;           // --samples N: a multisampled window
 bool Resolved = false;     // --resolved: vtkBloomPass::ThresholdSamplesOff
@@ -125,7 +122,6 @@ bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::strin
     timer.Bloom->SetSingleDrawSamples(SingleDraw);
   }
   timer.Bloom->SetFuseSeparablePasses(!Pairs);
-  timer.Bloom->SetFoldLastBlur(!Unfolded);
   if (Unrestricted)
   {
     timer.Bloom->GetParameters()->SetRestrictToBrightRegion(false);
@@ -810,7 +806,6 @@ bool RenderersTable(const std::string& scene, int width, int height, int frames)
     pass->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
     pass->SetUseComputeShaders(!Fragment);
     pass->SetFuseSeparablePasses(!Pairs);
-    pass->SetFoldLastBlur(!Unfolded);
     if (SingleDraw >= 0)
     {
       pass->SetSingleDrawSamples(SingleDraw);
@@ -865,7 +860,7 @@ int main(int argc, char* argv[])
     (std::strcmp(argv[1], "--fast") == 0 || std::strcmp(argv[1], "--fragment") == 0 ||
       std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0 ||
       std::strcmp(argv[1], "--pairs") == 0 || std::strcmp(argv[1], "--resolved") == 0 ||
-      std::strcmp(argv[1], "--unfolded") == 0 || std::strcmp(argv[1], "--unrestricted") == 0 ||
+      std::strcmp(argv[1], "--unrestricted") == 0 ||
       (argc > 2 && std::strcmp(argv[1], "--single-draw") == 0) ||
       (argc > 2 && std::strcmp(argv[1], "--samples") == 0)))
   {
@@ -887,10 +882,6 @@ int main(int argc, char* argv[])
     else if (std::strcmp(argv[1], "--pairs") == 0)
     {
       Pairs = true;
-    }
-    else if (std::strcmp(argv[1], "--unfolded") == 0)
-    {
-      Unfolded = true;
     }
     else if (std::strcmp(argv[1], "--unrestricted") == 0)
     {

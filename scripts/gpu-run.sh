@@ -19,8 +19,6 @@
 #                    fast mode
 #   fusion.md        the default preset's frame time and four renderers with
 #                    vtkBloomPass::FuseSeparablePasses off (BloomPassFrameTime --pairs)
-#   fold.md          the default preset's frame time with vtkBloomPass::FoldLastBlur off
-#                    (BloomPassFrameTime --unfolded)
 #   samples.md       the default preset in a window of 4 samples, each sample thresholded
 #                    (vtkBloomPass::ThresholdSamples), then after the resolve (--resolved)
 #   renderers.md     four bloomed renderers in one window (2 x 2 viewports) against the same
@@ -48,7 +46,7 @@
 #   render.png       `vtk-bloom render` of lit-spheres at 3840x2160
 #   run.log          everything printed
 #
-# STEPS (default "tests frametime renderers fusion fold samples profile quality sparse sync orbit
+# STEPS (default "tests frametime renderers fusion samples profile quality sparse sync orbit
 # selective psf stages render")
 # picks the steps. At most 8 files come back from the device tool: pick fewer steps there.
 # The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
@@ -58,7 +56,7 @@ cd "${VTKBLOOM_GPU_ROOT:-$PWD}" || exit 1
 OUT=${OUT:-$(mktemp -d)}
 mkdir -p "$OUT"
 FRAMES=${FRAMES:-50}
-STEPS=${STEPS:-tests frametime renderers fusion fold samples profile quality sparse sync orbit selective psf stages render}
+STEPS=${STEPS:-tests frametime renderers fusion samples profile quality sparse sync orbit selective psf stages render}
 PRESETS=${PRESETS:-all}
 step() { [[ " $STEPS " == *" $1 "* ]]; }
 exec > >(tee "$OUT/run.log") 2>&1
@@ -150,16 +148,6 @@ echo "== the chain's separable pairs as two passes each (FuseSeparablePasses off
     echo
   done
 } | tee "$OUT/fusion.md"
-fi
-
-if step fold; then
-echo "== the last level blurred by a pass of its own (FoldLastBlur off), to compare"
-{
-  for size in "1920 1080" "3840 2160"; do
-    timeout 300 "$bin/BloomPassFrameTime" --unfolded all $size "$FRAMES" default
-    echo
-  done
-} | tee "$OUT/fold.md"
 fi
 
 if step samples; then
