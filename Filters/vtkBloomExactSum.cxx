@@ -110,20 +110,6 @@ constexpr int BinadesPerLevel = 41;
 // The tops for which every level's sigma is a normal double far from overflow.
 constexpr int LowestTop = -880, HighestTop = 1000;
 
-template <typename V>
-VTKBLOOM_ALWAYS_INLINE auto& Lane(V& v, int q)
-{
-  if constexpr (std::is_arithmetic<V>::value)
-  {
-    (void)q;
-    return v;
-  }
-  else
-  {
-    return v[q];
-  }
-}
-
 template <int Levels>
 struct Extracted
 {
@@ -174,9 +160,10 @@ VTKBLOOM_TARGET_CLONES Extracted<Levels> Extract(const double* values, int n, in
   ExtractInto<Levels>(values + body, n - body, sigma, tail, tailRest);
   for (int k = 0; k < Levels; ++k)
   {
-    Lane(e.Sums[k], 0) += tail[k]; // the block's own q: the bound holds for any of its sums
+    // The block's own q: the bound holds for any of their sums.
+    vtkBloomLane(e.Sums[k], 0) += tail[k];
   }
-  Lane(e.Rest, 0) |= tailRest;
+  vtkBloomLane(e.Rest, 0) |= tailRest;
   return e;
 }
 
@@ -310,7 +297,7 @@ bool vtkBloomExactSum::AddExtracted(const double* values, int n, int top)
   {
     for (int q = 0; q < ExtractWidth; ++q)
     {
-      if (Lane(e.Rest, q) != 0)
+      if (vtkBloomLane(e.Rest, q) != 0)
       {
         return false;
       }
@@ -319,7 +306,7 @@ bool vtkBloomExactSum::AddExtracted(const double* values, int n, int top)
     {
       for (int q = 0; q < ExtractWidth; ++q)
       {
-        this->Add(Lane(sum, q));
+        this->Add(vtkBloomLane(sum, q));
       }
     }
     return true;

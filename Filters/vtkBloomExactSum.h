@@ -28,6 +28,7 @@
 #define vtkBloomExactSum_h
 
 #include <cstdint>
+#include <type_traits>
 
 // Loops over rows of pixels that vectorize with AVX2 (per-lane variable shifts, double lanes)
 // are compiled twice where GCC can clone a function per instruction set (ifunc, x86-64 ELF),
@@ -46,6 +47,21 @@
 #else
 #define VTKBLOOM_ALWAYS_INLINE inline
 #endif
+
+/// Lane q of a GCC vector, or the scalar itself (q ignored): one loop body for both.
+template <typename V>
+VTKBLOOM_ALWAYS_INLINE auto& vtkBloomLane(V& v, int q)
+{
+  if constexpr (std::is_arithmetic<V>::value)
+  {
+    (void)q;
+    return v;
+  }
+  else
+  {
+    return v[q];
+  }
+}
 
 class vtkBloomExactSum
 {

@@ -27,20 +27,6 @@ struct BrightTest
   double Threshold, Knee, ClampLuminance;
 };
 
-template <typename V>
-VTKBLOOM_ALWAYS_INLINE auto& Lane(V& v, int q)
-{
-  if constexpr (std::is_arithmetic<V>::value)
-  {
-    (void)q;
-    return v;
-  }
-  else
-  {
-    return v[q];
-  }
-}
-
 // L (Rec. 709 for three colours or more, else the value) and the largest colour value b of the
 // W pixels at v, as vtkBloomBrightPass computes them in double.
 template <int NC, int W, typename V>
@@ -49,11 +35,11 @@ VTKBLOOM_ALWAYS_INLINE void LoadPixels(const float* v, V& l, V& b)
   V r{}, g{}, u{};
   for (int q = 0; q < W; ++q)
   {
-    Lane(r, q) = static_cast<double>(v[q * NC]);
+    vtkBloomLane(r, q) = static_cast<double>(v[q * NC]);
     if constexpr (NC >= 3)
     {
-      Lane(g, q) = static_cast<double>(v[q * NC + 1]);
-      Lane(u, q) = static_cast<double>(v[q * NC + 2]);
+      vtkBloomLane(g, q) = static_cast<double>(v[q * NC + 1]);
+      vtkBloomLane(u, q) = static_cast<double>(v[q * NC + 2]);
     }
   }
   if constexpr (NC >= 3)
