@@ -262,6 +262,8 @@ VTKBLOOM_ALWAYS_INLINE vtkIdType MeasurePixels(const float* row, int n, double* 
                  : CountKeptEach<NC, Mode>(row, lum, bright, n, *test);
 }
 
+// The mode as a template argument. Not through vtkBloomWithThresholdMode: its lambda's body
+// would be compiled for the default target only, outside MeasureRow's AVX2 clone.
 template <int NC>
 VTKBLOOM_ALWAYS_INLINE vtkIdType MeasurePixels(const float* row, int n, double* lum, double* bright,
   RowExtremes& extremes, int mode, const BrightTest* test)
@@ -284,8 +286,7 @@ VTKBLOOM_ALWAYS_INLINE vtkIdType MeasurePixels(const float* row, int n, double* 
   }
 }
 
-// One row for every component count and mode; compiled for AVX2 too (no lambda here: a
-// lambda's body would be compiled for the default target only).
+// One row for every component count and mode; compiled for AVX2 too.
 VTKBLOOM_TARGET_CLONES
 vtkIdType MeasureRow(const float* row, int n, int nc, double* lum, double* bright,
   RowExtremes& extremes, int mode, const BrightTest* test)
