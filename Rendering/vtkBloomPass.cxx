@@ -160,6 +160,59 @@ public:
   vtkBloomPassTileFrame TileFrame; ///< the chain of the whole tiled frame
   void PlanTile(vtkBloomPass* self, vtkRenderer* r, int w, int h, vtkProp**& props, int& count);
 
+  // KEPT_FRAME_SERVE: this render is a tile of the frame that starts at ServedAt in a frame of
+  // ServedFrame's size (no guard band: its part of the kept frame is written instead).
+  bool Serving = false;
+  int ServedAt[2] = { 0, 0 };
+  int ServedFrame[2] = { 0, 0 };
+  bool ServeWarned = false; ///< no frame of the tiles' size was kept, said once
+
+  /// Where the composite goes before the framebuffer: the kept frame (KEPT_FRAME_KEEP), the
+  /// result (CaptureResult), or nowhere (nullptr); allocated at w x h here.
+  vtkBloomPassTarget* CaptureTarget(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h)
+  {
+    vtkBloomPassTarget* target = self->KeptFrameMode == KEPT_FRAME_KEEP ? &this->Resources.Kept
+      : self->CaptureResult                                             ? &this->Resources.Result
+                                                                        : nullptr;
+    if (target)
+    {
+      target->Allocate(window, w, h, GL_RGBA32F);
+    }
+    return target;
+  }
+
+  /**
+   * Steps 2 and 3 of Render(): the chain, then the composite into the framebuffer the pass was
+   * called with (at x, y), through `capture` where there is one. Pops the framebuffer bindings
+   * the scene's render pushed.
+   */
+  void Compose(vtkBloomPass* self, vtkOpenGLState* state, vtkBloomPassTarget* capture, int x, int y,
+    bool inScene, bool twoRenders);
+  /// KEPT_FRAME_SERVE: the tile's part of the kept frame into the framebuffer instead (popping
+  /// the bindings), and true; false, with nothing done, where it cannot.
+  bool ServeTile(vtkBloomPass* self, vtkOpenGLState* state, int x, int y, int w, int h);
+
+  /**
+   * KEPT_FRAME_KEEP: the kept frame becomes the framebuffer's pixels where the composite went
+   * (at x, y), which hold what was below it where the composite blends over it (a layer, or
+   * ParaView's IceT frame over transparent black); a served tile replaces its pixels with them.
+   */
+  void KeepFramebuffer(vtkOpenGLState* state, int x, int y)
+  {
+    vtkBloomPassTarget& kept = this->Resources.Kept;
+    GLint framebuffer = 0, buffer = GL_BACK;
+    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
+    glGetIntegerv(GL_DRAW_BUFFER0, &buffer);
+    state->PushFramebufferBindings();
+    state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<unsigned int>(framebuffer));
+    state->vtkglReadBuffer(static_cast<unsigned int>(buffer));
+    kept.FBO->Bind(GL_DRAW_FRAMEBUFFER);
+    kept.FBO->ActivateDrawBuffer(0);
+    glBlitFramebuffer(x, y, x + kept.Size[0], y + kept.Size[1], 0, 0, kept.Size[0], kept.Size[1],
+      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    state->PopFramebufferBindings();
+  }
+
   /**
    * The renderer culled its props against the tile's frustum, before the pass could widen it:
    * a tile with a guard band shows every visible prop instead (the camera pass's delegate
@@ -295,7 +348,13 @@ void vtkBloomPass::vtkInternals::PlanTile(
   tile.Locate(r, w, h);
   std::fill(this->Runner.CompositeWindow, this->Runner.CompositeWindow + 4, 0);
   std::fill(self->LastTileGuardBand, self->LastTileGuardBand + 2, 0);
-  if (!tile.Tiled || !self->SeamlessTiles)
+  this->Serving = tile.Tiled && self->KeptFrameMode == KEPT_FRAME_SERVE;
+  if (this->Serving)
+  {
+    std::copy(tile.GetPosition(), tile.GetPosition() + 2, this->ServedAt);
+    std::copy(tile.Frame, tile.Frame + 2, this->ServedFrame);
+  }
+  if (!tile.Tiled || !self->SeamlessTiles || this->Serving)
   {
     tile = vtkBloomPassTile();
     tile.TileSize[0] = tile.Size[0] = w;
@@ -654,10 +713,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     return;
   }
   in.PlanWhatBlooms(this, s, selective);
-  if (this->CaptureResult)
-  {
-    res.Result.Allocate(window, w, h, GL_RGBA32F);
-  }
+  vtkBloomPassTarget* capture = in.CaptureTarget(this, window, w, h);
 
   // 1. The scene (and, in one render, its emission), then any emitters on their own, in float.
   state->PushFramebufferBindings();
@@ -693,30 +749,14 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     }
   }
 
-  // 2. The chain, then 3. the composite into the framebuffer the pass was called with.
+  // 2. The chain, then 3. the composite into the framebuffer the pass was called with; for a
+  // tile of a kept frame (KeptFrameMode), that frame's part instead.
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  // In one render the emission is the scene's colour where its alpha says so.
-  in.Runner.EmissionInAlpha = inScene;
-  const bool twoRenders = selective && !inScene;
-  const bool bloom =
-    in.RunBloom(this, twoRenders ? res.Emitter.Color : res.Scene.Color, twoRenders);
-  this->LastBloomSkipped = !bloom;
-  // The composite writes the tile only (Runner.CompositeWindow): its first sample lands at the
-  // viewport's corner.
-  const int zero[2] = { -tile.Inner[0], -tile.Inner[1] };
-  const int origin[2] = { x, y };
-  const int shifted[2] = { x - tile.Inner[0], y - tile.Inner[1] };
-  if (this->CaptureResult)
+  this->LastTileFromKeptFrame = in.ServeTile(this, state, x, y, w, h);
+  if (!this->LastTileFromKeptFrame)
   {
-    in.Runner.Composite(&res.Result, zero, bloom);
-    state->PopFramebufferBindings();
-    in.Runner.Copy(nullptr, origin, res.Result);
-  }
-  else
-  {
-    state->PopFramebufferBindings();
-    in.Runner.Composite(nullptr, shifted, bloom);
+    in.Compose(this, state, capture, x, y, inScene, selective && !inScene);
   }
   // The renderer's viewport again (the scene's render had the part's, a tile with its band),
   // for what follows and reads it: the FXAA, the annotations.
@@ -738,6 +778,99 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     in.Runner.ResolveProfile();
   }
   vtkOpenGLCheckErrorMacro("failed after vtkBloomPass::Render");
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::vtkInternals::Compose(vtkBloomPass* self, vtkOpenGLState* state,
+  vtkBloomPassTarget* capture, int x, int y, bool inScene, bool twoRenders)
+{
+  vtkBloomPassResources& res = this->Resources;
+  // In one render the emission is the scene's colour where its alpha says so.
+  this->Runner.EmissionInAlpha = inScene;
+  const bool bloom =
+    this->RunBloom(self, twoRenders ? res.Emitter.Color : res.Scene.Color, twoRenders);
+  self->LastBloomSkipped = !bloom;
+  // The composite writes the tile only (Runner.CompositeWindow): its first sample lands at the
+  // viewport's corner.
+  const int zero[2] = { -this->Tile.Inner[0], -this->Tile.Inner[1] };
+  const int origin[2] = { x, y };
+  const int shifted[2] = { x - this->Tile.Inner[0], y - this->Tile.Inner[1] };
+  if (capture)
+  {
+    this->Runner.Composite(capture, zero, bloom);
+    state->PopFramebufferBindings();
+    this->Runner.Copy(nullptr, origin, *capture);
+    if (capture == &res.Kept)
+    {
+      this->KeepFramebuffer(state, x, y);
+    }
+  }
+  else
+  {
+    state->PopFramebufferBindings();
+    this->Runner.Composite(nullptr, shifted, bloom);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPass::vtkInternals::ServeTile(
+  vtkBloomPass* self, vtkOpenGLState* state, int x, int y, int w, int h)
+{
+  if (!this->Serving)
+  {
+    return false;
+  }
+  const vtkBloomPassTarget& kept = this->Resources.Kept;
+  if (!kept.FBO || kept.Size[0] != this->ServedFrame[0] || kept.Size[1] != this->ServedFrame[1])
+  {
+    if (!this->ServeWarned)
+    {
+      vtkWarningWithObjectMacro(self, << "KeptFrameMode is SERVE, but no frame of "
+                                      << this->ServedFrame[0] << " x " << this->ServedFrame[1]
+                                      << " is kept: the tile blooms alone.");
+      this->ServeWarned = true;
+    }
+    return false;
+  }
+  // The frame's sample (i, j) lands at origin + (i, j): the tile's first at the viewport's corner.
+  const int* at = this->ServedAt;
+  const int part[4] = { at[0], at[0] + w, at[1], at[1] + h };
+  const int origin[2] = { x - at[0], y - at[1] };
+  state->PopFramebufferBindings();
+  this->Runner.CompositeOver = false; // the kept pixels replace the tile's (KeepFramebuffer)
+  this->Runner.Copy(nullptr, origin, this->Resources.Kept, part);
+  self->LastBloomSkipped = false;
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::SetKeptFrameMode(int mode)
+{
+  if (mode != KEPT_FRAME_OFF && mode != KEPT_FRAME_KEEP && mode != KEPT_FRAME_SERVE)
+  {
+    vtkErrorMacro(<< "KeptFrameMode must be 0 (off), 1 (keep) or 2 (serve), not " << mode << ".");
+    return;
+  }
+  if (mode != this->KeptFrameMode)
+  {
+    this->KeptFrameMode = mode;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::ReleaseKeptFrame()
+{
+  vtkBloomPassResources& res = this->Internals->Resources;
+  res.Kept.Release(res.Context);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::GetKeptFrameSize(int size[2])
+{
+  const vtkBloomPassTarget& kept = this->Internals->Resources.Kept;
+  size[0] = kept.FBO ? kept.Size[0] : 0;
+  size[1] = kept.FBO ? kept.Size[1] : 0;
 }
 
 //------------------------------------------------------------------------------
@@ -1005,6 +1138,7 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BloomBackground: " << (this->BloomBackground ? "On" : "Off") << "\n";
   os << indent << "BloomAnnotations: " << (this->BloomAnnotations ? "On" : "Off") << "\n";
   os << indent << "SeamlessTiles: " << (this->SeamlessTiles ? "On" : "Off") << "\n";
+  os << indent << "KeptFrameMode: " << this->KeptFrameMode << "\n";
   os << indent << "LastAnnotationsOverBloom: " << (this->LastAnnotationsOverBloom ? "On" : "Off")
      << "\n";
   os << indent << "LastEmissionInSceneRender: " << (this->LastEmissionInSceneRender ? "On" : "Off")

@@ -437,6 +437,40 @@ public:
   /// (0 untiled); the scene and emission read-backs hold the tile and its band.
   vtkGetVector2Macro(LastTileGuardBand, int);
 
+  /**
+   * One bloomed frame for all the tiles of a frame larger than the window, where a tile cannot
+   * be rendered with a guard band: ParaView under IceT, which composites the window's size
+   * only, renders the frame whole first (at the window resized to it), then the tiles.
+   * - KEPT_FRAME_KEEP: a render also keeps the frame it writes: the renderer's pixels after
+   *   the composite (before the FXAA and the annotations), what lay below included where the
+   *   composite blends over it, in a float texture of the renderer's size.
+   * - KEPT_FRAME_SERVE: a render of a tile (the window's TileScale above 1) of a frame the kept
+   *   one's size writes the kept frame's part instead of blooming: no chain runs, and no guard
+   *   band is rendered, but the scene is (its delegate's render may be a collective one); the
+   *   kept pixels replace the tile's, and the FXAA and the annotations follow as in any
+   *   render. Where no frame of that size is kept, the tile blooms alone, said once.
+   * - KEPT_FRAME_OFF (the default): neither. The kept frame stays until ReleaseKeptFrame() or
+   *   ReleaseGraphicsResources(); ReadResultImage() reads only the renders that neither keep
+   *   nor serve.
+   */
+  enum KeptFrameModes
+  {
+    KEPT_FRAME_OFF = 0,
+    KEPT_FRAME_KEEP = 1,
+    KEPT_FRAME_SERVE = 2
+  };
+  ///@{
+  /// See KeptFrameModes; other values are refused with an error.
+  void SetKeptFrameMode(int mode);
+  vtkGetMacro(KeptFrameMode, int);
+  ///@}
+  /// Free the kept frame (its texture); the window's context must be current.
+  void ReleaseKeptFrame();
+  /// The kept frame's size, 0 x 0 when none is kept.
+  void GetKeptFrameSize(int size[2]);
+  /// Whether the last render wrote a part of the kept frame (KEPT_FRAME_SERVE).
+  vtkGetMacro(LastTileFromKeptFrame, bool);
+
   ///@{
   /// The shader replacement that writes the emission (vtkOpenGLRenderPass's API).
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
@@ -606,6 +640,8 @@ protected:
   bool LastAnnotationsOverBloom = false;
   bool SeamlessTiles = true;
   int LastTileGuardBand[2] = { 0, 0 };
+  int KeptFrameMode = KEPT_FRAME_OFF;
+  bool LastTileFromKeptFrame = false;
   int Quality;
   bool UseComputeShaders;
   bool SimulateComputeShaderFailure = false;

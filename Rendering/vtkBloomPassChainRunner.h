@@ -168,8 +168,12 @@ public:
    */
   void Composite(vtkBloomPassTarget* target, const int origin[2], bool bloom);
 
-  /// Copy `source` into `target`, or into the bound framebuffer at `origin` when it is null.
-  void Copy(vtkBloomPassTarget* target, const int origin[2], vtkBloomPassTarget& source);
+  /**
+   * Copy `source` into `target`, or into the bound framebuffer at `origin` when it is null; with
+   * `window` (x0 x1 y0 y1), only those samples of `source`.
+   */
+  void Copy(vtkBloomPassTarget* target, const int origin[2], vtkBloomPassTarget& source,
+    const int* window = nullptr);
 
   /**
    * PSF mode (vtkBloomParameters::BLOOM_PSF): the bright pass of `emission` at full size, with

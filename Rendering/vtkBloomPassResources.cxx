@@ -333,6 +333,7 @@ void vtkBloomPassResources::ReleaseAll(vtkWindow* w)
   this->Emitter.ReleaseAll(w);
   this->Multisample.Release(w);
   this->Result.Release(w);
+  this->Kept.Release(w);
   this->Background.Release(w);
   this->Context = nullptr;
 }

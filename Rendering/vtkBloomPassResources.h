@@ -128,6 +128,8 @@ public:
   vtkBloomPassMultisampleTarget Multisample;
   int Samples = 0;
   vtkBloomPassTarget Result;
+  /// The whole frame a render kept for the tiles served from it (vtkBloomPass::KeptFrameMode).
+  vtkBloomPassTarget Kept;
 
   /**
    * Where the composite finds the renderer's background (vtkBloomPassBackground.h): in the

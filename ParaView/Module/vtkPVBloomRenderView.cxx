@@ -1,5 +1,6 @@
 #include "vtkPVBloomRenderView.h"
 
+#include "vtkCamera.h"
 #include "vtkCuller.h"
 #include "vtkCullerCollection.h"
 #include "vtkIceTCompositePass.h"
@@ -13,6 +14,8 @@
 #include "vtkRenderWindow.h"
 #include "vtkRenderer.h"
 #include "vtkSynchronizedRenderers.h"
+
+#include <cmath>
 
 vtkStandardNewMacro(vtkPVBloomRenderView);
 
@@ -141,6 +144,85 @@ bool vtkPVBloomRenderView::TiledInParallel()
 }
 
 //------------------------------------------------------------------------------
+bool vtkPVBloomRenderView::TilesFromWholeFrame()
+{
+  // The whole frame's camera is the first tile's, undone (RenderWholeFrame): this process's
+  // camera must be the one the tiles are rendered with, as in pvbatch and Catalyst, where the
+  // root's camera is the script's; a server's comes from its client during each render. The
+  // view's renderer fills the window, as vtkWindowToImageFilter's camera shift assumes here.
+  const double* viewport = this->GetRenderer()->GetViewport();
+  return this->TiledInParallel() &&
+    vtkProcessModule::GetProcessType() == vtkProcessModule::PROCESS_BATCH && viewport[0] == 0.0 &&
+    viewport[1] == 0.0 && viewport[2] == 1.0 && viewport[3] == 1.0;
+}
+
+//------------------------------------------------------------------------------
+void vtkPVBloomRenderView::Render(bool interactive, bool skip_rendering)
+{
+  // Every rank takes the same branch: the window's tiling (ParaView sets it on every rank before
+  // the render), the view's properties and the process type agree across ranks.
+  const bool served = this->UseBloom && !interactive && !skip_rendering &&
+    !this->GetMakingSelection() && this->TilesFromWholeFrame();
+  double tile[4] = { 0.0, 0.0, 1.0, 1.0 };
+  this->GetRenderWindow()->GetTileViewport(tile);
+  if (served && tile[0] == 0.0 && tile[1] == 0.0)
+  {
+    this->RenderWholeFrame(interactive);
+  }
+  this->BloomPass->SetKeptFrameMode(
+    served ? vtkBloomPass::KEPT_FRAME_SERVE : vtkBloomPass::KEPT_FRAME_OFF);
+  this->Superclass::Render(interactive, skip_rendering);
+  // The last tile (vtkWindowToImageFilter renders the top right one last), or any other render:
+  // the kept frame goes.
+  const bool last = tile[2] >= 1.0 - 1e-9 && tile[3] >= 1.0 - 1e-9;
+  if (!skip_rendering && (!served || last))
+  {
+    this->BloomPass->ReleaseKeptFrame();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkPVBloomRenderView::RenderWholeFrame(bool interactive)
+{
+  vtkRenderWindow* window = this->GetRenderWindow();
+  int scale[2] = { 1, 1 };
+  window->GetTileScale(scale);
+  double tile[4];
+  window->GetTileViewport(tile);
+  const int size[2] = { window->GetActualSize()[0], window->GetActualSize()[1] };
+  // vtkWindowToImageFilter shifted and narrowed the camera for the first tile (the lower left
+  // one, in a renderer that fills the window): window centre + (1 - scale), view angle
+  // 2 atan(tan(angle / 2) / scale y), parallel scale / scale y. Undone, it is the frame's.
+  vtkCamera* camera = this->GetActiveCamera();
+  double centre[2];
+  camera->GetWindowCenter(centre);
+  const double angle = camera->GetViewAngle();
+  const double parallel = camera->GetParallelScale();
+  const double radians = angle * std::acos(-1.0) / 180.0;
+  camera->SetWindowCenter(centre[0] - (1.0 - scale[0]), centre[1] - (1.0 - scale[1]));
+  camera->SetViewAngle(
+    2.0 * std::atan(std::tan(radians / 2.0) * scale[1]) * 180.0 / std::acos(-1.0));
+  camera->SetParallelScale(parallel * scale[1]);
+  window->SetTileScale(1, 1);
+  window->SetTileViewport(0.0, 0.0, 1.0, 1.0);
+  window->SetSize(size[0] * scale[0], size[1] * scale[1]);
+  // The root keeps the frame its bloom writes (the composite, before FXAA and annotations);
+  // IceT composites it in float, as a view of that size would be. IceT's float composite of
+  // the first render after the window grows is empty (ParaView 5.11, every rank's own render
+  // being whole), as a view resized and rendered once shows: the frame is rendered twice.
+  this->BloomPass->SetKeptFrameMode(vtkBloomPass::KEPT_FRAME_OFF);
+  this->Superclass::Render(interactive, false);
+  this->BloomPass->SetKeptFrameMode(vtkBloomPass::KEPT_FRAME_KEEP);
+  this->Superclass::Render(interactive, false);
+  window->SetSize(size[0], size[1]);
+  window->SetTileViewport(tile);
+  window->SetTileScale(scale);
+  camera->SetWindowCenter(centre[0], centre[1]);
+  camera->SetViewAngle(angle);
+  camera->SetParallelScale(parallel);
+}
+
+//------------------------------------------------------------------------------
 void vtkPVBloomRenderView::UpdateFloatComposite()
 {
   vtkPVSynchronizedRenderer* sync = this->SynchronizedRenderers;
@@ -148,13 +230,16 @@ void vtkPVBloomRenderView::UpdateFloatComposite()
   vtkIceTCompositePass* composite = icet ? icet->GetIceTCompositePass() : nullptr;
   vtkRenderPass* current = sync->GetRenderPass();
   // Only where no other render pass (OSPRay, ANARI, value rendering) holds IceT's slot, in
-  // pvbatch and in a server (whose client gets the frame the bloom wrote, below).
+  // pvbatch and in a server (whose client gets the frame the bloom wrote, below). The tiles
+  // served from a whole frame (Render) composite float too: what follows the bloom is then
+  // what follows it in the whole frame's render (no 8-bit image pasted over it).
   const int process = vtkProcessModule::GetProcessType();
   const bool batchOrServer = process == vtkProcessModule::PROCESS_BATCH ||
     process == vtkProcessModule::PROCESS_SERVER ||
     process == vtkProcessModule::PROCESS_RENDER_SERVER;
   const bool use = composite && this->UseBloom && this->CompositeFloatColor &&
-    !this->GetMakingSelection() && !this->InTileDisplayMode() && !this->TiledInParallel() &&
+    !this->GetMakingSelection() && !this->InTileDisplayMode() &&
+    (!this->TiledInParallel() || this->TilesFromWholeFrame()) &&
     composite->GetImageReductionFactor() <= 1 && batchOrServer &&
     (current == nullptr || current == this->CompositeScenePass);
   this->SendBloomedFrame(use ? icet : nullptr);
@@ -228,17 +313,18 @@ void vtkPVBloomRenderView::AboutToRenderOnLocalProcess(bool interactive)
   vtkPVSynchronizedRenderer* sync = this->SynchronizedRenderers;
   // A screenshot larger than the view renders in tiles, and blooms as one frame where this
   // process renders the whole scene (vtkBloomPass::SeamlessTiles). Under IceT the ranks render
-  // the tile with its own camera and IceT composites the window's size only, so a tile would
-  // bloom alone: such a screenshot is refused (rendered without bloom, said once).
+  // the tile with its own camera and IceT composites the window's size only: in pvbatch and
+  // Catalyst each tile is served from the whole frame (Render); a parallel server's tile would
+  // bloom alone, and is refused (rendered without bloom, said once).
   const bool parallel =
     vtkIceTSynchronizedRenderers::SafeDownCast(sync->GetParallelSynchronizer()) != nullptr;
-  const bool tiledInParallel = this->TiledInParallel();
+  const bool tiledInParallel = this->TiledInParallel() && !this->TilesFromWholeFrame();
   if (tiledInParallel && this->UseBloom && !this->TiledScreenshotRefused &&
     this->LocalProcessDisplaysImage())
   {
-    vtkWarningMacro(<< "Bloom is off for a screenshot larger than the view under MPI: IceT "
-                    << "composites it tile by tile, and each tile would bloom alone. Resize "
-                    << "the view to the screenshot's size instead.");
+    vtkWarningMacro(<< "Bloom is off for a screenshot larger than the view on a parallel "
+                    << "server: IceT composites it tile by tile, and each tile would bloom "
+                    << "alone. Resize the view to the screenshot's size instead.");
     this->TiledScreenshotRefused = true;
   }
   this->CullWholeFrame(!parallel && this->UseBloom);

@@ -28,8 +28,12 @@
  * Screenshots larger than the view render in tiles; where this process renders the whole scene
  * (no IceT), each tile blooms with the whole frame's chain and a guard band
  * (vtkBloomPass::SeamlessTiles), and the renderer culls nothing while the window is tiled, so
- * the screenshot has no seams. Under IceT (several ranks) IceT composites one tile at a time,
- * and a tile would bloom alone: such a screenshot renders without bloom, with one warning.
+ * the screenshot has no seams. Under IceT (several ranks) IceT composites the window's size, one
+ * tile at a time, so a tile cannot have a guard band: in pvbatch and Catalyst, at the first
+ * tile every rank renders the whole frame once, at the window resized to it, and the root keeps
+ * its bloomed frame; each tile then writes its part of it (vtkBloomPass::KeptFrameMode). A
+ * parallel server cannot (its client drives the camera, render by render): there such a
+ * screenshot renders without bloom, with one warning.
  *
  * With ParaView's tone mapping on (UseToneMapping), the tone mapping pass stays outermost and
  * bloom becomes its delegate: bloom in linear HDR, then tone mapping. During a selection
@@ -107,6 +111,11 @@ protected:
   /// Insert or remove the pass before each render on a process that renders.
   void AboutToRenderOnLocalProcess(bool interactive) override;
 
+  /// At the first tile of a screenshot in tiles under IceT, the whole frame first (every rank).
+  void Render(bool interactive, bool skip_rendering) override;
+  /// On every rank: the window resized to the whole tiled frame, its render, and back.
+  void RenderWholeFrame(bool interactive);
+
   /// Whether this process shows the image that the bloom must process.
   bool LocalProcessDisplaysImage();
   /// FXAA once, as in the view without bloom (see the implementation).
@@ -118,6 +127,8 @@ protected:
 
   /// Whether the coming render is a tile of a screenshot larger than the view, under IceT.
   bool TiledInParallel();
+  /// Whether such tiles are served from a whole frame here (pvbatch, Catalyst: see Render).
+  bool TilesFromWholeFrame();
   /// On every rank: IceT's render pass and colour format for the coming render.
   void UpdateFloatComposite();
   /// A server's root sends its client the bloomed frame, not IceT's 8-bit composite, while

@@ -50,7 +50,9 @@ light.Intensity = 6.0
 
 show_spheres(view, [0.02, 0.025, 0.075], lit=True)
 Render(view)
-SaveScreenshot(out, view, ImageResolution=[400, 300])
+# VTKBLOOM_SCREENSHOT_SCALE=k: the screenshot at k times the view's size (rendered in tiles).
+scale = int(os.environ.get('VTKBLOOM_SCREENSHOT_SCALE', '1'))
+SaveScreenshot(out, view, ImageResolution=[400 * scale, 300 * scale])
 view.UpdatePropertyInformation()
 composited = view.GetProperty('BloomLastSceneWasComposited').GetData()
 with open(out + '.txt', 'w') as f:

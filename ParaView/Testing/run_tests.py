@@ -17,6 +17,8 @@ number of failed checks. Run by scripts/test.sh (the ParaView leg).
    image Data/bloom-view.png the same way.
 4c. Screenshots larger than the view (rendered by ParaView in tiles) at 2x and 4x equal the view
    resized to that size, bloom terms within 1 % relative L2, with no seam at the tile edges.
+4d. The same on 3 ranks, where IceT composites one tile at a time (the view renders the whole
+   frame first and serves the tiles from it), with no warning.
 5. HDR under MPI: bloom_view_hdr.py's scene reaches 6 and blooms only above 1. With 3 ranks
    and IceT compositing float colour (the view's BloomCompositeFloatColor) the image equals
    the serial one within 1e-3 relative L2; with IceT's 8-bit composite it does not. The same
@@ -290,34 +292,37 @@ def seam(term, covered, tile):
     return worst
 
 
-prefix = os.path.join(out, 'scale-1080')
-if os.path.exists(prefix + '-bloom-tiled4.png'):
+def tiled_as_resized(prefix, where, reference):
     for scale in (2, 4):
-        plain = load_rgb('%s-plain-%d.png' % (prefix, scale))
-        resized = load_rgb('%s-bloom-%d.png' % (prefix, scale)) - plain
+        plain = load_rgb('%s-plain-%d.png' % (reference, scale))
+        resized = load_rgb('%s-bloom-%d.png' % (reference, scale)) - plain
         tiled = load_rgb('%s-bloom-tiled%d.png' % (prefix, scale)) - \
             load_rgb('%s-plain-tiled%d.png' % (prefix, scale))
         covered = np.abs(plain - plain[0, 0]).max(axis=-1) > 0
         error = relative_l2(tiled, resized)
         seams = seam(tiled, covered, (360, 480)), seam(resized, covered, (360, 480))
         check(error < 0.01 and seams[0] <= seams[1] + 1,
-              'a %dx screenshot in tiles equals the resized view: bloom term %.2e relative L2, '
-              'largest step at a tile edge %g levels over its neighbours (%g in the resized view)'
-              % (scale, error, seams[0], seams[1]))
+              '%s, a %dx screenshot in tiles equals the resized view: bloom term %.2e relative '
+              'L2, largest step at a tile edge %g levels over its neighbours (%g in the resized '
+              'view)' % (where, scale, error, seams[0], seams[1]))
 
-# 4d. Under MPI, IceT composites a tiled screenshot one tile at a time: the view refuses to
-# bloom it (each tile would bloom alone) with one warning, and saves the plain frame.
+
+prefix = os.path.join(out, 'scale-1080')
+if os.path.exists(prefix + '-bloom-tiled4.png'):
+    tiled_as_resized(prefix, '1 rank', prefix)
+
+# 4d. Under MPI, IceT composites the window's size, a tile at a time: at the first tile every
+# rank renders the whole frame at the window resized to it, and each tile is the root's bloomed
+# frame's part. The 3-rank tiled screenshots equal the 3-rank resized view as 4c's serial ones
+# do, with no warning. (With FXAA on, as here, a 3-rank view differs from serial's at the props'
+# edges, where ParaView's FXAA reaches IceT's float composite another way: docs/paraview.md.)
 prefix3 = os.path.join(out, 'scale-3ranks')
 status, log = pvbatch(3, 'bloom_view_scale.py', prefix3, '1080', '1')
+check(status == 0, 'bloom_view_scale.py on 3 ranks (exit %d)' % status)
 if status == 0:
-    refused = log.count('Bloom is off for a screenshot larger than the view under MPI')
-    worst = max(float(np.abs(load_rgb('%s-bloom-tiled%d.png' % (prefix3, k)) -
-                             load_rgb('%s-plain-tiled%d.png' % (prefix3, k))).max()) for k in (2, 4))
-    check(refused == 1 and worst == 0,
-          'a tiled screenshot under MPI renders without bloom, with one warning (%d warning(s), '
-          'max %g levels off the plain frame)' % (refused, worst))
-else:
-    check(False, 'bloom_view_scale.py on 3 ranks (exit %d)' % status)
+    tiled_as_resized(prefix3, '3 ranks', prefix3)
+    refused = log.count('Bloom is off for a screenshot larger than the view')
+    check(refused == 0, 'a tiled screenshot under MPI blooms without a warning (%d)' % refused)
 
 # 5. HDR under MPI: 3 ranks composite float colour through IceT and bloom as serial does.
 hdr = {}
@@ -387,10 +392,21 @@ if (1, 1, 1) in hdr:
     check(status == 0 and warnings == 1,
           'a tile display renders without bloom, with one warning (exit %d, %d warning(s))'
           % (status, warnings))
+    # A screenshot in tiles from a 3-rank server: its client drives the camera render by render,
+    # so the server cannot render the whole frame first: refused with one warning.
+    server_log = os.path.join(out, 'tiled-server.log')
+    png = os.path.join(out, 'client-server-tiled.png')
+    status, log = pvserver(3, 'bloom_view_hdr.py', png, env={
+        'VTKBLOOM_SCREENSHOT_SCALE': '2', 'VTKBLOOM_PVSERVER_LOG': server_log})
+    warnings = open(server_log).read().count('Bloom is off for a screenshot larger than the view') \
+        if os.path.exists(server_log) else -1
+    check(status == 0 and warnings == 1,
+          'a screenshot in tiles from a 3-rank server renders without bloom, with one warning '
+          '(exit %d, %d warning(s))' % (status, warnings))
 
 # 5c. In situ: bloom_catalyst.py, run by the wavelet mini-app under pvbatch --sym, writes a
 # bloomed PNG per step at twice the view's size (tiled), each the step rendered by pvbatch from
-# the mini-app's own data; at the view's size, 3 ranks write serial's images.
+# the mini-app's own data; 3 ranks write serial's images.
 def catalyst(ranks, folder, size='image'):
     return pvbatch(ranks, '--sym', '-m', 'paraview.demos.wavelet_miniapp', '-t', '3', '--size',
                    '101', '--script-version', '2', '-s', os.path.join(here, 'bloom_catalyst.py'),
@@ -414,20 +430,22 @@ else:
         check(max(errors) < 2e-2 and lit > 0.1,
               'in situ against pvbatch on the mini-app\'s own data, 640x480 from a 320x240 view: '
               'relative L2 %s (steps differ by %.2f)' % (', '.join('%.1e' % e for e in errors), lit))
-    status1, _ = catalyst(1, os.path.join(insitu, 'view-1'), 'view')
-    status3, _ = catalyst(3, os.path.join(insitu, 'view-3'), 'view')
-    pairs = [[os.path.join(insitu, 'view-%d' % n, 'bloom_%02d.png' % k) for n in (1, 3)]
+    # 3 ranks, the same 640x480 images in tiles (IceT: the whole frame first, see 4d).
+    status3, log3 = catalyst(3, os.path.join(insitu, 'ranks-3'))
+    pairs = [[os.path.join(insitu, d, 'bloom_%02d.png' % k) for d in ('serial', 'ranks-3')]
              for k in range(3)]
-    if status1 == 0 and status3 == 0 and all(os.path.exists(p) for q in pairs for p in q):
+    if status == 0 and status3 == 0 and all(os.path.exists(p) for q in pairs for p in q):
         # Within one level, but for the odd pixel where the ranks' isosurface pieces meet.
         apart = [np.abs(load_png(a) - load_png(b)).max(axis=-1) for a, b in pairs]
         off = sum(int((d > 1).sum()) for d in apart)
-        check(off <= 8, 'in situ on 3 ranks equals serial at the view\'s size within one level '
-              'but for %d of %d pixels (bound 8; max %g levels)'
-              % (off, sum(d.size for d in apart), max(float(d.max()) for d in apart)))
+        refused = log3.count('Bloom is off')
+        check(off <= 8 and refused == 0,
+              'in situ on 3 ranks equals serial at 640x480 (tiled) within one level but for %d '
+              'of %d pixels (bound 8; max %g levels; %d warning(s))'
+              % (off, sum(d.size for d in apart), max(float(d.max()) for d in apart), refused))
     else:
-        check(False, 'Catalyst at the view\'s size, serial (exit %d) and 3 ranks (exit %d)'
-              % (status1, status3))
+        check(False, 'Catalyst at 640x480, serial (exit %d) and 3 ranks (exit %d)'
+              % (status, status3))
 
 # 6. Light, not the frame: the figure blooms only its lamp, the annotations stay above the glow.
 light = os.path.join(out, 'light')

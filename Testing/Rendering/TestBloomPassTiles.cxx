@@ -11,8 +11,10 @@
 #include "vtkBloomPassThroughRenderer.h"
 
 #include "vtkActor.h"
+#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
+#include "vtkCommand.h"
 #include "vtkDataArray.h"
 #include "vtkDefaultPass.h"
 #include "vtkImageData.h"
@@ -285,4 +287,118 @@ TEST(RenderingBloomPassTiles, ADelegatevtkBloomPassThroughRendererTilesAsTheFram
   const double seamless = RelativeL2(tiled, reference);
   std::printf("through the renderer, scale 2: %.4f relative L2\n", seamless);
   EXPECT_LT(seamless, 0.01);
+}
+
+//------------------------------------------------------------------------------
+namespace
+{
+// The window's frame, as vtkWindowToImageFilter reads it at `scale` times the window's size.
+Frame Grab(vtkRenderWindow* window, int scale)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetScale(scale);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkImageData* image = grab->GetOutput();
+  Frame frame;
+  frame.Width = image->GetDimensions()[0];
+  frame.Height = image->GetDimensions()[1];
+  vtkDataArray* rgb = image->GetPointData()->GetScalars();
+  for (vtkIdType p = 0; p < rgb->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      frame.Values.push_back(rgb->GetComponent(p, c));
+    }
+  }
+  return frame;
+}
+
+double LargestDifference(const Frame& a, const Frame& b)
+{
+  double largest = a.Values.size() == b.Values.size() ? 0.0 : 1e30;
+  for (size_t k = 0; k < a.Values.size() && k < b.Values.size(); ++k)
+  {
+    largest = std::max(largest, std::abs(a.Values[k] - b.Values[k]));
+  }
+  return largest;
+}
+}
+
+//------------------------------------------------------------------------------
+// ParaView's way under IceT (vtkPVBloomRenderView), where a tile cannot have a guard band: the
+// frame rendered whole at the window resized to it and kept (KEPT_FRAME_KEEP), then the tiles
+// at the window's size served from it (KEPT_FRAME_SERVE), with SeamlessTiles off as under IceT.
+// The tiled frame is the whole one, byte for byte; served from a kept frame of another size, a
+// tile blooms alone (and says so): the check can fail.
+TEST(RenderingBloomPassTiles, TilesServedFromAKeptFrameAreThatFrame)
+{
+  const int w = 160, h = 120;
+  for (int scale : { 2, 3 })
+  {
+    SCOPED_TRACE(scale);
+    vtkNew<vtkRenderWindow> window;
+    window->SetOffScreenRendering(1);
+    window->SetMultiSamples(0);
+    vtkNew<vtkRenderer> renderer;
+    const double dark[3] = { 0.05, 0.05, 0.08 };
+    Populate(renderer, dark);
+    vtkNew<vtkBloomPass> pass;
+    vtkNew<vtkRenderStepsPass> steps;
+    pass->SetDelegatePass(steps);
+    pass->SetSeamlessTiles(false);
+    renderer->SetPass(pass);
+    window->AddRenderer(renderer);
+
+    window->SetSize(w * scale, h * scale);
+    pass->SetKeptFrameMode(vtkBloomPass::KEPT_FRAME_KEEP);
+    window->Render();
+    const Frame whole = Grab(window, 1);
+    int kept[2];
+    pass->GetKeptFrameSize(kept);
+    EXPECT_EQ(kept[0], w * scale);
+    EXPECT_EQ(kept[1], h * scale);
+
+    window->SetSize(w, h);
+    pass->SetKeptFrameMode(vtkBloomPass::KEPT_FRAME_SERVE);
+    const Frame served = Grab(window, scale);
+    EXPECT_TRUE(pass->GetLastTileFromKeptFrame());
+    const double off = LargestDifference(served, whole);
+    std::printf("scale %d: tiles served from the kept frame, %g levels off it\n", scale, off);
+    EXPECT_EQ(off, 0.0);
+
+    // A frame of another size kept: the tiles bloom alone, and the pass says so once.
+    int warnings = 0;
+    vtkNew<vtkCallbackCommand> count;
+    count->SetClientData(&warnings);
+    count->SetCallback(
+      [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+    pass->AddObserver(vtkCommand::WarningEvent, count);
+    window->SetSize(w + 1, h);
+    const Frame alone = Grab(window, scale);
+    EXPECT_EQ(alone.Width, (w + 1) * scale);
+    EXPECT_FALSE(pass->GetLastTileFromKeptFrame());
+    EXPECT_EQ(warnings, 1);
+    pass->ReleaseKeptFrame();
+    pass->GetKeptFrameSize(kept);
+    EXPECT_EQ(kept[0], 0);
+    pass->ReleaseGraphicsResources(window);
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassTiles, AnUnknownKeptFrameModeIsRefused)
+{
+  vtkNew<vtkBloomPass> pass;
+  int errors = 0;
+  vtkNew<vtkCallbackCommand> count;
+  count->SetClientData(&errors);
+  count->SetCallback(
+    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+  pass->AddObserver(vtkCommand::ErrorEvent, count);
+  pass->SetKeptFrameMode(3);
+  pass->SetKeptFrameMode(-1);
+  EXPECT_EQ(errors, 2);
+  EXPECT_EQ(pass->GetKeptFrameMode(), vtkBloomPass::KEPT_FRAME_OFF);
 }
