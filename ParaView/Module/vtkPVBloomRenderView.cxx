@@ -207,11 +207,7 @@ void vtkPVBloomRenderView::RenderWholeFrame(bool interactive)
   window->SetTileViewport(0.0, 0.0, 1.0, 1.0);
   window->SetSize(size[0] * scale[0], size[1] * scale[1]);
   // The root keeps the frame its bloom writes (the composite, before FXAA and annotations);
-  // IceT composites it in float, as a view of that size would be. IceT's float composite of
-  // the first render after the window grows is empty (ParaView 5.11, every rank's own render
-  // being whole), as a view resized and rendered once shows: the frame is rendered twice.
-  this->BloomPass->SetKeptFrameMode(vtkBloomPass::KEPT_FRAME_OFF);
-  this->Superclass::Render(interactive, false);
+  // IceT composites it in float, as a view of that size would be.
   this->BloomPass->SetKeptFrameMode(vtkBloomPass::KEPT_FRAME_KEEP);
   this->Superclass::Render(interactive, false);
   window->SetSize(size[0], size[1]);

@@ -50,6 +50,11 @@ light.Intensity = 6.0
 
 show_spheres(view, [0.02, 0.025, 0.075], lit=True)
 Render(view)
+if os.environ.get('VTKBLOOM_RESIZE_ONCE'):
+    # Rendered at another size, then resized: the screenshot is the one render at 400x300.
+    view.ViewSize = [320, 240]
+    Render(view)
+    view.ViewSize = [400, 300]
 # VTKBLOOM_SCREENSHOT_SCALE=k: the screenshot at k times the view's size (rendered in tiles).
 scale = int(os.environ.get('VTKBLOOM_SCREENSHOT_SCALE', '1'))
 SaveScreenshot(out, view, ImageResolution=[400 * scale, 300 * scale])

@@ -351,6 +351,13 @@ if len(hdr) == 4:
     clamped = relative_l2(clamped_hdr, serial_hdr)
     check(clamped > 0.1, 'IceT\'s 8-bit composite loses the HDR bloom (against serial: %.2e)'
           % clamped)
+    # The first render after the window's size changed: ParaView makes the float framebuffer
+    # again there (vtkPVBloomCompositeScenePass keeps the depth test on).
+    png = os.path.join(out, 'hdr-3-resized-once.png')
+    status, log = pvbatch(3, 'bloom_view_hdr.py', png, env={'VTKBLOOM_RESIZE_ONCE': '1'})
+    error = relative_l2(load_png(png), serial_hdr) if status == 0 else -1.0
+    check(0 <= error <= 1e-3, 'HDR view on 3 ranks, resized and rendered once: relative L2 %.2e '
+          'against serial (exit %d)' % (error, status))
 
 # 5b. Client-server: a pvpython client against a pvserver of 1 and 3 ranks (loopback only,
 # remote rendering forced) gets the serial pvbatch image of the HDR view within one level: the
