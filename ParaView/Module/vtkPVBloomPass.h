@@ -7,8 +7,9 @@
  * vtkPVBloomCompositeScenePass), the scene the chain reads is the composited RGBA32F image,
  * blended over the view's background (SetCompositeBackground) as ParaView blends its 8-bit
  * composite: colour + (1 - alpha) * background. HDR values above 1
- * thus bloom under MPI as they do in serial. Without a composite pass, or where IceT gave no
- * float image of the target's size on this process, it is vtkBloomPass.
+ * thus bloom under MPI as they do in serial; an interactive render's reduced composite (an image
+ * reduction factor) is enlarged to the frame, as ParaView enlarges its 8-bit one. Without a
+ * composite pass, or where IceT gave no float image on this process, it is vtkBloomPass.
  */
 #ifndef vtkPVBloomPass_h
 #define vtkPVBloomPass_h
@@ -43,6 +44,9 @@ protected:
   ~vtkPVBloomPass() override;
 
   void SceneRendered(const vtkRenderState* s, vtkTextureObject* sceneColor) override;
+  /// `image` (size[0] x size[1] RGBA) enlarged to width x height in Pixels, each pixel the
+  /// sample under its centre; returns Pixels.
+  const float* Enlarge(const float* image, const int size[2], int width, int height);
 
   vtkWeakPointer<vtkIceTCompositePass> CompositePass;
   bool LastSceneWasComposited = false;

@@ -235,8 +235,7 @@ void vtkPVBloomRenderView::UpdateFloatComposite()
     process == vtkProcessModule::PROCESS_RENDER_SERVER;
   const bool use = composite && this->UseBloom && this->CompositeFloatColor &&
     !this->GetMakingSelection() && !this->InTileDisplayMode() &&
-    (!this->TiledInParallel() || this->TilesFromWholeFrame()) &&
-    composite->GetImageReductionFactor() <= 1 && batchOrServer &&
+    (!this->TiledInParallel() || this->TilesFromWholeFrame()) && batchOrServer &&
     (current == nullptr || current == this->CompositeScenePass);
   this->SendBloomedFrame(use ? icet : nullptr);
   if (use)

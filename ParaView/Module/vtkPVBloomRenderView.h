@@ -22,8 +22,9 @@
  *   server's: over transparent black, which its client blends over its own background): the
  *   bloom under MPI is the serial one. IceT then leaves no 8-bit image; a server's root sends
  *   its client the frame the bloom wrote instead (a capture relay in the client-server
- *   synchronizer, which still drives IceT). Interactive renders with an image reduction factor
- *   above 1 and selection renders keep the 8-bit composite.
+ *   synchronizer, which still drives IceT). An interactive render with an image reduction
+ *   factor composites float colour at the reduced size, enlarged to the frame before the bloom
+ *   (vtkPVBloomPass); selection renders keep the 8-bit composite.
  *
  * Screenshots larger than the view render in tiles; where this process renders the whole scene
  * (no IceT), each tile blooms with the whole frame's chain and a guard band

@@ -19,7 +19,8 @@ number of failed checks. Run by scripts/test.sh (the ParaView leg).
    resized to that size, bloom terms within 1 % relative L2, with no seam at the tile edges.
 4d. The same on 3 ranks, where IceT composites one tile at a time (the view renders the whole
    frame first and serves the tiles from it), with no warning.
-5. HDR under MPI: bloom_view_hdr.py's scene reaches 6 and blooms only above 1. With 3 ranks
+5. HDR under MPI: bloom_view_hdr.py's scene reaches 6 and blooms only above 1 (5a: also in an
+   interactive render with an image reduction factor, bloom_view_reduced.py). With 3 ranks
    and IceT compositing float colour (the view's BloomCompositeFloatColor) the image equals
    the serial one within 1e-3 relative L2; with IceT's 8-bit composite it does not. The same
    script as a pvpython client of a pvserver with 1 and 3 ranks (scripts/pvserver.sh, loopback
@@ -358,6 +359,27 @@ if len(hdr) == 4:
     error = relative_l2(load_png(png), serial_hdr) if status == 0 else -1.0
     check(0 <= error <= 1e-3, 'HDR view on 3 ranks, resized and rendered once: relative L2 %.2e '
           'against serial (exit %d)' % (error, status))
+
+# 5a. An interactive render with an image reduction factor of 2 on 3 ranks: IceT composites
+# float colour at half the size, enlarged to the frame before the bloom, so the light above 1
+# still glows while the camera moves (before: the 8-bit composite, no glow at all), and the glow
+# outside the props is the still render's within 5 % (relative L2 and energy).
+reduced = os.path.join(out, 'reduced')
+status, log = pvbatch(3, 'bloom_view_reduced.py', reduced)
+check(status == 0, 'bloom_view_reduced.py on 3 ranks (exit %d)' % status)
+if status == 0:
+    still, moving = (load_rgb('%s-%s.png' % (reduced, n)) for n in ('still', 'interactive'))
+    still_plain, moving_plain = (load_rgb('%s-%s-plain.png' % (reduced, n))
+                                 for n in ('still', 'interactive'))
+    background = still_plain[0, 0]
+    free = ~((np.abs(still_plain - background).max(axis=-1) > 0) |
+             (np.abs(moving_plain - background).max(axis=-1) > 0))
+    glow, reference = (moving - moving_plain)[free], (still - still_plain)[free]
+    error = relative_l2(glow, reference)
+    energy = float(glow.sum() / max(reference.sum(), 1e-30))
+    check(error < 0.05 and abs(energy - 1) < 0.05,
+          'interactive render at half size: the glow outside the props is the still one\'s '
+          'within %.2e relative L2, energy ratio %.3f' % (error, energy))
 
 # 5b. Client-server: a pvpython client against a pvserver of 1 and 3 ranks (loopback only,
 # remote rendering forced) gets the serial pvbatch image of the HDR view within one level: the
