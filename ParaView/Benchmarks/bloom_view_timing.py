@@ -15,10 +15,10 @@ import os
 import sys
 import time
 
-from paraview.simple import AddLight, CreateView, GetActiveCamera, Render  # noqa: F401
+from paraview.simple import GetActiveCamera, Render  # noqa: F401
 
 sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), '..', 'Testing'))
-from spheres_scene import show_spheres  # noqa: E402
+from spheres_scene import hdr_view  # noqa: E402
 
 width, height, frames = int(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3])
 try:
@@ -27,21 +27,7 @@ try:
 except ImportError:
     ranks = int(os.environ.get('OMPI_COMM_WORLD_SIZE', '1'))
 
-view = CreateView('BloomRenderView')
-view.ViewSize = [width, height]
-view.OrientationAxesVisibility = 0
-view.UseFXAA = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.2, 0.2, 0.25]
-view.BloomThreshold = 1.0
-view.BloomKnee = 0.0
-view.BloomStrength = 0.5
-view.UseLight = 0
-light = AddLight(view=view)
-light.Coords = 'Headlight'
-light.Intensity = 6.0
-show_spheres(view, [0.02, 0.025, 0.075], lit=True)
-
+view = hdr_view([width, height])
 
 def percentile(values, q):
     ordered = sorted(values)

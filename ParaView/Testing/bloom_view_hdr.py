@@ -21,7 +21,7 @@ import sys
 from paraview.simple import *  # noqa: F403
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from spheres_scene import show_spheres  # noqa: E402
+from spheres_scene import hdr_view  # noqa: E402
 
 if sys.argv[1] == '--server':
     Connect('localhost', int(sys.argv[2]))
@@ -31,24 +31,10 @@ out = sys.argv[1]
 float_composite = int(sys.argv[2]) if len(sys.argv) > 2 else 1
 use_bloom = int(sys.argv[3]) if len(sys.argv) > 3 else 1
 
-view = CreateView('BloomRenderView')
-view.ViewSize = [400, 300]
-view.OrientationAxesVisibility = 0
-view.UseFXAA = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.2, 0.2, 0.25]
+view = hdr_view([400, 300])
 view.UseBloom = use_bloom
-view.BloomThreshold = 1.0
-view.BloomKnee = 0.0
-view.BloomStrength = 0.5
 view.BloomCompositeFloatColor = float_composite
 view.BloomFloatPrecision = 32
-view.UseLight = 0          # no light kit: the headlight alone
-light = AddLight(view=view)
-light.Coords = 'Headlight'
-light.Intensity = 6.0
-
-show_spheres(view, [0.02, 0.025, 0.075], lit=True)
 Render(view)
 if os.environ.get('VTKBLOOM_RESIZE_ONCE'):
     # Rendered at another size, then resized: the screenshot is the one render at 400x300.

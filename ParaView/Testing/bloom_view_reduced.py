@@ -16,30 +16,16 @@ from vtkmodules.vtkIOImage import vtkPNGWriter
 from vtkmodules.vtkRenderingCore import vtkWindowToImageFilter
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from spheres_scene import show_spheres  # noqa: E402
+from spheres_scene import hdr_view  # noqa: E402
 
 prefix = sys.argv[1]
 float_composite = int(sys.argv[2]) if len(sys.argv) > 2 else 1
 
-view = CreateView('BloomRenderView')
-view.ViewSize = [400, 300]
-view.OrientationAxesVisibility = 0
-view.UseFXAA = 0
-view.UseColorPaletteForBackground = 0
-view.Background = [0.2, 0.2, 0.25]
-view.BloomThreshold = 1.0
-view.BloomKnee = 0.0
-view.BloomStrength = 0.5
+view = hdr_view([400, 300])
 view.BloomCompositeFloatColor = float_composite
 view.BloomFloatPrecision = 32
-view.UseLight = 0
-light = AddLight(view=view)
-light.Coords = 'Headlight'
-light.Intensity = 6.0
 view.LODThreshold = 1e9  # no level of detail: the interactive render shows the same geometry
 view.ImageReductionFactor = 2  # IceT composites a quarter of the pixels while interacting
-show_spheres(view, [0.02, 0.025, 0.075], lit=True)
-
 
 def grab(name):
     """The window's pixels as the last render left them (no render of its own)."""

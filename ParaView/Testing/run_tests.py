@@ -411,27 +411,23 @@ if (1, 1, 1) in hdr:
         else:
             check(worst > 8, 'client-server, 3 ranks, IceT\'s 8-bit composite: %g levels off '
                   '(the light is clamped)' % worst)
-    # A tile display (2 x 1 tiles, 2 ranks): refused with one warning, never a cut glow.
-    server_log = os.path.join(out, 'tile-display-server.log')
-    png = os.path.join(out, 'tile-display.png')
-    status, log = pvserver(2, 'bloom_view_hdr.py', png, env={
-        'VTKBLOOM_PVSERVER_ARGS': '--tdx=2 --tdy=1', 'VTKBLOOM_PVSERVER_LOG': server_log})
-    warnings = open(server_log).read().count('Bloom is off on tile displays') \
-        if os.path.exists(server_log) else -1
-    check(status == 0 and warnings == 1,
-          'a tile display renders without bloom, with one warning (exit %d, %d warning(s))'
-          % (status, warnings))
-    # A screenshot in tiles from a 3-rank server: its client drives the camera render by render,
-    # so the server cannot render the whole frame first: refused with one warning.
-    server_log = os.path.join(out, 'tiled-server.log')
-    png = os.path.join(out, 'client-server-tiled.png')
-    status, log = pvserver(3, 'bloom_view_hdr.py', png, env={
-        'VTKBLOOM_SCREENSHOT_SCALE': '2', 'VTKBLOOM_PVSERVER_LOG': server_log})
-    warnings = open(server_log).read().count('Bloom is off for a screenshot larger than the view') \
-        if os.path.exists(server_log) else -1
-    check(status == 0 and warnings == 1,
-          'a screenshot in tiles from a 3-rank server renders without bloom, with one warning '
-          '(exit %d, %d warning(s))' % (status, warnings))
+    def refused_on_server(ranks, name, warning, what, env):
+        """A server run that must render without bloom, its server warning once."""
+        server_log = os.path.join(out, name + '-server.log')
+        env = dict(env, VTKBLOOM_PVSERVER_LOG=server_log)
+        status, _ = pvserver(ranks, 'bloom_view_hdr.py', os.path.join(out, name + '.png'), env=env)
+        warnings = open(server_log).read().count(warning) if os.path.exists(server_log) else -1
+        check(status == 0 and warnings == 1, '%s renders without bloom, with one warning (exit '
+              '%d, %d warning(s))' % (what, status, warnings))
+
+    # A tile display (2 x 1 tiles, 2 ranks): refused, never a cut glow.
+    refused_on_server(2, 'tile-display', 'Bloom is off on tile displays', 'a tile display',
+                      {'VTKBLOOM_PVSERVER_ARGS': '--tdx=2 --tdy=1'})
+    # A screenshot in tiles from a 3-rank server: its client sends the camera render by render,
+    # so the server cannot render the whole frame first (docs/paraview.md): refused.
+    refused_on_server(3, 'client-server-tiled', 'Bloom is off for a screenshot larger than the '
+                      'view', 'a screenshot in tiles from a 3-rank server',
+                      {'VTKBLOOM_SCREENSHOT_SCALE': '2'})
 
 # 5c. In situ: bloom_catalyst.py, run by the wavelet mini-app under pvbatch --sym, writes a
 # bloomed PNG per step at twice the view's size (tiled), each the step rendered by pvbatch from

@@ -4,7 +4,7 @@ A large sphere split into pieces over the ranks (each rank renders its own) in a
 and in front of it three small bright spheres, the camera on +z. Unlit (ambient 1) the colours
 are the ones given; lit (diffuse 1) they are scaled by the view's lights.
 """
-from paraview.simple import Show, Sphere
+from paraview.simple import AddLight, CreateView, Show, Sphere
 
 
 def show_spheres(view, dim_colour, lit):
@@ -23,3 +23,24 @@ def show_spheres(view, dim_colour, lit):
     view.CameraPosition = [0.0, 0.0, 9.0]
     view.CameraFocalPoint = [0.0, 0.0, 0.0]
     view.CameraViewUp = [0.0, 1.0, 0.0]
+
+
+def hdr_view(size):
+    """The HDR view of bloom_view_hdr.py (and its interactive and timing variants): a grey
+    background, a headlight of intensity 6 alone, bloom only above 1 (threshold 1, knee 0) at
+    strength 0.5, no FXAA, the spheres lit, so that the small ones reach 3 to 6."""
+    view = CreateView('BloomRenderView')
+    view.ViewSize = size
+    view.OrientationAxesVisibility = 0
+    view.UseFXAA = 0
+    view.UseColorPaletteForBackground = 0
+    view.Background = [0.2, 0.2, 0.25]
+    view.BloomThreshold = 1.0
+    view.BloomKnee = 0.0
+    view.BloomStrength = 0.5
+    view.UseLight = 0  # no light kit: the headlight alone
+    light = AddLight(view=view)
+    light.Coords = 'Headlight'
+    light.Intensity = 6.0
+    show_spheres(view, [0.02, 0.025, 0.075], lit=True)
+    return view

@@ -74,6 +74,29 @@ void Populate(vtkRenderer* renderer, const double background[3])
   renderer->ResetCameraClippingRange();
 }
 
+// The window's frame, as vtkWindowToImageFilter reads it at `scale` times the window's size.
+Frame Grab(vtkRenderWindow* window, int scale)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetScale(scale);
+  grab->ReadFrontBufferOff();
+  grab->Update();
+  vtkImageData* image = grab->GetOutput();
+  Frame frame;
+  frame.Width = image->GetDimensions()[0];
+  frame.Height = image->GetDimensions()[1];
+  vtkDataArray* rgb = image->GetPointData()->GetScalars();
+  for (vtkIdType p = 0; p < rgb->GetNumberOfTuples(); ++p)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      frame.Values.push_back(rgb->GetComponent(p, c));
+    }
+  }
+  return frame;
+}
+
 // A window of width x height with `viewports` renderers side by side, each with the pass
 // (SeamlessTiles as given) or none; the frame captured at `scale` times the window's size.
 Frame Render(int width, int height, int scale, bool bloom, bool seamless, int viewports = 1,
@@ -106,24 +129,7 @@ Frame Render(int width, int height, int scale, bool bloom, bool seamless, int vi
     window->AddRenderer(renderer);
   }
   window->Render();
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetScale(scale);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkImageData* image = grab->GetOutput();
-  Frame frame;
-  frame.Width = image->GetDimensions()[0];
-  frame.Height = image->GetDimensions()[1];
-  vtkDataArray* rgb = image->GetPointData()->GetScalars();
-  frame.Values.resize(static_cast<size_t>(rgb->GetNumberOfTuples()) * 3);
-  for (vtkIdType p = 0; p < rgb->GetNumberOfTuples(); ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      frame.Values[3 * p + c] = rgb->GetComponent(p, c);
-    }
-  }
+  Frame frame = Grab(window, scale);
   for (auto& pass : passes)
   {
     pass->ReleaseGraphicsResources(window);
@@ -292,29 +298,6 @@ TEST(RenderingBloomPassTiles, ADelegatevtkBloomPassThroughRendererTilesAsTheFram
 //------------------------------------------------------------------------------
 namespace
 {
-// The window's frame, as vtkWindowToImageFilter reads it at `scale` times the window's size.
-Frame Grab(vtkRenderWindow* window, int scale)
-{
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetScale(scale);
-  grab->ReadFrontBufferOff();
-  grab->Update();
-  vtkImageData* image = grab->GetOutput();
-  Frame frame;
-  frame.Width = image->GetDimensions()[0];
-  frame.Height = image->GetDimensions()[1];
-  vtkDataArray* rgb = image->GetPointData()->GetScalars();
-  for (vtkIdType p = 0; p < rgb->GetNumberOfTuples(); ++p)
-  {
-    for (int c = 0; c < 3; ++c)
-    {
-      frame.Values.push_back(rgb->GetComponent(p, c));
-    }
-  }
-  return frame;
-}
-
 double LargestDifference(const Frame& a, const Frame& b)
 {
   double largest = a.Values.size() == b.Values.size() ? 0.0 : 1e30;
