@@ -151,9 +151,10 @@ bool vtkPVBloomRenderView::TilesFromWholeFrame()
   // root's camera is the script's; a server's comes from its client during each render. The
   // view's renderer fills the window, as vtkWindowToImageFilter's camera shift assumes here.
   const double* viewport = this->GetRenderer()->GetViewport();
+  const int process = vtkProcessModule::GetProcessType();
   return this->TiledInParallel() &&
-    vtkProcessModule::GetProcessType() == vtkProcessModule::PROCESS_BATCH && viewport[0] == 0.0 &&
-    viewport[1] == 0.0 && viewport[2] == 1.0 && viewport[3] == 1.0;
+    (process == vtkProcessModule::PROCESS_BATCH || process == vtkProcessModule::PROCESS_SERVER) &&
+    viewport[0] == 0.0 && viewport[1] == 0.0 && viewport[2] == 1.0 && viewport[3] == 1.0;
 }
 
 //------------------------------------------------------------------------------
@@ -190,32 +191,61 @@ void vtkPVBloomRenderView::RenderWholeFrame(bool interactive)
   double tile[4];
   window->GetTileViewport(tile);
   const int size[2] = { window->GetActualSize()[0], window->GetActualSize()[1] };
-  // vtkWindowToImageFilter shifted and narrowed the camera for the first tile (the lower left
-  // one, in a renderer that fills the window): window centre + (1 - scale), view angle
-  // 2 atan(tan(angle / 2) / scale y), parallel scale / scale y. Undone, it is the frame's.
   vtkCamera* camera = this->GetActiveCamera();
   double centre[2];
   camera->GetWindowCenter(centre);
   const double angle = camera->GetViewAngle();
   const double parallel = camera->GetParallelScale();
-  const double radians = angle * std::acos(-1.0) / 180.0;
-  camera->SetWindowCenter(centre[0] - (1.0 - scale[0]), centre[1] - (1.0 - scale[1]));
-  camera->SetViewAngle(
-    2.0 * std::atan(std::tan(radians / 2.0) * scale[1]) * 180.0 / std::acos(-1.0));
-  camera->SetParallelScale(parallel * scale[1]);
+  vtkSynchronizedRenderers* client = this->SynchronizedRenderers->GetCSSynchronizer();
+  if (!client)
+  {
+    const double radians = angle * std::acos(-1.0) / 180.0;
+    camera->SetWindowCenter(centre[0] - (1.0 - scale[0]), centre[1] - (1.0 - scale[1]));
+    camera->SetViewAngle(
+      2.0 * std::atan(std::tan(radians / 2.0) * scale[1]) * 180.0 / std::acos(-1.0));
+    camera->SetParallelScale(parallel * scale[1]);
+  }
   window->SetTileScale(1, 1);
   window->SetTileViewport(0.0, 0.0, 1.0, 1.0);
   window->SetSize(size[0] * scale[0], size[1] * scale[1]);
-  // The root keeps the frame its bloom writes (the composite, before FXAA and annotations);
-  // IceT composites it in float, as a view of that size would be.
   this->BloomPass->SetKeptFrameMode(vtkBloomPass::KEPT_FRAME_KEEP);
-  this->Superclass::Render(interactive, false);
+  this->RenderWithoutClient(interactive);
   window->SetSize(size[0], size[1]);
   window->SetTileViewport(tile);
   window->SetTileScale(scale);
   camera->SetWindowCenter(centre[0], centre[1]);
   camera->SetViewAngle(angle);
   camera->SetParallelScale(parallel);
+}
+
+void vtkPVBloomRenderView::RenderWithoutClient(bool interactive)
+{
+  vtkSynchronizedRenderers* client = this->SynchronizedRenderers->GetCSSynchronizer();
+  vtkRenderer* renderer = this->GetRenderer();
+  // (vtkPVRenderView::Render turns the synchronizers on and off around each render.)
+  const bool clear = client && client->GetFixBackground();
+  double background[3];
+  renderer->GetBackground(background);
+  const double alpha = renderer->GetBackgroundAlpha();
+  const bool gradient = renderer->GetGradientBackground();
+  const bool textured = renderer->GetTexturedBackground();
+  if (clear)
+  {
+    renderer->SetBackground(0.0, 0.0, 0.0);
+    renderer->SetBackgroundAlpha(0.0);
+    renderer->SetGradientBackground(false);
+    renderer->SetTexturedBackground(false);
+  }
+  this->WithoutClient = client != nullptr; // AboutToRenderOnLocalProcess turns it off
+  this->Superclass::Render(interactive, false);
+  this->WithoutClient = false;
+  if (clear)
+  {
+    renderer->SetBackground(background);
+    renderer->SetBackgroundAlpha(alpha);
+    renderer->SetGradientBackground(gradient);
+    renderer->SetTexturedBackground(textured);
+  }
 }
 
 //------------------------------------------------------------------------------
@@ -366,6 +396,13 @@ void vtkPVBloomRenderView::AboutToRenderOnLocalProcess(bool interactive)
     sync->SetImageProcessingPass(nullptr);
   }
   this->AvoidSecondFXAA();
+  // vtkPVRenderView::Render turns the synchronizers on before this; the next render's turns
+  // them on again.
+  vtkSynchronizedRenderers* client = sync->GetCSSynchronizer();
+  if (this->WithoutClient && client)
+  {
+    client->SetParallelRendering(false);
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -116,6 +116,9 @@ protected:
   void Render(bool interactive, bool skip_rendering) override;
   /// On every rank: the window resized to the whole tiled frame, its render, and back.
   void RenderWholeFrame(bool interactive);
+  /// A render of this view alone: a server's root leaves its client out (see the implementation).
+  void RenderWithoutClient(bool interactive);
+  bool WithoutClient = false; ///< the render under way leaves the client out
 
   /// Whether this process shows the image that the bloom must process.
   bool LocalProcessDisplaysImage();

@@ -423,11 +423,21 @@ if (1, 1, 1) in hdr:
     # A tile display (2 x 1 tiles, 2 ranks): refused, never a cut glow.
     refused_on_server(2, 'tile-display', 'Bloom is off on tile displays', 'a tile display',
                       {'VTKBLOOM_PVSERVER_ARGS': '--tdx=2 --tdy=1'})
-    # A screenshot in tiles from a 3-rank server: its client sends the camera render by render,
-    # so the server cannot render the whole frame first (docs/paraview.md): refused.
-    refused_on_server(3, 'client-server-tiled', 'Bloom is off for a screenshot larger than the '
-                      'view', 'a screenshot in tiles from a 3-rank server',
-                      {'VTKBLOOM_SCREENSHOT_SCALE': '2'})
+    # A screenshot in tiles (2x) from a 3-rank server: the server renders the whole frame
+    # first, with its client's last camera, and serves the tiles from it; the client gets
+    # pvbatch's serial 2x screenshot (its tiles bloomed with guard bands) within one level.
+    png = os.path.join(out, 'client-server-tiled.png')
+    reference = os.path.join(out, 'hdr-serial-tiled.png')
+    scaled = {'VTKBLOOM_SCREENSHOT_SCALE': '2'}
+    status_ref, _ = pvbatch(1, 'bloom_view_hdr.py', reference, env=scaled)
+    server_log = os.path.join(out, 'client-server-tiled-server.log')
+    status, _ = pvserver(3, 'bloom_view_hdr.py', png,
+                         env=dict(scaled, VTKBLOOM_PVSERVER_LOG=server_log))
+    worst = float(np.abs(load_png(png) - load_png(reference)).max()) \
+        if status == 0 and status_ref == 0 else -1.0
+    check(0 <= worst <= 1 and 'Bloom is off' not in open(server_log).read(),
+          'a 2x screenshot in tiles from a 3-rank server is pvbatch\'s serial one within %g '
+          'levels (bound 1; exit %d, reference exit %d)' % (worst, status, status_ref))
 
 # 5c. In situ: bloom_catalyst.py, run by the wavelet mini-app under pvbatch --sym, writes a
 # bloomed PNG per step at twice the view's size (tiled), each the step rendered by pvbatch from
