@@ -119,6 +119,10 @@ protected:
   /// A render of this view alone: a server's root leaves its client out (see the implementation).
   void RenderWithoutClient(bool interactive);
   bool WithoutClient = false; ///< the render under way leaves the client out
+  /// A server's root: the first tile's camera against the whole frame's (see the implementation).
+  void CheckFirstTileCamera();
+  bool CheckTileCamera = false;
+  double ExpectedTileCamera[4] = { 0.0, 0.0, 0.0, 0.0 };
 
   /// Whether this process shows the image that the bloom must process.
   bool LocalProcessDisplaysImage();
