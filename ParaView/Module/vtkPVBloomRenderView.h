@@ -30,11 +30,10 @@
  * (no IceT), each tile blooms with the whole frame's chain and a guard band
  * (vtkBloomPass::SeamlessTiles), and the renderer culls nothing while the window is tiled, so
  * the screenshot has no seams. Under IceT (several ranks) IceT composites the window's size, one
- * tile at a time, so a tile cannot have a guard band: in pvbatch and Catalyst, at the first
+ * tile at a time, so a tile cannot have a guard band: at the first
  * tile every rank renders the whole frame once, at the window resized to it, and the root keeps
  * its bloomed frame; each tile then writes its part of it (vtkBloomPass::KeptFrameMode). A
- * parallel server cannot (its client drives the camera, render by render): there such a
- * screenshot renders without bloom, with one warning.
+ * parallel server does the same, with its client's last camera (see RenderWholeFrame).
  *
  * With ParaView's tone mapping on (UseToneMapping), the tone mapping pass stays outermost and
  * bloom becomes its delegate: bloom in linear HDR, then tone mapping. During a selection
