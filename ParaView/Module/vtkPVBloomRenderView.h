@@ -111,17 +111,22 @@ protected:
   /// Insert or remove the pass before each render on a process that renders.
   void AboutToRenderOnLocalProcess(bool interactive) override;
 
-  /// At the first tile of a screenshot in tiles under IceT, the whole frame first (every rank).
+  ///@{
+  /**
+   * A screenshot in tiles under IceT (TilesFromWholeFrame): at the first tile every rank
+   * renders the whole frame first, at the window resized to it (RenderWholeFrame), and the
+   * root's pass keeps it; the tiles are served from it (vtkBloomPass::KeptFrameMode). A
+   * server's root renders it without its client (RenderWithoutClient), with the client's last
+   * camera, and checks that camera when the first tile's arrives (CheckFirstTileCamera).
+   */
   void Render(bool interactive, bool skip_rendering) override;
-  /// On every rank: the window resized to the whole tiled frame, its render, and back.
   void RenderWholeFrame(bool interactive);
-  /// A render of this view alone: a server's root leaves its client out (see the implementation).
   void RenderWithoutClient(bool interactive);
-  bool WithoutClient = false; ///< the render under way leaves the client out
-  /// A server's root: the first tile's camera against the whole frame's (see the implementation).
   void CheckFirstTileCamera();
-  bool CheckTileCamera = false;
-  double ExpectedTileCamera[4] = { 0.0, 0.0, 0.0, 0.0 };
+  bool WithoutClient = false;   ///< the render under way leaves the client out
+  bool CheckTileCamera = false; ///< the next render is a server's first tile
+  double ExpectedTileCamera[4] = { 0.0, 0.0, 0.0, 0.0 }; ///< centre x, y, angle, parallel scale
+  ///@}
 
   /// Whether this process shows the image that the bloom must process.
   bool LocalProcessDisplaysImage();
@@ -134,7 +139,7 @@ protected:
 
   /// Whether the coming render is a tile of a screenshot larger than the view, under IceT.
   bool TiledInParallel();
-  /// Whether such tiles are served from a whole frame here (pvbatch, Catalyst: see Render).
+  /// Whether such tiles are served from a whole frame here (see Render).
   bool TilesFromWholeFrame();
   /// On every rank: IceT's render pass and colour format for the coming render.
   void UpdateFloatComposite();
@@ -146,7 +151,7 @@ protected:
   bool UseBloom = true;
   bool CompositeFloatColor = true;
   bool TileDisplayRefused = false;     ///< the tile-display warning, said once
-  bool TiledScreenshotRefused = false; ///< the tiled-screenshot-under-MPI warning, said once
+  bool TiledScreenshotRefused = false; ///< a tiled screenshot under MPI refused, said once
   vtkNew<vtkPVBloomPass> BloomPass;
   vtkNew<vtkPVBloomCompositeScenePass> CompositeScenePass;
   vtkNew<vtkPVImageBloom> BloomPresetResolver;
