@@ -166,52 +166,42 @@ public:
   int ServedAt[2] = { 0, 0 };
   int ServedFrame[2] = { 0, 0 };
   bool ServeWarned = false; ///< no frame of the tiles' size was kept, said once
-
-  /// Where the composite goes before the framebuffer: the kept frame (KEPT_FRAME_KEEP), the
-  /// result (CaptureResult), or nowhere (nullptr); allocated at w x h here.
-  vtkBloomPassTarget* CaptureTarget(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h)
-  {
-    vtkBloomPassTarget* target = self->KeptFrameMode == KEPT_FRAME_KEEP ? &this->Resources.Kept
-      : self->CaptureResult                                             ? &this->Resources.Result
-                                                                        : nullptr;
-    if (target)
-    {
-      target->Allocate(window, w, h, GL_RGBA32F);
-    }
-    return target;
-  }
-
   /**
-   * Steps 2 and 3 of Render(): the chain, then the composite into the framebuffer the pass was
-   * called with (at x, y), through `capture` where there is one. Pops the framebuffer bindings
-   * the scene's render pushed.
+   * The kept frame (KEPT_FRAME_KEEP): the renderer's pixels after the composite, read back to
+   * float RGBA, so that it outlives the context (an OSMesa window's resize makes a new one and
+   * releases every resource first). Staging (Resources.Kept) takes a tile's part of it back to
+   * the GPU, or the framebuffer's pixels on their way here (a multisampled one is resolved).
    */
-  void Compose(vtkBloomPass* self, vtkOpenGLState* state, vtkBloomPassTarget* capture, int x, int y,
-    bool inScene, bool twoRenders);
-  /// KEPT_FRAME_SERVE: the tile's part of the kept frame into the framebuffer instead (popping
-  /// the bindings), and true; false, with nothing done, where it cannot.
-  bool ServeTile(vtkBloomPass* self, vtkOpenGLState* state, int x, int y, int w, int h);
-
-  /**
-   * KEPT_FRAME_KEEP: the kept frame becomes the framebuffer's pixels where the composite went
-   * (at x, y), which hold what was below it where the composite blends over it (a layer, or
-   * ParaView's IceT frame over transparent black); a served tile replaces its pixels with them.
-   */
-  void KeepFramebuffer(vtkOpenGLState* state, int x, int y)
+  vtkSmartPointer<vtkImageData> KeptImage;
+  void KeepFramebuffer(vtkOpenGLState* state, int x, int y, int w, int h)
   {
-    vtkBloomPassTarget& kept = this->Resources.Kept;
+    vtkBloomPassResources& res = this->Resources;
+    vtkBloomPassTarget& staging = res.Kept;
+    staging.Allocate(res.Context, w, h, GL_RGBA32F);
     GLint framebuffer = 0, buffer = GL_BACK;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
     glGetIntegerv(GL_DRAW_BUFFER0, &buffer);
     state->PushFramebufferBindings();
     state->vtkglBindFramebuffer(GL_READ_FRAMEBUFFER, static_cast<unsigned int>(framebuffer));
     state->vtkglReadBuffer(static_cast<unsigned int>(buffer));
-    kept.FBO->Bind(GL_DRAW_FRAMEBUFFER);
-    kept.FBO->ActivateDrawBuffer(0);
-    glBlitFramebuffer(x, y, x + kept.Size[0], y + kept.Size[1], 0, 0, kept.Size[0], kept.Size[1],
-      GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    staging.FBO->Bind(GL_DRAW_FRAMEBUFFER);
+    staging.FBO->ActivateDrawBuffer(0);
+    glBlitFramebuffer(x, y, x + w, y + h, 0, 0, w, h, GL_COLOR_BUFFER_BIT, GL_NEAREST);
     state->PopFramebufferBindings();
+    this->KeptImage = vtkSmartPointer<vtkImageData>::New();
+    staging.Read(res.Context, this->KeptImage);
   }
+
+  /**
+   * Steps 2 and 3 of Render(): the chain, then the composite into the framebuffer the pass was
+   * called with (at x, y), through the result with CaptureResult. Pops the framebuffer
+   * bindings the scene's render pushed.
+   */
+  void Compose(
+    vtkBloomPass* self, vtkOpenGLState* state, int x, int y, bool inScene, bool twoRenders);
+  /// KEPT_FRAME_SERVE: the tile's part of the kept frame into the framebuffer instead (popping
+  /// the bindings), and true; false, with nothing done, where it cannot.
+  bool ServeTile(vtkBloomPass* self, vtkOpenGLState* state, int x, int y, int w, int h);
 
   /**
    * The renderer culled its props against the tile's frustum, before the pass could widen it:
@@ -713,7 +703,10 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     return;
   }
   in.PlanWhatBlooms(this, s, selective);
-  vtkBloomPassTarget* capture = in.CaptureTarget(this, window, w, h);
+  if (this->CaptureResult)
+  {
+    res.Result.Allocate(window, w, h, GL_RGBA32F);
+  }
 
   // 1. The scene (and, in one render, its emission), then any emitters on their own, in float.
   state->PushFramebufferBindings();
@@ -756,7 +749,11 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   this->LastTileFromKeptFrame = in.ServeTile(this, state, x, y, w, h);
   if (!this->LastTileFromKeptFrame)
   {
-    in.Compose(this, state, capture, x, y, inScene, selective && !inScene);
+    in.Compose(this, state, x, y, inScene, selective && !inScene);
+  }
+  if (this->KeptFrameMode == KEPT_FRAME_KEEP)
+  {
+    in.KeepFramebuffer(state, x, y, w, h);
   }
   // The renderer's viewport again (the scene's render had the part's, a tile with its band),
   // for what follows and reads it: the FXAA, the annotations.
@@ -781,8 +778,8 @@ void vtkBloomPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPass::vtkInternals::Compose(vtkBloomPass* self, vtkOpenGLState* state,
-  vtkBloomPassTarget* capture, int x, int y, bool inScene, bool twoRenders)
+void vtkBloomPass::vtkInternals::Compose(
+  vtkBloomPass* self, vtkOpenGLState* state, int x, int y, bool inScene, bool twoRenders)
 {
   vtkBloomPassResources& res = this->Resources;
   // In one render the emission is the scene's colour where its alpha says so.
@@ -795,15 +792,11 @@ void vtkBloomPass::vtkInternals::Compose(vtkBloomPass* self, vtkOpenGLState* sta
   const int zero[2] = { -this->Tile.Inner[0], -this->Tile.Inner[1] };
   const int origin[2] = { x, y };
   const int shifted[2] = { x - this->Tile.Inner[0], y - this->Tile.Inner[1] };
-  if (capture)
+  if (self->CaptureResult)
   {
-    this->Runner.Composite(capture, zero, bloom);
+    this->Runner.Composite(&res.Result, zero, bloom);
     state->PopFramebufferBindings();
-    this->Runner.Copy(nullptr, origin, *capture);
-    if (capture == &res.Kept)
-    {
-      this->KeepFramebuffer(state, x, y);
-    }
+    this->Runner.Copy(nullptr, origin, res.Result);
   }
   else
   {
@@ -820,25 +813,35 @@ bool vtkBloomPass::vtkInternals::ServeTile(
   {
     return false;
   }
-  const vtkBloomPassTarget& kept = this->Resources.Kept;
-  if (!kept.FBO || kept.Size[0] != this->ServedFrame[0] || kept.Size[1] != this->ServedFrame[1])
+  const int* at = this->ServedAt;
+  const int* frame = this->ServedFrame;
+  const int* kept = this->KeptImage ? this->KeptImage->GetDimensions() : nullptr;
+  if (!kept || kept[0] != frame[0] || kept[1] != frame[1] || at[0] + w > frame[0] ||
+    at[1] + h > frame[1])
   {
     if (!this->ServeWarned)
     {
-      vtkWarningWithObjectMacro(self, << "KeptFrameMode is SERVE, but no frame of "
-                                      << this->ServedFrame[0] << " x " << this->ServedFrame[1]
-                                      << " is kept: the tile blooms alone.");
+      vtkWarningWithObjectMacro(self, << "KeptFrameMode is SERVE, but no frame of " << frame[0]
+                                      << " x " << frame[1] << " is kept: the tile blooms alone.");
       this->ServeWarned = true;
     }
     return false;
   }
-  // The frame's sample (i, j) lands at origin + (i, j): the tile's first at the viewport's corner.
-  const int* at = this->ServedAt;
-  const int part[4] = { at[0], at[0] + w, at[1], at[1] + h };
-  const int origin[2] = { x - at[0], y - at[1] };
+  // The tile's part of the kept frame, rows of the frame's width, into the staging target...
+  vtkBloomPassTarget& staging = this->Resources.Kept;
+  staging.Allocate(this->Resources.Context, w, h, GL_RGBA32F);
+  const float* first = static_cast<const float*>(this->KeptImage->GetScalarPointer()) +
+    4 * (static_cast<size_t>(at[1]) * frame[0] + at[0]);
+  staging.Color->Activate(); // rows of RGBA floats are 16-byte aligned: any unpack alignment
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, frame[0]);
+  glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, first);
+  glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
+  staging.Color->Deactivate();
+  // ... then over the tile's pixels, replacing them (the kept pixels hold what lay below).
   state->PopFramebufferBindings();
-  this->Runner.CompositeOver = false; // the kept pixels replace the tile's (KeepFramebuffer)
-  this->Runner.Copy(nullptr, origin, this->Resources.Kept, part);
+  this->Runner.CompositeOver = false;
+  const int origin[2] = { x, y };
+  this->Runner.Copy(nullptr, origin, staging);
   self->LastBloomSkipped = false;
   return true;
 }
@@ -862,15 +865,16 @@ void vtkBloomPass::SetKeptFrameMode(int mode)
 void vtkBloomPass::ReleaseKeptFrame()
 {
   vtkBloomPassResources& res = this->Internals->Resources;
-  res.Kept.Release(res.Context);
+  res.Kept.Release(res.Context); // the staging target
+  this->Internals->KeptImage = nullptr;
 }
 
 //------------------------------------------------------------------------------
 void vtkBloomPass::GetKeptFrameSize(int size[2])
 {
-  const vtkBloomPassTarget& kept = this->Internals->Resources.Kept;
-  size[0] = kept.FBO ? kept.Size[0] : 0;
-  size[1] = kept.FBO ? kept.Size[1] : 0;
+  vtkImageData* kept = this->Internals->KeptImage;
+  size[0] = kept ? kept->GetDimensions()[0] : 0;
+  size[1] = kept ? kept->GetDimensions()[1] : 0;
 }
 
 //------------------------------------------------------------------------------

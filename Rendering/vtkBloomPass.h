@@ -443,15 +443,14 @@ public:
    * only, renders the frame whole first (at the window resized to it), then the tiles.
    * - KEPT_FRAME_KEEP: a render also keeps the frame it writes: the renderer's pixels after
    *   the composite (before the FXAA and the annotations), what lay below included where the
-   *   composite blends over it, in a float texture of the renderer's size.
+   *   composite blends over it, read back as float RGBA (16 bytes a pixel on the CPU, so that
+   *   it outlives the context: an OSMesa window's resize releases every GPU resource).
    * - KEPT_FRAME_SERVE: a render of a tile (the window's TileScale above 1) of a frame the kept
    *   one's size writes the kept frame's part instead of blooming: no chain runs, and no guard
    *   band is rendered, but the scene is (its delegate's render may be a collective one); the
    *   kept pixels replace the tile's, and the FXAA and the annotations follow as in any
    *   render. Where no frame of that size is kept, the tile blooms alone, said once.
-   * - KEPT_FRAME_OFF (the default): neither. The kept frame stays until ReleaseKeptFrame() or
-   *   ReleaseGraphicsResources(); ReadResultImage() reads only the renders that neither keep
-   *   nor serve.
+   * - KEPT_FRAME_OFF (the default): neither. The kept frame stays until ReleaseKeptFrame().
    */
   enum KeptFrameModes
   {
@@ -464,7 +463,7 @@ public:
   void SetKeptFrameMode(int mode);
   vtkGetMacro(KeptFrameMode, int);
   ///@}
-  /// Free the kept frame (its texture); the window's context must be current.
+  /// Free the kept frame; the window's context must be current.
   void ReleaseKeptFrame();
   /// The kept frame's size, 0 x 0 when none is kept.
   void GetKeptFrameSize(int size[2]);
