@@ -1,5 +1,6 @@
 // vtkBloomPass's implementation: the render (scene, chain, composite, overlay) and its
-// internals, the image entry points (ApplyToImage, the read-backs) and the parameter plumbing.
+// internals, the kept frame of tiled screenshots (KeptFrameMode), the image entry points
+// (ApplyToImage, the read-backs) and the parameter plumbing.
 // The steps with a seam of their own live beside it (vtkBloomPassResources, ...ChainRunner,
 // ...Background, ...Steps, ...Emission, ...FFT); what stays here shares the pass's protected
 // state, which is why the file passes 800 lines.

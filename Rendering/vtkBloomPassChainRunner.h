@@ -168,12 +168,8 @@ public:
    */
   void Composite(vtkBloomPassTarget* target, const int origin[2], bool bloom);
 
-  /**
-   * Copy `source` into `target`, or into the bound framebuffer at `origin` when it is null; with
-   * `window` (x0 x1 y0 y1), only those samples of `source`.
-   */
-  void Copy(vtkBloomPassTarget* target, const int origin[2], vtkBloomPassTarget& source,
-    const int* window = nullptr);
+  /// Copy `source` into `target`, or into the bound framebuffer at `origin` when it is null.
+  void Copy(vtkBloomPassTarget* target, const int origin[2], vtkBloomPassTarget& source);
 
   /**
    * PSF mode (vtkBloomParameters::BLOOM_PSF): the bright pass of `emission` at full size, with

@@ -672,13 +672,11 @@ void vtkBloomPassChainRunner::Composite(vtkBloomPassTarget* target, const int or
 
 //------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::Copy(
-  vtkBloomPassTarget* target, const int origin[2], vtkBloomPassTarget& source, const int* window)
+  vtkBloomPassTarget* target, const int origin[2], vtkBloomPassTarget& source)
 {
   PassSpec copy;
   copy.Source = source.Color;
   copy.SourceSize = source.Size;
   copy.Name = "copy";
-  const Box part = window ? Box::Window(window, source.Size[0], source.Size[1]) : Box();
-  copy.Region = window ? &part : nullptr;
   this->Pass(target, origin, copy);
 }

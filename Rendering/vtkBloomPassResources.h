@@ -128,7 +128,8 @@ public:
   vtkBloomPassMultisampleTarget Multisample;
   int Samples = 0;
   vtkBloomPassTarget Result;
-  /// The whole frame a render kept for the tiles served from it (vtkBloomPass::KeptFrameMode).
+  /// vtkBloomPass::KeptFrameMode's staging: the framebuffer's pixels on their way to the CPU,
+  /// or a tile's part of the kept frame on its way back.
   vtkBloomPassTarget Kept;
 
   /**

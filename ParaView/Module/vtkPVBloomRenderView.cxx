@@ -230,18 +230,18 @@ void vtkPVBloomRenderView::AboutToRenderOnLocalProcess(bool interactive)
   vtkPVSynchronizedRenderer* sync = this->SynchronizedRenderers;
   // A screenshot larger than the view renders in tiles, and blooms as one frame where this
   // process renders the whole scene (vtkBloomPass::SeamlessTiles). Under IceT the ranks render
-  // the tile with its own camera and IceT composites the window's size only: in pvbatch and
-  // Catalyst each tile is served from the whole frame (Render); a parallel server's tile would
-  // bloom alone, and is refused (rendered without bloom, said once).
+  // the tile with its own camera and IceT composites the window's size only: each tile is
+  // served from the whole frame (Render), where the renderer fills the window; elsewhere a tile
+  // would bloom alone, and is refused (rendered without bloom, said once).
   const bool parallel =
     vtkIceTSynchronizedRenderers::SafeDownCast(sync->GetParallelSynchronizer()) != nullptr;
   const bool tiledInParallel = this->TiledInParallel() && !this->TilesFromWholeFrame();
   if (tiledInParallel && this->UseBloom && !this->TiledScreenshotRefused &&
     this->LocalProcessDisplaysImage())
   {
-    vtkWarningMacro(<< "Bloom is off for a screenshot larger than the view on a parallel "
-                    << "server: IceT composites it tile by tile, and each tile would bloom "
-                    << "alone. Resize the view to the screenshot's size instead.");
+    vtkWarningMacro(<< "Bloom is off for a screenshot larger than the view: under MPI its "
+                    << "tiles bloom as one frame only where the view's renderer fills its "
+                    << "window. Resize the view to the screenshot's size instead.");
     this->TiledScreenshotRefused = true;
   }
   this->CullWholeFrame(!parallel && this->UseBloom);

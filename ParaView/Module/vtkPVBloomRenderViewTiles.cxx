@@ -62,15 +62,16 @@ struct vtkFirstTileCamera
 //------------------------------------------------------------------------------
 bool vtkPVBloomRenderView::TilesFromWholeFrame()
 {
-  // The whole frame's camera is the first tile's, undone (RenderWholeFrame): this process's
-  // camera must be the one the tiles are rendered with, as in pvbatch and Catalyst, where the
-  // root's camera is the script's; a server's comes from its client during each render. The
-  // view's renderer fills the window, as vtkWindowToImageFilter's camera shift assumes here.
+  // pvbatch, Catalyst and a parallel server (RenderWholeFrame says where each finds the whole
+  // frame's camera). The view's renderer fills the window, as vtkWindowToImageFilter's camera
+  // shift is undone here.
   const double* viewport = this->GetRenderer()->GetViewport();
   const int process = vtkProcessModule::GetProcessType();
-  return this->TiledInParallel() &&
-    (process == vtkProcessModule::PROCESS_BATCH || process == vtkProcessModule::PROCESS_SERVER) &&
-    viewport[0] == 0.0 && viewport[1] == 0.0 && viewport[2] == 1.0 && viewport[3] == 1.0;
+  const bool batchOrServer = process == vtkProcessModule::PROCESS_BATCH ||
+    process == vtkProcessModule::PROCESS_SERVER ||
+    process == vtkProcessModule::PROCESS_RENDER_SERVER;
+  return this->TiledInParallel() && batchOrServer && viewport[0] == 0.0 && viewport[1] == 0.0 &&
+    viewport[2] == 1.0 && viewport[3] == 1.0;
 }
 
 //------------------------------------------------------------------------------

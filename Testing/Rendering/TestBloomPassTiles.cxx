@@ -307,6 +307,20 @@ double LargestDifference(const Frame& a, const Frame& b)
   }
   return largest;
 }
+
+// How many times `object` invokes `event` from now on (the returned count lives as long as it).
+struct EventCount
+{
+  EventCount(vtkObject* object, unsigned long event)
+  {
+    this->Command->SetClientData(&this->Count);
+    this->Command->SetCallback(
+      [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
+    object->AddObserver(event, this->Command);
+  }
+  int Count = 0;
+  vtkNew<vtkCallbackCommand> Command;
+};
 }
 
 //------------------------------------------------------------------------------
@@ -352,17 +366,12 @@ TEST(RenderingBloomPassTiles, TilesServedFromAKeptFrameAreThatFrame)
     EXPECT_EQ(off, 0.0);
 
     // A frame of another size kept: the tiles bloom alone, and the pass says so once.
-    int warnings = 0;
-    vtkNew<vtkCallbackCommand> count;
-    count->SetClientData(&warnings);
-    count->SetCallback(
-      [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
-    pass->AddObserver(vtkCommand::WarningEvent, count);
+    const EventCount warnings(pass, vtkCommand::WarningEvent);
     window->SetSize(w + 1, h);
     const Frame alone = Grab(window, scale);
     EXPECT_EQ(alone.Width, (w + 1) * scale);
     EXPECT_FALSE(pass->GetLastTileFromKeptFrame());
-    EXPECT_EQ(warnings, 1);
+    EXPECT_EQ(warnings.Count, 1);
     pass->ReleaseKeptFrame();
     pass->GetKeptFrameSize(kept);
     EXPECT_EQ(kept[0], 0);
@@ -374,14 +383,9 @@ TEST(RenderingBloomPassTiles, TilesServedFromAKeptFrameAreThatFrame)
 TEST(RenderingBloomPassTiles, AnUnknownKeptFrameModeIsRefused)
 {
   vtkNew<vtkBloomPass> pass;
-  int errors = 0;
-  vtkNew<vtkCallbackCommand> count;
-  count->SetClientData(&errors);
-  count->SetCallback(
-    [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
-  pass->AddObserver(vtkCommand::ErrorEvent, count);
+  const EventCount errors(pass, vtkCommand::ErrorEvent);
   pass->SetKeptFrameMode(3);
   pass->SetKeptFrameMode(-1);
-  EXPECT_EQ(errors, 2);
+  EXPECT_EQ(errors.Count, 2);
   EXPECT_EQ(pass->GetKeptFrameMode(), vtkBloomPass::KEPT_FRAME_OFF);
 }
