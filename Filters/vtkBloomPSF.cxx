@@ -3,6 +3,7 @@
 #include "vtkBloomFFTConvolution.h"
 #include "vtkBloomImageOps.h"
 #include "vtkBloomLinearOperator.h"
+#include "vtkBloomPSFSplit.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkPointData.h"
@@ -405,4 +406,51 @@ void vtkBloomPSFConvolution::Convolve(const vtkBloomBuffer& in, bool reflect, vt
       }
     }
   }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPSFKernels::Prepare(int width, int height, int scale, int coreRadius)
+{
+  this->TailScale = 1;
+  if (scale <= 1)
+  {
+    this->Convolution.Prepare(width, height, this->Kernels);
+    return;
+  }
+  std::vector<vtkBloomPSFKernel> cores, tails;
+  for (const vtkBloomPSFKernel& kernel : this->Kernels)
+  {
+    const vtkBloomPSFSplit split =
+      vtkBloomPSFSplit::Make({ kernel.Radius, kernel.Values }, scale, coreRadius);
+    cores.push_back({ split.Core.Radius, split.Core.Values });
+    // A channel with no tail convolves a zero kernel on the coarse grid.
+    tails.push_back(split.HasTail() ? vtkBloomPSFKernel{ split.Tail.Radius, split.Tail.Values }
+                                    : vtkBloomPSFKernel{ 0, { 0.0 } });
+    this->TailScale = split.HasTail() ? scale : this->TailScale;
+  }
+  this->Convolution.Prepare(width, height, cores);
+  if (this->TailScale > 1)
+  {
+    this->TailConvolution.Prepare(vtkBloomPSFSplit::CoarseSize(width, scale),
+      vtkBloomPSFSplit::CoarseSize(height, scale), tails);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPSFKernels::Convolve(const vtkBloomBuffer& bright, bool reflect, vtkBloomBuffer& bloom)
+{
+  this->Convolution.Convolve(bright, reflect, bloom);
+  const int f = this->TailScale;
+  if (f <= 1)
+  {
+    return;
+  }
+  const int w = bright.Size[0], h = bright.Size[1], nc = bright.NumberOfComponents;
+  const int lo[3] = { 0, 0, 0 };
+  const int size[3] = { vtkBloomPSFSplit::CoarseSize(w, f), vtkBloomPSFSplit::CoarseSize(h, f), 1 };
+  vtkBloomBuffer coarse, tail;
+  coarse.Allocate(lo, size, nc);
+  vtkBloomPSFSplit::Down(bright.Data.data(), w, h, nc, f, coarse.Data.data());
+  this->TailConvolution.Convolve(coarse, reflect, tail);
+  vtkBloomPSFSplit::AddUp(tail.Data.data(), w, h, nc, f, bloom.Data.data());
 }

@@ -77,7 +77,16 @@ struct vtkBloomPSFKernels
   std::vector<vtkBloomPSFKernel> Kernels; ///< one per colour channel
   unsigned long long Time = 0;            ///< the filter's MTime they were built at
   int Colours = 0;
+  /// Split PSFs (PSFTailScale > 1): Convolution takes the cores, TailConvolution the tails on
+  /// the coarse grid; TailScale 1 when the PSFs are not split or none has a tail.
+  int TailScale = 1;
   vtkBloomPSFConvolution Convolution;
+  vtkBloomPSFConvolution TailConvolution;
+
+  /// Split the kernels (scale > 1) or not, and plan the convolutions for width x height.
+  void Prepare(int width, int height, int scale, int coreRadius);
+  /// bloom = the bright pass `bright` convolved with the kernels (see vtkBloomPSFSplit).
+  void Convolve(const vtkBloomBuffer& bright, bool reflect, vtkBloomBuffer& bloom);
 };
 
 namespace vtkBloomPSF

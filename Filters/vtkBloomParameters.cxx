@@ -54,6 +54,8 @@ vtkBloomParameters::vtkBloomParameters()
   this->PSFGaussianSigmas = { 1.5, 6.0, 24.0 };
   this->PSFGaussianWeights = { 0.6, 0.3, 0.1 };
   this->PSFRadius = -1;
+  this->PSFTailScale = 1;
+  this->PSFCoreRadius = -1;
   this->PSFBorderMode = 1;
 }
 
@@ -230,6 +232,42 @@ void vtkBloomParameters::SetPSFImage(vtkImageData* image)
 }
 
 //------------------------------------------------------------------------------
+void vtkBloomParameters::SetPSFTailScale(int scale)
+{
+  if (scale != 1 && scale != 2 && scale != 4 && scale != 8)
+  {
+    vtkErrorMacro(<< "PSFTailScale must be 1 (no split), 2, 4 or 8; got " << scale << ".");
+    return;
+  }
+  if (scale != this->PSFTailScale)
+  {
+    this->PSFTailScale = scale;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomParameters::SetPSFCoreRadius(int radius)
+{
+  if (radius != -1 && (radius < 1 || radius > 2048))
+  {
+    vtkErrorMacro(<< "PSFCoreRadius must be -1 (automatic) or 1 to 2048; got " << radius << ".");
+    return;
+  }
+  if (radius != this->PSFCoreRadius)
+  {
+    this->PSFCoreRadius = radius;
+    this->Modified();
+  }
+}
+
+//------------------------------------------------------------------------------
+int vtkBloomParameters::GetEffectivePSFCoreRadius() const
+{
+  return this->PSFCoreRadius > 0 ? this->PSFCoreRadius : std::max(16, 4 * this->PSFTailScale);
+}
+
+//------------------------------------------------------------------------------
 vtkImageData* vtkBloomParameters::GetPSFImage()
 {
   return this->PSFImage;
@@ -401,6 +439,8 @@ void vtkBloomParameters::PrintSelf(ostream& os, vtkIndent indent)
   list(this->PSFGaussianWeights);
   os << indent << "PSFImage: " << this->PSFImage.Get() << "\n";
   os << indent << "PSFRadius: " << this->PSFRadius << "\n";
+  os << indent << "PSFTailScale: " << this->PSFTailScale << "\n";
+  os << indent << "PSFCoreRadius: " << this->PSFCoreRadius << "\n";
   os << indent << "PSFBorderMode: " << named(this->PSFBorderMode, { "Clamp", "Reflect", "Zero" })
      << "\n";
 }

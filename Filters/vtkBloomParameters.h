@@ -48,6 +48,17 @@
  * (ZERO). vtkImageBloom runs PSF mode on the CPU, vtkBloomPass on the GPU (an FFT in compute
  * shaders: OpenGL 4.3).
  *
+ * A wide PSF may be split (PSFTailScale f > 1, as Unreal's convolution bloom adds a
+ * full-resolution centre to a low-resolution convolution): each PSF k = k w + k (1 - w), w = 1
+ * within PSFCoreRadius rc / 2 of the centre, falling as a raised cosine to 0 at rc. The core k w
+ * is convolved at full resolution; the tail k (1 - w) on a grid f times coarser: the bright pass
+ * is spread onto the grid's nodes (the transpose of bilinear interpolation: the sum and the
+ * centroid of every pixel kept), convolved with the tail sampled every f pixels (less a sixth of
+ * its Laplacian, which undoes the two interpolations' spread, and scaled to the tail's share),
+ * and interpolated back bilinearly. f = 1 (default) is the exact convolution; f = 4 with the
+ * automatic core (rc = 16) costs a sixteenth of a frame-wide PSF's transforms at an error of
+ * about 1e-3 relative L2 (docs/wide-kernels.md measures it per PSF).
+ *
  * Work-skipping options (SkipEmptyBloom, SkipDisabledEffects, TrimPyramid,
  * RestrictToBrightRegion) change what is computed, never the result: each is exact.
  *
@@ -193,6 +204,17 @@ public:
   /// REFLECT (1, default: energy-conserving) or ZERO (2), as vtkImageSeparableGaussian's modes.
   vtkSetClampMacro(PSFBorderMode, int, 1, 2);
   vtkGetMacro(PSFBorderMode, int);
+  /// The tail's grid spacing f: 1 (default: exact, no split), 2, 4 or 8; other values are
+  /// refused with an error.
+  void SetPSFTailScale(int scale);
+  vtkGetMacro(PSFTailScale, int);
+  /// The core's radius rc in pixels, 1 to 2048, or -1 (default: the larger of 16 and
+  /// 4 PSFTailScale); other values are refused with an error. A core as wide as the PSF leaves
+  /// no tail.
+  void SetPSFCoreRadius(int radius);
+  vtkGetMacro(PSFCoreRadius, int);
+  /// The core radius in use: PSFCoreRadius, or max(16, 4 PSFTailScale) when it is -1.
+  int GetEffectivePSFCoreRadius() const;
   ///@}
 
   ///@{
@@ -427,6 +449,8 @@ protected:
   std::vector<double> PSFGaussianWeights;
   vtkSmartPointer<vtkImageData> PSFImage;
   int PSFRadius;
+  int PSFTailScale;
+  int PSFCoreRadius;
   int PSFBorderMode;
 
 private:

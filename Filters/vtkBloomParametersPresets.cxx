@@ -203,6 +203,8 @@ void vtkBloomParameters::DeepCopy(vtkBloomParameters* source)
   CopyIfDifferent(this->PSFImage, source->PSFImage, changed);
   CopyIfDifferent(this->PSFRadius, source->PSFRadius, changed);
   CopyIfDifferent(this->PSFBorderMode, source->PSFBorderMode, changed);
+  CopyIfDifferent(this->PSFTailScale, source->PSFTailScale, changed);
+  CopyIfDifferent(this->PSFCoreRadius, source->PSFCoreRadius, changed);
   if (changed)
   {
     this->Modified();

@@ -203,6 +203,10 @@ public:
   int GetPSFRadius() { return this->Parameters->GetPSFRadius(); }
   void SetPSFBorderMode(int v) { this->Parameters->SetPSFBorderMode(v); }
   int GetPSFBorderMode() { return this->Parameters->GetPSFBorderMode(); }
+  void SetPSFTailScale(int v) { this->Parameters->SetPSFTailScale(v); }
+  int GetPSFTailScale() { return this->Parameters->GetPSFTailScale(); }
+  void SetPSFCoreRadius(int v) { this->Parameters->SetPSFCoreRadius(v); }
+  int GetPSFCoreRadius() { return this->Parameters->GetPSFCoreRadius(); }
   void SetThresholdMode(int v) { this->Parameters->SetThresholdMode(v); }
   int GetThresholdMode() { return this->Parameters->GetThresholdMode(); }
   void SetThreshold(double v) { this->Parameters->SetThreshold(v); }

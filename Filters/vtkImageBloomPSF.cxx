@@ -136,7 +136,8 @@ int vtkImageBloom::ExecutePSF(vtkImageData* input, vtkInformation* outInfo, vtkI
   }
   if (rebuild || !cache.Convolution.IsPreparedFor(width, height))
   {
-    cache.Convolution.Prepare(width, height, cache.Kernels);
+    cache.Prepare(width, height, this->Parameters->GetPSFTailScale(),
+      this->Parameters->GetEffectivePSFCoreRadius());
   }
   this->AllocateOutputData(output, outInfo);
   vtkBloomBuffer bright;
@@ -155,7 +156,7 @@ int vtkImageBloom::ExecutePSF(vtkImageData* input, vtkInformation* outInfo, vtkI
   vtkBloomBuffer bloom;
   if (!skip)
   {
-    cache.Convolution.Convolve(bright, this->Parameters->GetPSFBorderMode() == 1, bloom);
+    cache.Convolve(bright, this->Parameters->GetPSFBorderMode() == 1, bloom);
   }
   this->UpdateProgress(0.8);
   this->Composite(input, skip ? nullptr : &bloom, output);

@@ -27,7 +27,8 @@ set(vtkbloom_filters_tests
   TestBloomLinearOperator
   TestBloomChainCut
   TestBloomFFTConvolution
-  TestImageBloomPSF)
+  TestImageBloomPSF
+  TestImageBloomPSFSplit)
 
 foreach (test IN LISTS vtkbloom_filters_tests)
   set(extra)
