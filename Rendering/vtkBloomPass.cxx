@@ -10,6 +10,7 @@
 #include "vtkBloomPassChainRunner.h"
 #include "vtkBloomPassEmission.h"
 #include "vtkBloomPassFFT.h"
+#include "vtkBloomPassPSFSplit.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomPassSteps.h"
 #include "vtkBloomPassTile.h"
@@ -137,7 +138,9 @@ public:
     }
     this->FXAA->Execute(renderer);
   }
-  vtkBloomPassFFT FFT; ///< PSF mode's convolution
+  vtkBloomPassFFT FFT;           ///< PSF mode's convolution
+  vtkBloomPassPSFSplit PSFSplit; ///< a split PSF's (PSFTailScale > 1, a tail left)
+  bool UsePSFSplit = false;      ///< the current PSFs are split
 
   /// The bloom term of `source` (masked by the emitters' depth with `mask`): the chain, or in
   /// PSF mode the bright pass and its convolution; false when the bloom is skipped.
@@ -258,6 +261,7 @@ public:
     }
     this->Steps.ReleaseGraphicsResources(w);
     this->FFT.ReleaseGraphicsResources(w);
+    this->PSFSplit.ReleaseGraphicsResources(w);
     this->Runner.ReleaseGraphicsResources(w);
     this->Resources.ReleaseAll(w);
   }
@@ -425,7 +429,9 @@ bool vtkBloomPass::vtkInternals::UpdateKernels(vtkBloomParameters* parameters)
   const double* wavelengths = parameters->GetWavelengths();
   std::vector<double> signature = { static_cast<double>(parameters->GetPSFType()),
     static_cast<double>(parameters->GetPSFRadius()), parameters->GetAiryRadius(), wavelengths[0],
-    wavelengths[1], wavelengths[2], image ? static_cast<double>(image->GetMTime()) : -1.0 };
+    wavelengths[1], wavelengths[2], image ? static_cast<double>(image->GetMTime()) : -1.0,
+    static_cast<double>(parameters->GetPSFTailScale()),
+    static_cast<double>(parameters->GetEffectivePSFCoreRadius()) };
   for (const auto* values :
     { &parameters->GetPSFGaussianSigmas(), &parameters->GetPSFGaussianWeights() })
   {
@@ -454,6 +460,23 @@ bool vtkBloomPass::vtkInternals::UpdateKernels(vtkBloomParameters* parameters)
     }
     this->KernelsRadius = std::max(this->KernelsRadius, kernels[c].Radius);
   }
+  // Split (as the CPU filter splits them) where a tail is left; else the exact convolution.
+  this->UsePSFSplit = false;
+  if (parameters->GetPSFTailScale() > 1)
+  {
+    vtkBloomPSFSplit splits[3];
+    for (int c = 0; c < 3; ++c)
+    {
+      splits[c] = vtkBloomPSFSplit::Make({ kernels[c].Radius, kernels[c].Values },
+        parameters->GetPSFTailScale(), parameters->GetEffectivePSFCoreRadius());
+      this->UsePSFSplit = this->UsePSFSplit || splits[c].HasTail();
+    }
+    if (this->UsePSFSplit)
+    {
+      this->PSFSplit.SetKernels(splits, this->KernelsVersion);
+      return true;
+    }
+  }
   this->FFT.SetKernels(kernels, this->KernelsVersion);
   return true;
 }
@@ -473,8 +496,10 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self, vtkTextureObject* so
   {
     why = "PSF bloom's compute programs did not build (simulated for a test).";
   }
+  const int* size = res.PSFBright.Size;
   if (!why.empty() ||
-    !this->FFT.Prepare(res.Context, res.PSFBright.Size[0], res.PSFBright.Size[1], why))
+    !(this->UsePSFSplit ? this->PSFSplit.Prepare(res.Context, size[0], size[1], why)
+                        : this->FFT.Prepare(res.Context, size[0], size[1], why)))
   {
     if (why != this->PSFError)
     {
@@ -484,20 +509,27 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self, vtkTextureObject* so
     return false;
   }
   this->PSFError.clear();
-  std::copy(this->FFT.GetGridSize(), this->FFT.GetGridSize() + 2, self->LastPSFGrid);
+  const int* grid = this->UsePSFSplit ? this->PSFSplit.GetGridSize() : this->FFT.GetGridSize();
+  std::copy(grid, grid + 2, self->LastPSFGrid);
   if (!this->Runner.BrightPassPSF(source, mask, res.PSFBright))
   {
     return false;
   }
   // With ProfilePasses each stage of the convolution is a profiled span, sized as the grid.
   vtkBloomPassFFT::StageTimer timer;
-  const int* grid = this->FFT.GetGridSize();
   timer.Begin = [this] { this->Runner.BeginProfiledSpan(); };
   timer.End = [this, grid](const char* name, double bytes)
   { this->Runner.EndProfiledSpan(name, grid[0], grid[1], bytes); };
-  this->FFT.Convolve(res.PSFBright.Color, res.PSFBloom.Color,
-    self->Parameters->GetPSFBorderMode() == vtkImageSeparableGaussian::REFLECT,
-    self->ProfilePasses ? &timer : nullptr);
+  const bool reflect = self->Parameters->GetPSFBorderMode() == vtkImageSeparableGaussian::REFLECT;
+  vtkBloomPassFFT::StageTimer* stages = self->ProfilePasses ? &timer : nullptr;
+  if (this->UsePSFSplit)
+  {
+    this->PSFSplit.Convolve(res.PSFBright.Color, res.PSFBloom.Color, reflect, stages);
+  }
+  else
+  {
+    this->FFT.Convolve(res.PSFBright.Color, res.PSFBloom.Color, reflect, stages);
+  }
   return true;
 }
 

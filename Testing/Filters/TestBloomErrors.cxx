@@ -225,8 +225,8 @@ TEST(FiltersErrors, PrintSelfNamesParameters)
         "BlurTapSpacing", "BlurIterations", "UpsampleKernel", "AccumulateMode", "LevelWeights",
         "CompositeMode", "Strength", "Tint", "ConvolutionMode", "BloomMode", "PSFType",
         "AiryRadius", "Wavelengths", "PSFGaussianSigmas", "PSFGaussianWeights", "PSFRadius",
-        "PSFBorderMode", "SkipEmptyBloom", "SkipDisabledEffects", "TrimPyramid",
-        "RestrictToBrightRegion", "SanitizeNonFinite", "ExecutionMode", "UseAVX2",
+        "PSFTailScale", "PSFCoreRadius", "PSFBorderMode", "SkipEmptyBloom", "SkipDisabledEffects",
+        "TrimPyramid", "RestrictToBrightRegion", "SanitizeNonFinite", "ExecutionMode", "UseAVX2",
         "ComputeStatistics", "LastRunWasFast", "LastBloomSkipped", "LastLevelsBuilt",
         "LastWorkspaceBytes", "LastRunUsedAVX2", "LastFFTBlurs" } },
   };

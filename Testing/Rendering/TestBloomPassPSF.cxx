@@ -86,14 +86,17 @@ struct Agreement
   double Bloom = 1.0;  ///< relative L2 of the bloom term alone
 };
 
-// GPU PSF bloom vs vtkImageBloom's PSF mode (REFERENCE) on the same float render.
-Agreement PSFAgreement(PSFKind kind, int radius, int border, int width, int height)
+// GPU PSF bloom vs vtkImageBloom's PSF mode (REFERENCE) on the same float render, the PSF split
+// at `tailScale` (1: not split); `grid` (when given) is the pass's FFT grid.
+Agreement PSFAgreement(PSFKind kind, int radius, int border, int width, int height,
+  int tailScale = 1, int* grid = nullptr)
 {
   BloomWindow w(width, height);
   EXPECT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
   w.Bloom->SetEmissionSourceToScene();
   w.Bloom->SetFloatPrecisionTo32Bit();
   SetPSF(w.Bloom->GetParameters(), kind, radius, border);
+  w.Bloom->GetParameters()->SetPSFTailScale(tailScale);
   w.Bloom->CaptureResultOn();
   w.Window->Render();
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
@@ -101,6 +104,10 @@ Agreement PSFAgreement(PSFKind kind, int radius, int border, int width, int heig
   EXPECT_TRUE(w.Bloom->ReadSceneImage(scene));
   EXPECT_TRUE(w.Bloom->ReadResultImage(gpu));
   EXPECT_FALSE(w.Bloom->GetLastBloomSkipped());
+  if (grid)
+  {
+    w.Bloom->GetLastPSFGrid(grid);
+  }
 
   vtkNew<vtkImageBloom> cpu;
   cpu->SetParameters(w.Bloom->GetParameters());
@@ -318,6 +325,33 @@ TEST(RenderingBloomPassPSF, AgreesWithTheCPUFilterForEveryPSFAndBorder)
         EXPECT_LE(a.Colour, 1e-5) << "PSF kind " << kind << ", " << BorderName(border) << ", "
                                   << size.first << "x" << size.second;
         EXPECT_LE(a.Bloom, 1e-5) << "PSF kind " << kind << ", " << BorderName(border);
+      }
+    }
+  }
+}
+
+//------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, ASplitPSFAgreesWithTheCPUFiltersSplit)
+{
+  // vtkBloomPassPSFSplit (the grid, the tail's FFT there, the core direct) against the CPU
+  // filter's split (the core and the tail each through FFTW), on an odd size; the tail's grid
+  // is the pass's FFT grid, about scale times smaller a side than the exact one (472 x 378).
+  for (int border :
+    { int(vtkImageSeparableGaussian::REFLECT), int(vtkImageSeparableGaussian::ZERO) })
+  {
+    for (PSFKind kind : { AIRY, GAUSSIANS })
+    {
+      for (int scale : { 2, 4, 8 })
+      {
+        int grid[2] = { 0, 0 };
+        const Agreement a = PSFAgreement(kind, 80, border, 301, 207, scale, grid);
+        std::cout << "split PSF " << kind << " " << BorderName(border) << " scale " << scale
+                  << " (grid " << grid[0] << "x" << grid[1] << "): colour " << a.Colour
+                  << ", bloom " << a.Bloom << "\n";
+        EXPECT_LE(a.Colour, 1e-5) << "PSF kind " << kind << ", scale " << scale;
+        EXPECT_LE(a.Bloom, 1e-5) << "PSF kind " << kind << ", scale " << scale;
+        EXPECT_LE(grid[0], 2 * 472 / scale) << "scale " << scale;
+        EXPECT_GT(grid[0], 0) << "scale " << scale;
       }
     }
   }

@@ -1,0 +1,285 @@
+// The split PSF's convolution on the GPU (see vtkBloomPassPSFSplit.h); its shaders are
+// glsl/vtkBloomPassPSFSplitCS.glsl.
+#include "vtkBloomPassPSFSplit.h"
+
+#include "vtkBloomPassChainRunner.h"
+#include "vtkBloomPassPSFSplitCS.h"
+#include "vtkBloomVTKCompat.h"
+#include "vtkOpenGLRenderWindow.h"
+#include "vtkOpenGLShaderCache.h"
+#include "vtkShaderProgram.h"
+#include "vtkTextureObject.h"
+
+#include <algorithm>
+#include <vector>
+
+namespace
+{
+// The core's work group: CoreColumns outputs wide, CoreRows high (one column an invocation).
+constexpr int CoreColumns = 64;
+constexpr int CoreRows = 16;
+constexpr const char* DownDefines = "#define SPLIT_DOWN 1\n";
+
+vtkSmartPointer<vtkTextureObject> GridTexture(vtkOpenGLRenderWindow* context, int w, int h)
+{
+  auto texture = vtkSmartPointer<vtkTextureObject>::New();
+  texture->SetContext(context);
+  texture->SetInternalFormat(GL_RGBA32F);
+  texture->SetMinificationFilter(vtkTextureObject::Nearest);
+  texture->SetMagnificationFilter(vtkTextureObject::Nearest);
+  texture->Allocate2D(w, h, 4, VTK_FLOAT);
+  return texture;
+}
+}
+
+//------------------------------------------------------------------------------
+vtkBloomPassPSFSplit::vtkBloomPassPSFSplit() = default;
+
+//------------------------------------------------------------------------------
+vtkBloomPassPSFSplit::~vtkBloomPassPSFSplit() = default;
+
+//------------------------------------------------------------------------------
+void vtkBloomPassPSFSplit::SetKernels(const vtkBloomPSFSplit splits[3], vtkMTimeType version)
+{
+  vtkBloomPassFFT::Kernel tails[3];
+  this->CoreRadius = 0;
+  for (int c = 0; c < 3; ++c)
+  {
+    this->Splits[c] = splits[c];
+    this->CoreRadius = std::max(this->CoreRadius, splits[c].Core.Radius);
+    // A channel with no tail convolves a zero kernel on the grid, as the CPU filter does.
+    tails[c] = splits[c].HasTail()
+      ? vtkBloomPassFFT::Kernel{ splits[c].Tail.Radius, splits[c].Tail.Values }
+      : vtkBloomPassFFT::Kernel{ 0, { 0.0 } };
+  }
+  this->Scale = splits[0].Scale;
+  this->TailFFT.SetKernels(tails, version);
+  this->KernelsVersion = version;
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassPSFSplit::Prepare(
+  vtkOpenGLRenderWindow* context, int width, int height, std::string& why)
+{
+  if (this->Context && this->Context != context)
+  {
+    this->ReleaseGraphicsResources(this->Context);
+  }
+  this->Context = context;
+  if (this->CoreRadius > MaximumCoreRadius)
+  {
+    why = "PSF bloom's core radius " + std::to_string(this->CoreRadius) + " is above " +
+      std::to_string(MaximumCoreRadius) + " (PSFCoreRadius).";
+    return false;
+  }
+  const int cw = vtkBloomPSFSplit::CoarseSize(width, this->Scale);
+  const int ch = vtkBloomPSFSplit::CoarseSize(height, this->Scale);
+  if (!this->TailFFT.Prepare(context, cw, ch, why))
+  {
+    return false;
+  }
+  for (const std::string& defines :
+    { std::string(DownDefines), this->CoreDefines(false), this->CoreDefines(true) })
+  {
+    if (!this->Program(defines, &why))
+    {
+      return false;
+    }
+  }
+  if (!this->CoarseBright || cw != this->CoarseSize[0] || ch != this->CoarseSize[1])
+  {
+    this->ReleaseTextures();
+    this->CoarseBright = GridTexture(context, cw, ch);
+    this->CoarseBloom = GridTexture(context, cw, ch);
+    this->CoarseSize[0] = cw;
+    this->CoarseSize[1] = ch;
+  }
+  this->Size[0] = width;
+  this->Size[1] = height;
+  if (this->CoresVersion != this->KernelsVersion)
+  {
+    this->UploadCores();
+    this->CoresVersion = this->KernelsVersion;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+std::string vtkBloomPassPSFSplit::CoreDefines(bool reflect) const
+{
+  return "#define SPLIT_CORE 1\n#define CORE_RADIUS " + std::to_string(this->CoreRadius) +
+    "\n#define CORE_COLUMNS " + std::to_string(CoreColumns) + "\n#define CORE_ROWS " +
+    std::to_string(CoreRows) + "\n" + (reflect ? "#define REFLECT 1\n" : "");
+}
+
+//------------------------------------------------------------------------------
+unsigned int vtkBloomPassPSFSplit::Program(const std::string& defines, std::string* why)
+{
+  auto found = this->Programs.find(defines);
+  if (found != this->Programs.end())
+  {
+    return found->second;
+  }
+  std::string text = vtkBloomPassPSFSplitCS;
+  vtkShaderProgram::Substitute(text, "//VTK::System::Dec", "#version 430 core\n" + defines);
+  std::string log;
+  const unsigned int id = vtkBloomPassChainRunner::BuildComputeProgram(text.c_str(), &log);
+  if (!id && why)
+  {
+    *why = "PSF bloom's split program did not build: " + log;
+    return 0;
+  }
+  this->Programs[defines] = id;
+  return id;
+}
+
+//------------------------------------------------------------------------------
+int vtkBloomPassPSFSplit::Uniform(unsigned int program, const char* name)
+{
+  return vtkBloomPassFFT::CachedUniform(this->Locations, program, name);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassPSFSplit::UploadCores()
+{
+  // Each channel's core centred in the widest one's window, as vec4 (r, g, b, 0) per offset.
+  const int r = this->CoreRadius, n = 2 * r + 1;
+  std::vector<float> weights(static_cast<size_t>(n) * n * 4, 0.0f);
+  for (int c = 0; c < 3; ++c)
+  {
+    const vtkBloomPSFSplit::Kernel& core = this->Splits[c].Core;
+    const int kn = 2 * core.Radius + 1, offset = r - core.Radius;
+    for (int y = 0; y < kn; ++y)
+    {
+      for (int x = 0; x < kn; ++x)
+      {
+        weights[(static_cast<size_t>(y + offset) * n + x + offset) * 4 + c] =
+          static_cast<float>(core.Values[static_cast<size_t>(y) * kn + x]);
+      }
+    }
+  }
+  if (!this->CoreBuffer)
+  {
+    glGenBuffers(1, &this->CoreBuffer);
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->CoreBuffer);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(weights.size() * sizeof(float)),
+    weights.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassPSFSplit::SetGrid(unsigned int program)
+{
+  glUniform2i(this->Uniform(program, "imageSize"), this->Size[0], this->Size[1]);
+  glUniform2i(this->Uniform(program, "coarseSize"), this->CoarseSize[0], this->CoarseSize[1]);
+  glUniform1i(this->Uniform(program, "scale"), this->Scale);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassPSFSplit::Down(vtkTextureObject* source)
+{
+  const unsigned int program = this->Program(DownDefines);
+  glUseProgram(program);
+  this->SetGrid(program);
+  source->Activate();
+  glUniform1i(this->Uniform(program, "source"), source->GetTextureUnit());
+  glBindImageTexture(0, this->CoarseBright->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glDispatchCompute((this->CoarseSize[0] + 15) / 16, (this->CoarseSize[1] + 15) / 16, 1);
+  // The tail's row transforms read the grid as a texture next.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  source->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassPSFSplit::Core(vtkTextureObject* source, vtkTextureObject* target, bool reflect)
+{
+  const unsigned int program = this->Program(this->CoreDefines(reflect));
+  glUseProgram(program);
+  this->SetGrid(program);
+  source->Activate();
+  glUniform1i(this->Uniform(program, "source"), source->GetTextureUnit());
+  this->CoarseBloom->Activate();
+  glUniform1i(this->Uniform(program, "tail"), this->CoarseBloom->GetTextureUnit());
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->CoreBuffer);
+  glBindImageTexture(0, target->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glDispatchCompute(
+    (this->Size[0] + CoreColumns - 1) / CoreColumns, (this->Size[1] + CoreRows - 1) / CoreRows, 1);
+  // The composite reads the target by texelFetch or imageLoad next.
+  glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT |
+    GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
+  glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  this->CoarseBloom->Deactivate();
+  source->Deactivate();
+  // VTK's shader cache must know that its last program is no longer bound.
+  this->Context->GetShaderCache()->ReleaseCurrentShader();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassPSFSplit::Convolve(vtkTextureObject* source, vtkTextureObject* target,
+  bool reflect, const vtkBloomPassFFT::StageTimer* timer)
+{
+  const double pixels = static_cast<double>(this->Size[0]) * this->Size[1];
+  const double nodes = static_cast<double>(this->CoarseSize[0]) * this->CoarseSize[1];
+  if (timer)
+  {
+    timer->Begin();
+  }
+  this->Down(source);
+  if (timer)
+  {
+    timer->End("psf split down", 16.0 * (pixels + nodes));
+  }
+  this->TailFFT.Convolve(this->CoarseBright, this->CoarseBloom, reflect, timer);
+  if (timer)
+  {
+    timer->Begin();
+  }
+  this->Core(source, target, reflect);
+  if (timer)
+  {
+    timer->End("psf split core", 32.0 * pixels);
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassPSFSplit::ReleaseTextures()
+{
+  for (vtkTextureObject* texture : { this->CoarseBright.Get(), this->CoarseBloom.Get() })
+  {
+    if (texture && this->Context)
+    {
+      texture->ReleaseGraphicsResources(this->Context);
+    }
+  }
+  this->CoarseBright = this->CoarseBloom = nullptr;
+  this->CoarseSize[0] = this->CoarseSize[1] = 0;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassPSFSplit::ReleaseGraphicsResources(vtkWindow* w)
+{
+  this->TailFFT.ReleaseGraphicsResources(w);
+  if (this->Context)
+  {
+    for (const auto& program : this->Programs)
+    {
+      if (program.second)
+      {
+        glDeleteProgram(program.second);
+      }
+    }
+    if (this->CoreBuffer)
+    {
+      glDeleteBuffers(1, &this->CoreBuffer);
+    }
+  }
+  this->ReleaseTextures();
+  this->Programs.clear();
+  this->Locations.clear();
+  this->CoreBuffer = 0;
+  this->CoresVersion = 0;
+  this->Context = nullptr;
+}
