@@ -90,8 +90,7 @@ vtkBloomPSFSplit vtkBloomPSFSplit::Make(const Kernel& kernel, int scale, int cor
 //------------------------------------------------------------------------------
 void vtkBloomPSFSplit::TentWeights(int i, int scale, int nodes, int& j0, int& j1, double& t)
 {
-  const double u =
-    std::min(std::max((i + 0.5) / scale - 0.5, 0.0), static_cast<double>(nodes - 1));
+  const double u = std::min(std::max((i + 0.5) / scale - 0.5, 0.0), static_cast<double>(nodes - 1));
   j0 = static_cast<int>(std::floor(u));
   j1 = std::min(j0 + 1, nodes - 1);
   t = u - j0;

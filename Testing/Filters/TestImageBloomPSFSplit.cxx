@@ -162,8 +162,7 @@ TEST(FiltersPSFSplit, ACoreAsWideAsThePSFIsTheExactConvolution)
 {
   auto input = Scene(90, 70);
   const std::vector<double> exact = Bloom(SplitBloom(vtkBloomParameters::PSF_AIRY, 1, -1), input);
-  const std::vector<double> split =
-    Bloom(SplitBloom(vtkBloomParameters::PSF_AIRY, 4, 48), input);
+  const std::vector<double> split = Bloom(SplitBloom(vtkBloomParameters::PSF_AIRY, 4, 48), input);
   EXPECT_EQ(split, exact);
 }
 
