@@ -64,6 +64,9 @@
 // interleaved frame by frame with the plain frame and the compute copy: the padded FFT grid,
 // the bloom frame's median, mean, p99 and maximum, its mean over the compute copy's, and the
 // wall time of the first bloom frame (the PSFs and their spectra made, the programs built).
+// The Airy pattern of radius 256 and the wide Gaussians are also split (PSFTailScale: a
+// full-resolution core and a coarse tail), each split row with its bloom's relative L2
+// against the exact row's on the same frame.
 //
 // --sync: the cost of the pass's one wait for the GPU (the bright region's read-back, or
 // SkipEmptyBloom's occlusion query): vtkImageBloom's defaults with the content-aware chain, with
@@ -610,69 +613,139 @@ std::string PSFStages(vtkBloomFrameTimer& timer, const std::string& label)
   return row + "\n";
 }
 
+// One PSF bloom setting of the --psf table.
+struct PSFSetting
+{
+  bool Airy;
+  int Radius;
+  int TailScale;  ///< 1: exact
+  int CoreRadius; ///< -1: automatic
+};
+
+// The bloom term (result - scene) of one captured bloom frame, RGB.
+std::vector<double> CapturedBloom(vtkBloomFrameTimer& timer)
+{
+  timer.Bloom->CaptureResultOn();
+  timer.Frame(vtkBloomFrameTimer::BLOOM);
+  vtkNew<vtkImageData> scene, result;
+  timer.Bloom->ReadSceneImage(scene);
+  timer.Bloom->ReadResultImage(result);
+  timer.Bloom->CaptureResultOff();
+  vtkDataArray* s = scene->GetPointData()->GetScalars();
+  vtkDataArray* r = result->GetPointData()->GetScalars();
+  std::vector<double> bloom;
+  for (vtkIdType t = 0; t < r->GetNumberOfTuples(); ++t)
+  {
+    for (int c = 0; c < 3; ++c)
+    {
+      bloom.push_back(r->GetComponent(t, c) - s->GetComponent(t, c));
+    }
+  }
+  return bloom;
+}
+
+// One row of the --psf table (and its stages' row in `stages`); `exact` holds the exact bloom
+// of the setting's PSF (made by its exact row, compared with by its split rows).
+bool PSFRow(const std::string& scene, int width, int height, int frames, const PSFSetting& row,
+  std::vector<double>& exact, std::string& stages)
+{
+  vtkBloomFrameTimer timer;
+  if (!SetUp(timer, scene, "scene", width, height))
+  {
+    return false;
+  }
+  vtkBloomParameters* parameters = timer.Bloom->GetParameters();
+  parameters->SetBloomModeToPSF();
+  parameters->SetPSFRadius(row.Radius);
+  parameters->SetPSFTailScale(row.TailScale);
+  parameters->SetPSFCoreRadius(row.CoreRadius);
+  if (row.Airy)
+  {
+    parameters->SetPSFType(vtkBloomParameters::PSF_AIRY);
+  }
+  else
+  {
+    parameters->SetPSFType(vtkBloomParameters::PSF_GAUSSIANS);
+    parameters->SetPSFGaussians({ 2.0, 16.0, row.Radius / 3.0 }, { 1.0, 0.3, 0.1 });
+  }
+  const vtkBloomFrameTimer::Kind kinds[] = { vtkBloomFrameTimer::PLAIN,
+    vtkBloomFrameTimer::COMPUTE_COPY, vtkBloomFrameTimer::BLOOM };
+  std::vector<double> gpu[3];
+  double first = 0.0;
+  for (int f = -2; f < frames; ++f) // two warm-up frames of each
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      const double wall = timer.Frame(kinds[k]);
+      first = f == -2 && k == 2 ? wall : first;
+      if (f >= 0)
+      {
+        gpu[k].push_back(1e3 * timer.LastGPUSeconds);
+      }
+    }
+  }
+  const int* grid = timer.Bloom->GetLastPSFGrid();
+  const vtkBloomFrameStatistics plain(gpu[0]), copy(gpu[1]), bloom(gpu[2]);
+  const std::string gridText = grid[0] > 0 ? std::to_string(grid[0]) + "x" + std::to_string(grid[1])
+                                           : std::string("refused: no bloom");
+  const std::string split = row.TailScale == 1 ? std::string("exact")
+                                               : std::to_string(row.TailScale) + ", core " +
+      std::to_string(parameters->GetEffectivePSFCoreRadius());
+  // The split's error: the relative L2 of its bloom term against the exact row's.
+  const std::vector<double> term = CapturedBloom(timer);
+  double num = 0.0, den = 0.0;
+  for (size_t i = 0; row.TailScale > 1 && i < term.size() && i < exact.size(); ++i)
+  {
+    num += (term[i] - exact[i]) * (term[i] - exact[i]);
+    den += exact[i] * exact[i];
+  }
+  exact = row.TailScale == 1 ? term : exact;
+  char error[32] = "-";
+  if (den > 0.0)
+  {
+    std::snprintf(error, sizeof(error), "%.1e", std::sqrt(num / den));
+  }
+  std::printf("| %s | %d | %s | %s | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %+.3f | %s | "
+              "%.2f s |\n",
+    row.Airy ? "Airy" : "Gaussians", row.Radius, split.c_str(), gridText.c_str(), plain.Mean,
+    copy.Mean, bloom.Median, bloom.Mean, bloom.P99, bloom.Max, bloom.Mean - copy.Mean, error,
+    first);
+  std::fflush(stdout);
+  stages += PSFStages(timer,
+    std::string(row.Airy ? "Airy" : "Gaussians") + ", " + std::to_string(row.Radius) + ", " +
+      split + ", " + gridText);
+  return true;
+}
+
 bool PSFTable(const std::string& scene, int width, int height, int frames)
 {
-  std::string stages;
   std::printf("PSF bloom (FFT convolution), %s at %dx%d: GPU time per frame (GL_TIME_ELAPSED), "
               "ms, %d frames of each kind, interleaved\n"
-              "| PSF | radius | FFT grid | plain, mean | compute copy, mean | bloom: median | mean "
-              "| p99 | max | bloom over compute copy, mean | first bloom frame (wall) |\n"
-              "|---|---|---|---|---|---|---|---|---|---|---|\n",
+              "| PSF | radius | split: tail scale, core radius | FFT grid | plain, mean | "
+              "compute copy, mean | bloom: median | mean | p99 | max | bloom over compute copy, "
+              "mean | bloom's relative L2 against exact | first bloom frame (wall) |\n"
+              "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n",
     scene.c_str(), width, height, frames);
-  // Airy patterns, then Gaussians as wide as the frame.
-  const int radii[] = { 16, 64, 256, std::max(width, height) / 2 };
-  for (int row = 0; row < 4; ++row)
+  // Airy patterns, then Gaussians as wide as the frame, each exact and then split.
+  const int wide = std::max(width, height) / 2;
+  const PSFSetting rows[] = { { true, 16, 1, -1 }, { true, 64, 1, -1 }, { true, 256, 1, -1 },
+    { true, 256, 4, -1 }, { true, 256, 8, 16 }, { false, wide, 1, -1 }, { false, wide, 2, -1 },
+    { false, wide, 4, -1 }, { false, wide, 8, -1 }, { false, wide, 4, 8 }, { false, wide, 8, 16 } };
+  std::string stages;
+  std::vector<double> exact;
+  for (const PSFSetting& row : rows)
   {
-    const int radius = radii[row];
-    vtkBloomFrameTimer timer;
-    if (!SetUp(timer, scene, "scene", width, height))
+    if (!PSFRow(scene, width, height, frames, row, exact, stages))
     {
       return false;
     }
-    vtkBloomParameters* parameters = timer.Bloom->GetParameters();
-    parameters->SetBloomModeToPSF();
-    parameters->SetPSFRadius(radius);
-    const bool airy = row < 3;
-    if (airy)
-    {
-      parameters->SetPSFType(vtkBloomParameters::PSF_AIRY);
-    }
-    else
-    {
-      parameters->SetPSFType(vtkBloomParameters::PSF_GAUSSIANS);
-      parameters->SetPSFGaussians({ 2.0, 16.0, radius / 3.0 }, { 1.0, 0.3, 0.1 });
-    }
-    const vtkBloomFrameTimer::Kind kinds[] = { vtkBloomFrameTimer::PLAIN,
-      vtkBloomFrameTimer::COMPUTE_COPY, vtkBloomFrameTimer::BLOOM };
-    std::vector<double> gpu[3];
-    double first = 0.0;
-    for (int f = -2; f < frames; ++f) // two warm-up frames of each
-    {
-      for (int k = 0; k < 3; ++k)
-      {
-        const double wall = timer.Frame(kinds[k]);
-        first = f == -2 && k == 2 ? wall : first;
-        if (f >= 0)
-        {
-          gpu[k].push_back(1e3 * timer.LastGPUSeconds);
-        }
-      }
-    }
-    const int* grid = timer.Bloom->GetLastPSFGrid();
-    const vtkBloomFrameStatistics plain(gpu[0]), copy(gpu[1]), bloom(gpu[2]);
-    const std::string gridText = grid[0] > 0
-      ? std::to_string(grid[0]) + "x" + std::to_string(grid[1])
-      : std::string("refused: no bloom");
-    std::printf("| %s | %d | %s | %.3f | %.3f | %.3f | %.3f | %.3f | %.3f | %+.3f | %.2f s |\n",
-      airy ? "Airy" : "Gaussians", radius, gridText.c_str(), plain.Mean, copy.Mean, bloom.Median,
-      bloom.Mean, bloom.P99, bloom.Max, bloom.Mean - copy.Mean, first);
-    std::fflush(stdout);
-    stages += PSFStages(timer,
-      std::string(airy ? "Airy" : "Gaussians") + ", " + std::to_string(radius) + ", " + gridText);
   }
-  std::printf("\nThe bloom frame's passes (vtkBloomPass::ProfilePasses), medians of 5 frames, ms\n"
-              "| PSF, radius, grid | bright pass | rows | columns | multiply | inverse columns | "
-              "inverse rows | fold | composite |\n|---|---|---|---|---|---|---|---|---|\n%s",
+  std::printf("\nThe bloom frame's passes (vtkBloomPass::ProfilePasses), medians of 5 frames, ms "
+              "(a split PSF: the spread onto the grid, the tail's FFT there, then the core with "
+              "the tail added)\n"
+              "| PSF, radius, split, grid | bright pass | rows | columns | multiply | inverse "
+              "columns | inverse rows | fold | composite |\n|---|---|---|---|---|---|---|---|---|\n"
+              "%s",
     stages.c_str());
   std::fflush(stdout);
   return true;
