@@ -399,11 +399,14 @@ bool QualityTable(const std::string& scene, int width, int height, int frames, c
     QualityRows(timer, preset, true, frames, out);
   }
   // The compute FFT's rows: ping-pong's blurs summed tap by tap (through the FFT is its
-  // default, above), and PSF bloom with the filter's default Airy pattern and Gaussians.
+  // default, above), and PSF bloom with the filter's default Airy pattern and Gaussians, exact
+  // and split (the tail on a grid 4 or 8 times coarser, PSFTailScale).
   const std::string taps = "ping-pong, blurs tap by tap";
-  for (const char* name : { "ping-pong, blurs tap by tap", "psf airy", "psf gaussians" })
+  for (const char* name : { "ping-pong, blurs tap by tap", "psf airy", "psf gaussians",
+         "psf airy, tail 1/4", "psf gaussians, tail 1/4", "psf gaussians, tail 1/8" })
   {
     const std::string extra = name;
+    const size_t tail = extra.find("tail 1/");
     vtkBloomFrameTimer timer;
     if (!timer.Setup(scene, width, height) ||
       !timer.UsePreset(extra == taps ? "ping-pong" : "default"))
@@ -418,8 +421,11 @@ bool QualityTable(const std::string& scene, int width, int height, int frames, c
     else
     {
       parameters->SetBloomModeToPSF();
-      parameters->SetPSFType(
-        extra == "psf airy" ? vtkBloomParameters::PSF_AIRY : vtkBloomParameters::PSF_GAUSSIANS);
+      parameters->SetPSFType(extra.find("airy") != std::string::npos
+          ? vtkBloomParameters::PSF_AIRY
+          : vtkBloomParameters::PSF_GAUSSIANS);
+      parameters->SetPSFTailScale(
+        tail == std::string::npos ? 1 : std::stoi(extra.substr(tail + 7)));
     }
     QualityRows(timer, extra, false, frames, out);
   }

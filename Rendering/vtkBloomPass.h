@@ -132,7 +132,10 @@
  * Without compute shaders, or for a longer line or buffers over vtkBloomPassFFT's limits
  * (2 GiB a buffer, the context's largest shader storage block), the pass reports an error
  * once and renders the scene without bloom. The PSFs' spectra are made again only when
- * the parameters or the size change. No chain is built in PSF mode.
+ * the parameters or the size change. No chain is built in PSF mode. A split PSF (PSFTailScale
+ * > 1, vtkBloomPSFSplit) runs as the filter runs it: the tail's FFT on a grid PSFTailScale times
+ * coarser, the core (up to radius 256) summed directly in one dispatch with the tail added
+ * (vtkBloomPassPSFSplit).
  *
  * With CaptureResult on, the bloomed image is also kept in a float texture after each render,
  * and ReadSceneImage() / ReadResultImage() return the un-bloomed float render and the bloomed
@@ -548,8 +551,8 @@ public:
   vtkGetMacro(LastChainCoverage, double);
 
   /**
-   * The padded FFT grid (NX, NY) of the last evaluation in PSF mode; (0, 0) when it did not run
-   * the convolution (pyramid mode, or PSF mode refused).
+   * The padded FFT grid (NX, NY) of the last evaluation in PSF mode (a split PSF: its tail's
+   * grid); (0, 0) when it did not run the convolution (pyramid mode, or PSF mode refused).
    */
   vtkGetVector2Macro(LastPSFGrid, int);
 

@@ -96,6 +96,9 @@ image: HDR bloom (vtkImageBloom). A preset is applied first; options then overri
   --wavelengths R,G,B    airy: channel wavelengths in nm (default 610,550,465)
   --psf-gaussians S:W,.. gaussians: sigma:weight pairs (default 1.5:0.6,6:0.3,24:0.1)
   --psf-border B         reflect (default: conserves energy) | zero
+  --psf-tail-scale F     1 (default: exact) | 2 | 4 | 8: the PSF's tail convolved on a grid F
+                         times coarser, its core (within --psf-core-radius) at full resolution
+  --psf-core-radius R    the split's core radius in pixels (default: max(16, 4 F))
   A frame with nothing above the threshold is written unchanged, without bloom work.
 
 blur: separable Gaussian (vtkImageSeparableGaussian), seed 004 semantics.

@@ -19,7 +19,8 @@ const std::vector<std::string> BloomOptionNames = { "--preset", "--threshold", "
   "--clamp-luminance", "--strength", "--composite", "--tint", "--levels", "--start-level",
   "--reference-height", "--down", "--up", "--accumulate", "--blur-sigma", "--blur-radius",
   "--blur-spacing", "--blur-iterations", "--level-weights", "--convolution", "--psf",
-  "--psf-radius", "--airy-radius", "--wavelengths", "--psf-gaussians", "--psf-border" };
+  "--psf-radius", "--airy-radius", "--wavelengths", "--psf-gaussians", "--psf-border",
+  "--psf-tail-scale", "--psf-core-radius" };
 
 namespace
 {
@@ -100,8 +101,8 @@ void BloomOptions::ParsePSF(Arguments& args)
       throw UsageError{ "--psf expects airy, gaussians or a FILE.exr, got '" + v + "'" };
     }
   }
-  for (const char* option :
-    { "--psf-radius", "--airy-radius", "--wavelengths", "--psf-gaussians", "--psf-border" })
+  for (const char* option : { "--psf-radius", "--airy-radius", "--wavelengths", "--psf-gaussians",
+         "--psf-border", "--psf-tail-scale", "--psf-core-radius" })
   {
     if (!this->PSF && args.Options.count(option))
     {
@@ -111,6 +112,19 @@ void BloomOptions::ParsePSF(Arguments& args)
   if (args.Take("--psf-radius", v))
   {
     this->Set(&vtkBloomParameters::SetPSFRadius, ParseInt("--psf-radius", v, 0, 2048));
+  }
+  if (args.Take("--psf-tail-scale", v))
+  {
+    const int scale = ParseInt("--psf-tail-scale", v, 1, 8);
+    if (scale != 1 && scale != 2 && scale != 4 && scale != 8)
+    {
+      throw UsageError{ "--psf-tail-scale must be 1 (exact), 2, 4 or 8" };
+    }
+    this->Set(&vtkBloomParameters::SetPSFTailScale, scale);
+  }
+  if (args.Take("--psf-core-radius", v))
+  {
+    this->Set(&vtkBloomParameters::SetPSFCoreRadius, ParseInt("--psf-core-radius", v, 1, 2048));
   }
   if (args.Take("--airy-radius", v))
   {

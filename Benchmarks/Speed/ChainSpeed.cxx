@@ -241,6 +241,18 @@ void Configure(vtkImageBloom* bloom, const std::string& config)
     bloom->SetPSFType(
       config == "psf.airy" ? vtkBloomParameters::PSF_AIRY : vtkBloomParameters::PSF_GAUSSIANS);
   }
+  else if (config.rfind("psf.wide", 0) == 0)
+  {
+    // A wide sum of Gaussians (radius 512, the widest sigma 170 px), exact ("psf.wide") or split
+    // ("psf.wide.tail4", "psf.wide.tail8": PSFTailScale 4 or 8, the automatic core).
+    bloom->SetPreset("webgpu-market");
+    bloom->SetBloomModeToPSF();
+    bloom->SetPSFType(vtkBloomParameters::PSF_GAUSSIANS);
+    bloom->SetPSFRadius(512);
+    bloom->GetParameters()->SetPSFGaussians({ 2.0, 16.0, 512.0 / 3.0 }, { 1.0, 0.3, 0.1 });
+    const size_t tail = config.find(".tail");
+    bloom->SetPSFTailScale(tail == std::string::npos ? 1 : std::stoi(config.substr(tail + 5)));
+  }
   else
   {
     bloom->SetPreset(config.c_str());
@@ -599,6 +611,11 @@ int main(int argc, char** argv)
       vtkImageBloom::FAST, true);
     reg("bloom.psf.gaussians", BM_Bloom, std::string("psf.gaussians"), s, -1.0, true, false,
       vtkImageBloom::FAST, true);
+    for (const char* wide : { "psf.wide", "psf.wide.tail4", "psf.wide.tail8" })
+    {
+      reg(std::string("bloom.") + wide, BM_Bloom, std::string(wide), s, -1.0, true, false,
+        vtkImageBloom::FAST, true);
+    }
     reg("bloom.webgpu-market.statistics", BM_Bloom, std::string("webgpu-market"), s, -1.0, true,
       true, vtkImageBloom::FAST, true);
     reg("stockvtk.gaussian", BM_StockVTK, s);

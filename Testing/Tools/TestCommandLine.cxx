@@ -175,8 +175,26 @@ TEST(CommandLine, PSFBloomConservesEnergy)
     }
     EXPECT_GT(RelativeL2(bloomed, in), 1e-3) << psf;
   }
+  {
+    // A split PSF: the tail on a grid 4 times coarser keeps the light to within its edges' share.
+    const std::string out = vtkBloomTest::OutputPath("cli-psf-split.exr");
+    fs::remove(out);
+    ASSERT_EQ(RunTool("image --psf gaussians --psf-tail-scale 4 --psf-core-radius 6 --mode none "
+                      "--strength 0.5 " +
+                Quote(input) + " " + Quote(out)),
+      0);
+    const Pixels bloomed = ReadEXR(out);
+    for (int c = 0; c < 3; ++c)
+    {
+      EXPECT_NEAR(ChannelSum(bloomed, c) / ChannelSum(in, c), 1.5, 1e-2) << c;
+    }
+  }
   const std::string out = Quote(vtkBloomTest::OutputPath("cli-psf-bad.exr"));
   std::string errors;
+  EXPECT_EQ(RunTool("image --psf airy --psf-tail-scale 3 " + Quote(input) + " " + out, &errors), 2);
+  EXPECT_NE(errors.find("--psf-tail-scale"), std::string::npos) << errors;
+  EXPECT_EQ(RunTool("image --psf airy --psf-core-radius 0 " + Quote(input) + " " + out), 2);
+  EXPECT_EQ(RunTool("image --psf-tail-scale 2 " + Quote(input) + " " + out), 2);
   EXPECT_EQ(RunTool("image --psf bessel " + Quote(input) + " " + out), 2);
   EXPECT_EQ(RunTool("image --psf-radius 4 " + Quote(input) + " " + out, &errors), 2);
   EXPECT_NE(errors.find("--psf"), std::string::npos) << errors;
