@@ -264,7 +264,7 @@ void vtkBloomParameters::SetPSFCoreRadius(int radius)
 //------------------------------------------------------------------------------
 int vtkBloomParameters::GetEffectivePSFCoreRadius() const
 {
-  return this->PSFCoreRadius > 0 ? this->PSFCoreRadius : std::max(16, 4 * this->PSFTailScale);
+  return this->PSFCoreRadius > 0 ? this->PSFCoreRadius : 16;
 }
 
 //------------------------------------------------------------------------------

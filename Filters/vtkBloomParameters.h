@@ -208,12 +208,11 @@ public:
   /// refused with an error.
   void SetPSFTailScale(int scale);
   vtkGetMacro(PSFTailScale, int);
-  /// The core's radius rc in pixels, 1 to 2048, or -1 (default: the larger of 16 and
-  /// 4 PSFTailScale); other values are refused with an error. A core as wide as the PSF leaves
-  /// no tail.
+  /// The core's radius rc in pixels, 1 to 2048, or -1 (default: 16); other values are refused
+  /// with an error. A core as wide as the PSF leaves no tail.
   void SetPSFCoreRadius(int radius);
   vtkGetMacro(PSFCoreRadius, int);
-  /// The core radius in use: PSFCoreRadius, or max(16, 4 PSFTailScale) when it is -1.
+  /// The core radius in use: PSFCoreRadius, or 16 when it is -1.
   int GetEffectivePSFCoreRadius() const;
   ///@}
 

@@ -4,10 +4,10 @@
  *         PSFTailScale > 1), as vtkImageBloom runs it on the CPU: a full-resolution core and a
  *         tail on a grid `scale` times coarser (vtkBloomPSFSplit says how a PSF is split).
  *
- * Per convolution: the bright pass spread onto the grid (SPLIT_DOWN), the tail's convolution
- * there by the FFT (a vtkBloomPassFFT of its own, six dispatches on a grid about scale^2 times
- * smaller than the exact path's), then one dispatch that convolves the core directly (shared
- * memory, one column of outputs an invocation) and adds the tail interpolated bilinearly
+ * Per convolution: the bright pass spread onto the grid (SPLIT_DOWN_X, SPLIT_DOWN_Y), the tail's
+ * convolution there by the FFT (a vtkBloomPassFFT of its own, six dispatches on a grid about
+ * scale^2 times smaller than the exact path's), then one dispatch that convolves the core directly
+ * (shared memory, one column of outputs an invocation) and adds the tail interpolated bilinearly
  * (SPLIT_CORE); glsl/vtkBloomPassPSFSplitCS.glsl. The core's cost grows as its area, (2 rc + 1)^2
  * multiply-adds a pixel and channel; cores wider than MaximumCoreRadius are refused.
  */
@@ -79,7 +79,9 @@ private:
   int Size[2] = { 0, 0 };
   int CoarseSize[2] = { 0, 0 };
   vtkBloomPassFFT TailFFT;
-  vtkSmartPointer<vtkTextureObject> CoarseBright, CoarseBloom;
+  vtkSmartPointer<vtkTextureObject> CoarseRows;   ///< the spread along x: nodes x pixel rows
+  vtkSmartPointer<vtkTextureObject> CoarseBright; ///< the bright pass on the grid
+  vtkSmartPointer<vtkTextureObject> CoarseBloom;  ///< the tail's convolution there
   unsigned int CoreBuffer = 0;
   std::map<std::string, unsigned int> Programs;
   vtkBloomPassFFT::UniformCache Locations;

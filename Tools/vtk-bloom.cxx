@@ -98,7 +98,7 @@ image: HDR bloom (vtkImageBloom). A preset is applied first; options then overri
   --psf-border B         reflect (default: conserves energy) | zero
   --psf-tail-scale F     1 (default: exact) | 2 | 4 | 8: the PSF's tail convolved on a grid F
                          times coarser, its core (within --psf-core-radius) at full resolution
-  --psf-core-radius R    the split's core radius in pixels (default: max(16, 4 F))
+  --psf-core-radius R    the split's core radius in pixels (default: 16)
   A frame with nothing above the threshold is written unchanged, without bloom work.
 
 blur: separable Gaussian (vtkImageSeparableGaussian), seed 004 semantics.

@@ -7,20 +7,22 @@
   j0 = floor(u) and j1 = min(j0 + 1, nodes - 1) with weights 1 - t and t, u = (i + 1/2) / f - 1/2
   clamped to [0, nodes - 1], t = u - j0 (Tent, as vtkBloomPSFSplit::TentWeights).
 
-  - SPLIT_DOWN: node (jx, jy) of `target` = the sum of the pixels of `source` (the bright pass)
-    that reach it, each times its weight for that node on both axes (Down: the transpose of
-    the bilinear interpolation, so the sum and the centroid are kept). A node gathers from the
-    pixels [f j - f, f j + 2 f) of each axis, which hold every pixel with a weight for it.
+  - SPLIT_DOWN_X, then SPLIT_DOWN_Y: node (jx, jy) of `target` = the sum of the pixels of
+    the bright pass that reach it, each times its weight for that node on both axes (Down: the
+    transpose of the bilinear interpolation, so the sum and the centroid are kept), one axis a
+    stage (x into a coarseSize.x x imageSize.y image, then y). A node gathers from the pixels
+    [f j - f, f j + 2 f) of its axis, which hold every pixel with a weight for it.
   - SPLIT_CORE: target(p) = sum_d core(d) source(p - d) over the core's offsets
     |d| <= CORE_RADIUS (each channel its own kernel: `weights` (2 R + 1)^2 vec4, row-major,
     entry (dy + R) (2 R + 1) + dx + R for offset (dx, dy)), the source extended by half-sample
-    reflection (REFLECT) or zeros, plus the coarse tail `tail` (the tail's convolution) interpolated
-    bilinearly at p. A work group of CORE_COLUMNS invocations makes CORE_COLUMNS x CORE_ROWS
-    outputs, one column each: the source's rows it needs pass through shared memory one at a
-    time (each read once from the texture), and each sample read from it serves every output
-    row it reaches (CORE_ROWS accumulators an invocation). With zeros this gather is the
-    scatter-and-drop of the CPU's core; with reflection it equals the CPU's scatter-and-fold for
-    point-symmetric kernels (Airy, Gaussians).
+    reflection (REFLECT) or zeros, plus the coarse tail `tail` (the tail's convolution)
+    interpolated bilinearly at p. A work group of CORE_LANES x CORE_ROWS invocations makes
+    4 CORE_LANES x CORE_ROWS outputs, four adjacent ones an invocation: the source rows the
+    group needs pass through shared memory one at a time (each read once from the texture),
+    and every weight read serves four outputs (the loop over a kernel row unrolled where the
+    compiler can, so that each shared sample is read once for the four). With zeros this gather
+    is the scatter-and-drop of the CPU's core; with reflection it equals the CPU's
+    scatter-and-fold for point-symmetric kernels (Airy, Gaussians).
 =========================================================================*/
 
 uniform ivec2 imageSize;
@@ -36,7 +38,7 @@ void Tent(int i, int nodes, out int j0, out int j1, out float t)
   t = u - float(j0);
 }
 
-#ifdef SPLIT_DOWN
+#if defined(SPLIT_DOWN_X) || defined(SPLIT_DOWN_Y)
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D target;
 
@@ -48,46 +50,68 @@ float NodeWeight(int i, int node, int nodes)
   return (j0 == node ? 1.0 - t : 0.0) + (j1 == node ? t : 0.0);
 }
 
+// SPLIT_DOWN_X: (node x, pixel row y) = the weighted sum along x of `source` (the bright pass);
+// SPLIT_DOWN_Y: (node x, node y) = the weighted sum along y of `source` (the first stage's).
 void main()
 {
-  const ivec2 node = ivec2(gl_GlobalInvocationID.xy);
-  if (any(greaterThanEqual(node, coarseSize)))
+  const ivec2 at = ivec2(gl_GlobalInvocationID.xy);
+#ifdef SPLIT_DOWN_X
+  const int axis = 0;
+  const ivec2 size = ivec2(coarseSize.x, imageSize.y);
+#else
+  const int axis = 1;
+  const ivec2 size = coarseSize;
+#endif
+  if (any(greaterThanEqual(at, size)))
   {
     return;
   }
-  const ivec2 lo = max(node * scale - scale, ivec2(0));
-  const ivec2 hi = min(node * scale + 2 * scale, imageSize);
+  const int node = at[axis];
+  const int lo = max(node * scale - scale, 0);
+  const int hi = min(node * scale + 2 * scale, imageSize[axis]);
   vec3 sum = vec3(0.0);
-  for (int y = lo.y; y < hi.y; ++y)
+  ivec2 from = at;
+  for (int i = lo; i < hi; ++i)
   {
-    const float wy = NodeWeight(y, node.y, coarseSize.y);
-    if (wy == 0.0)
-    {
-      continue;
-    }
-    vec3 row = vec3(0.0);
-    for (int x = lo.x; x < hi.x; ++x)
-    {
-      row += NodeWeight(x, node.x, coarseSize.x) * texelFetch(source, ivec2(x, y), 0).rgb;
-    }
-    sum += wy * row;
+    from[axis] = i;
+    sum += NodeWeight(i, node, coarseSize[axis]) * texelFetch(source, from, 0).rgb;
   }
-  imageStore(target, node, vec4(sum, 0.0));
+  imageStore(target, at, vec4(sum, 0.0));
 }
 #endif
 
 #ifdef SPLIT_CORE
-layout(local_size_x = CORE_COLUMNS) in;
+// CORE_LANES x CORE_ROWS invocations; each makes CORE_OUTPUTS adjacent outputs of its row.
+layout(local_size_x = CORE_LANES, local_size_y = CORE_ROWS) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D target;
+const int R = CORE_RADIUS;
+const int K = 2 * CORE_RADIUS + 1;
 layout(std430, binding = 0) readonly buffer CoreWeights
 {
   vec4 weights[];
 };
 uniform sampler2D tail;
 
-const int R = CORE_RADIUS;
-const int SPAN = CORE_COLUMNS + 2 * CORE_RADIUS;
-shared vec3 row[SPAN];
+const int P = CORE_OUTPUTS;
+const int WIDTH = P * CORE_LANES;
+const int SPAN = WIDTH + 2 * CORE_RADIUS;
+// One source row, a plane per channel, one float of padding every 32: invocation l reads
+// sample P l + j, and the padding puts the 32 lanes' reads in 32 different banks.
+const int PADDED = SPAN + SPAN / 32 + 1;
+shared float red[PADDED];
+shared float green[PADDED];
+shared float blue[PADDED];
+
+int Slot(int i)
+{
+  return i + i / 32;
+}
+
+vec3 Sample(int i)
+{
+  const int at = Slot(i);
+  return vec3(red[at], green[at], blue[at]);
+}
 
 // The source pixel at i along an axis of n, or -1 where the extension is zero.
 int Extend(int i, int n)
@@ -102,64 +126,71 @@ int Extend(int i, int n)
 #endif
 }
 
+// The tail's bilinear interpolation at pixel (x, y).
+vec3 Tail(int x, int y)
+{
+  int i0, i1, j0, j1;
+  float tx, ty;
+  Tent(x, coarseSize.x, i0, i1, tx);
+  Tent(y, coarseSize.y, j0, j1, ty);
+  const vec3 top = (1.0 - tx) * texelFetch(tail, ivec2(i0, j0), 0).rgb +
+    tx * texelFetch(tail, ivec2(i1, j0), 0).rgb;
+  const vec3 bottom = (1.0 - tx) * texelFetch(tail, ivec2(i0, j1), 0).rgb +
+    tx * texelFetch(tail, ivec2(i1, j1), 0).rgb;
+  return (1.0 - ty) * top + ty * bottom;
+}
+
 void main()
 {
-  const int x0 = int(gl_WorkGroupID.x) * CORE_COLUMNS;
-  const int y0 = int(gl_WorkGroupID.y) * CORE_ROWS;
-  const int lx = int(gl_LocalInvocationID.x);
-  vec3 acc[CORE_ROWS];
-  for (int o = 0; o < CORE_ROWS; ++o)
+  const int x0 = int(gl_WorkGroupID.x) * WIDTH;
+  const int top = int(gl_WorkGroupID.y) * CORE_ROWS;
+  const int y = top + int(gl_LocalInvocationID.y);
+  const int lane = int(gl_LocalInvocationID.x);
+  const int first = int(gl_LocalInvocationID.y) * CORE_LANES + lane;
+  vec3 acc[P];
+  for (int p = 0; p < P; ++p)
   {
-    acc[o] = vec3(0.0);
+    acc[p] = vec3(0.0);
   }
-  for (int yy = y0 - R; yy < y0 + CORE_ROWS + R; ++yy)
+  // The rows the work group's outputs read, each through shared memory once; row y reads
+  // source row yy with kernel row dy = y - yy.
+  for (int yy = top - R; yy < top + CORE_ROWS + R; ++yy)
   {
     const int sy = Extend(yy, imageSize.y);
-    for (int k = lx; k < SPAN; k += CORE_COLUMNS)
+    for (int k = first; k < SPAN; k += CORE_LANES * CORE_ROWS)
     {
       const int sx = Extend(x0 - R + k, imageSize.x);
-      row[k] = sx < 0 || sy < 0 ? vec3(0.0) : texelFetch(source, ivec2(sx, sy), 0).rgb;
+      const vec3 v = sx < 0 || sy < 0 ? vec3(0.0) : texelFetch(source, ivec2(sx, sy), 0).rgb;
+      const int at = Slot(k);
+      red[at] = v.r;
+      green[at] = v.g;
+      blue[at] = v.b;
     }
     barrier();
-    // Output row y0 + o reads this row at offset dy = y0 + o - yy; the sample at x + e has
-    // offset dx = -e.
-    for (int e = -R; e <= R; ++e)
+    const int dy = y - yy;
+    if (dy >= -R && dy <= R)
     {
-      const vec3 v = row[lx + R + e];
-      for (int o = 0; o < CORE_ROWS; ++o)
+      // Output P lane + p gathers sample P lane + p + 2 R - k with weight (dx = k - R, dy);
+      // unrolled, each sample is read once for the P outputs.
+      const int base = (dy + R) * K;
+#pragma optionNV(unroll all)
+      for (int k = 0; k < K; ++k)
       {
-        const int dy = y0 + o - yy;
-        if (dy >= -R && dy <= R)
+        const vec3 w = weights[base + k].rgb;
+        for (int p = 0; p < P; ++p)
         {
-          acc[o] += weights[(dy + R) * (2 * R + 1) + R - e].rgb * v;
+          acc[p] += w * Sample(P * lane + p + 2 * R - k);
         }
       }
     }
     barrier();
   }
-  const int x = x0 + lx;
-  if (x >= imageSize.x)
+  for (int p = 0; p < P; ++p)
   {
-    return;
-  }
-  int i0, i1;
-  float tx;
-  Tent(x, coarseSize.x, i0, i1, tx);
-  for (int o = 0; o < CORE_ROWS; ++o)
-  {
-    const int y = y0 + o;
-    if (y < imageSize.y)
+    const int x = x0 + P * lane + p;
+    if (x < imageSize.x && y < imageSize.y)
     {
-      vec3 value = acc[o];
-      int j0, j1;
-      float ty;
-      Tent(y, coarseSize.y, j0, j1, ty);
-      const vec3 top = (1.0 - tx) * texelFetch(tail, ivec2(i0, j0), 0).rgb +
-        tx * texelFetch(tail, ivec2(i1, j0), 0).rgb;
-      const vec3 bottom = (1.0 - tx) * texelFetch(tail, ivec2(i0, j1), 0).rgb +
-        tx * texelFetch(tail, ivec2(i1, j1), 0).rgb;
-      value += (1.0 - ty) * top + ty * bottom;
-      imageStore(target, ivec2(x, y), vec4(value, 0.0));
+      imageStore(target, ivec2(x, y), vec4(acc[p] + Tail(x, y), 0.0));
     }
   }
 }
