@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """Plot vtkBloomPass's exact pass and fast mode, per preset, on a GPU: error against time.
 
-    /usr/bin/python3 scripts/plot-gpu-quality.py quality.csv out.png
+    /usr/bin/python3 scripts/plot-gpu-quality.py quality.csv out.png [CARD]
 
 quality.csv is written by `BloomPassFrameTime --quality SCENE WIDTH HEIGHT FRAMES quality.csv`
 (scripts/gpu-run.sh runs it on the H100 at 3840x2160; docs/data/gpu-quality-h100.csv is that
-run). x: the bloom's GPU time over the float-target-plus-copy floor; y: relative L2 of the
+run, docs/data/gpu-quality-h200.csv the latest, on an NVIDIA H200; CARD names the card in the
+title, default "NVIDIA H100"). x: the bloom's GPU time over the float-target-plus-copy floor; y: relative L2 of the
 colour against vtkImageBloom REFERENCE (double) on the same float render. One colour per
 preset; a square for the exact pass, a cross for the fast mode, a line joining the two. Log-log,
 with VTK's vtkChartXY, headless (needs an X display: xvfb-run), like scripts/plot-accuracy.py;
@@ -24,13 +25,14 @@ from vtkbloom_charts import COLOURS, log_log_chart, save_png, xy_table  # noqa: 
 
 def main():
     source, target = sys.argv[1], sys.argv[2]
+    card = sys.argv[3] if len(sys.argv) > 3 else "NVIDIA H100"
     presets = OrderedDict()
     with open(source, newline="") as f:
         for row in csv.DictReader(f):
             presets.setdefault(row["preset"], {})[row["quality"]] = (
                 float(row["gpu_ms_over_floor"]), float(row["rel_l2_vs_reference"]))
     view, chart = log_log_chart(
-        "vtkBloomPass on an NVIDIA H100, 3840x2160: exact pass (square) and fast mode (cross)",
+        "vtkBloomPass on an " + card + ", 3840x2160: exact pass (square) and fast mode (cross)",
         "bloom over the floor, GPU time (ms)", "relative L2 against vtkImageBloom REFERENCE",
         (1000, 650))
     for index, (preset, rows) in enumerate(presets.items()):
