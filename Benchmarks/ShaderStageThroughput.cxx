@@ -4,7 +4,11 @@
 // then the copy into an RGBA8 texture (a window's colour buffer, where the composite writes)
 // as fragments, as a blit and as a compute pass, whose outputs must be the same bytes.
 // It measures what bounds a chain of fragment passes on a GPU whose fragment shading runs on
-// part of the chip only (an NVIDIA H100: docs/gpu.md).
+// part of the chip only (an NVIDIA H100: docs/gpu.md). Last, the CPU's cost of a small
+// compute dispatch (64 x 64) and of each state change vtkBloomPass's chain makes around one
+// (the barrier, the image and texture binds, the program, the unbinds, a dozen uniforms),
+// added one at a time: the submission's CPU time per dispatch over 2000 dispatches, and the
+// wall time to their completion (issue 37, part 2).
 //
 //   ShaderStageThroughput [WIDTH HEIGHT [FRAMES]]      (default 3840 2160 50)
 //
@@ -20,6 +24,7 @@
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkRenderWindow.h"
 
+#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
@@ -125,6 +130,74 @@ void Dispatch(GLuint program, GLuint image, GLenum format, int w, int h)
   glMemoryBarrier(
     GL_TEXTURE_FETCH_BARRIER_BIT | GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
 }
+}
+
+// The CPU's cost per dispatch of the chain's state changes, added one at a time (see above).
+void DispatchCost(GLuint programs[2])
+{
+  const int n = 64, count = 2000;
+  GLuint images[2] = { Texture(n, n, nullptr), Texture(n, n, nullptr) };
+  const char* steps[] = { "dispatch only (program, image, texture bound once)",
+    "+ a barrier each (texture fetch, image access)", "+ the image bound each (ping-pong)",
+    "+ the source texture bound each (glActiveTexture, glBindTexture)",
+    "+ the program switched each (two programs)", "+ image, texture and program unbound after each",
+    "+ 12 glUniform calls each" };
+  std::printf("\nThe CPU's cost of a %dx%d compute dispatch and the state changes around it, "
+              "%d dispatches a row, added one at a time\n\n| each dispatch | submission, CPU "
+              "us a dispatch | to completion, us a dispatch |\n|---|---|---|\n",
+    n, n, count);
+  for (int level = 0; level < 7; ++level)
+  {
+    glUseProgram(programs[0]);
+    glUniform1i(glGetUniformLocation(programs[0], "source"), 0);
+    glUniform1i(glGetUniformLocation(programs[1], "source"), 0);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, images[0]);
+    glBindImageTexture(0, images[1], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+    glFinish();
+    const GLint tapsAt = glGetUniformLocation(programs[0], "unused");
+    const auto start = std::chrono::steady_clock::now();
+    for (int i = 0; i < count; ++i)
+    {
+      const int from = i % 2, to = 1 - from;
+      if (level >= 4)
+      {
+        glUseProgram(programs[i % 2]);
+      }
+      if (level >= 3)
+      {
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, images[from]);
+      }
+      if (level >= 2)
+      {
+        glBindImageTexture(0, images[to], 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+      }
+      for (int u = 0; level >= 6 && u < 12; ++u)
+      {
+        glUniform1i(tapsAt, u); // location -1 (no such uniform): the call, not the value
+      }
+      glDispatchCompute(n / 16, n / 16, 1);
+      if (level >= 1)
+      {
+        glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
+      }
+      if (level >= 5)
+      {
+        glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA16F);
+        glBindTexture(GL_TEXTURE_2D, 0);
+        glUseProgram(0);
+      }
+    }
+    const auto submitted = std::chrono::steady_clock::now();
+    glFinish();
+    const auto done = std::chrono::steady_clock::now();
+    const double us = 1e6 / count;
+    std::printf("| %s | %.2f | %.2f |\n", steps[level],
+      us * std::chrono::duration<double>(submitted - start).count(),
+      us * std::chrono::duration<double>(done - start).count());
+  }
+  glDeleteTextures(2, images);
 }
 
 int main(int argc, char* argv[])
@@ -263,6 +336,11 @@ int main(int argc, char* argv[])
   }
   glDeleteProgram(fragment);
   glDeleteProgram(compute);
+  GLuint programs[2] = { Link({ Compile(GL_COMPUTE_SHADER, WithTaps(StageThroughputCS, 1)) }),
+    Link({ Compile(GL_COMPUTE_SHADER, WithTaps(StageThroughputCS, 9)) }) };
+  DispatchCost(programs);
+  glDeleteProgram(programs[0]);
+  glDeleteProgram(programs[1]);
   glUseProgram(0);
   glBindVertexArray(0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
