@@ -16,6 +16,8 @@
 //                                  separable pairs as two passes, as before issue 37's fusion)
 //   BloomPassFrameTime --unrestricted ...  as above, RestrictToBrightRegion off (the whole
 //                                  chain every frame, no bright-region probes)
+//   BloomPassFrameTime --no-read-back ...  as above, SkipEmptyBloom off too: the CPU never waits
+//                                  for the GPU in the pass (no query or region read back)
 //   BloomPassFrameTime --samples N ...  as above in a window of N samples (multisampling)
 //   BloomPassFrameTime --resolved ...  as above, vtkBloomPass::ThresholdSamplesOff (a
 //                                  multisampled scene thresholded after its resolve)
@@ -105,6 +107,7 @@ int Convolution = -1;      // --direct, --fft: vtkBloomParameters::ConvolutionMo
 int SingleDraw = -1;       // --single-draw N: vtkBloomPass::SingleDrawSamples
 bool Pairs = false;        // --pairs: vtkBloomPass::FuseSeparablePassesOff
 bool Unrestricted = false; // --unrestricted: vtkBloomParameters::RestrictToBrightRegionOff
+bool NoReadBack = false;   // --no-read-back: SkipEmptyBloomOff too (the CPU never waits)
 int Samples = 0;           // --samples N: a multisampled window
 bool Resolved = false;     // --resolved: vtkBloomPass::ThresholdSamplesOff
 
@@ -126,9 +129,13 @@ bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::strin
     timer.Bloom->SetSingleDrawSamples(SingleDraw);
   }
   timer.Bloom->SetFuseSeparablePasses(!Pairs);
-  if (Unrestricted)
+  if (Unrestricted || NoReadBack)
   {
     timer.Bloom->GetParameters()->SetRestrictToBrightRegion(false);
+  }
+  if (NoReadBack)
+  {
+    timer.Bloom->GetParameters()->SetSkipEmptyBloom(false);
   }
   timer.Bloom->SetThresholdSamples(!Resolved);
   if (Convolution >= 0)
@@ -886,6 +893,8 @@ bool RenderersTable(const std::string& scene, int width, int height, int frames)
     defaults->SetThresholdMode(own->GetThresholdMode());
     defaults->SetThreshold(own->GetThreshold());
     defaults->SetKnee(own->GetKnee());
+    defaults->SetRestrictToBrightRegion(!Unrestricted && !NoReadBack);
+    defaults->SetSkipEmptyBloom(!NoReadBack);
     pass->SetParameters(defaults);
     pass->SetDelegatePass(steps);
     pass->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
@@ -945,7 +954,7 @@ int main(int argc, char* argv[])
     (std::strcmp(argv[1], "--fast") == 0 || std::strcmp(argv[1], "--fragment") == 0 ||
       std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0 ||
       std::strcmp(argv[1], "--pairs") == 0 || std::strcmp(argv[1], "--resolved") == 0 ||
-      std::strcmp(argv[1], "--unrestricted") == 0 ||
+      std::strcmp(argv[1], "--unrestricted") == 0 || std::strcmp(argv[1], "--no-read-back") == 0 ||
       (argc > 2 && std::strcmp(argv[1], "--single-draw") == 0) ||
       (argc > 2 && std::strcmp(argv[1], "--samples") == 0)))
   {
@@ -971,6 +980,10 @@ int main(int argc, char* argv[])
     else if (std::strcmp(argv[1], "--unrestricted") == 0)
     {
       Unrestricted = true;
+    }
+    else if (std::strcmp(argv[1], "--no-read-back") == 0)
+    {
+      NoReadBack = true;
     }
     else
     {
