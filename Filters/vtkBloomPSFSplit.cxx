@@ -22,6 +22,23 @@ double CoreWindow(double r, double coreRadius)
   }
   return 0.5 + 0.5 * std::cos(vtkMath::Pi() * (r - half) / half);
 }
+
+// Every pixel's tent weights along an axis of n pixels and `nodes` nodes.
+struct AxisTents
+{
+  std::vector<int> J0, J1;
+  std::vector<double> T;
+  AxisTents(int n, int scale, int nodes)
+    : J0(n)
+    , J1(n)
+    , T(n)
+  {
+    for (int i = 0; i < n; ++i)
+    {
+      vtkBloomPSFSplit::TentWeights(i, scale, nodes, this->J0[i], this->J1[i], this->T[i]);
+    }
+  }
+};
 }
 
 //------------------------------------------------------------------------------
@@ -102,20 +119,16 @@ void vtkBloomPSFSplit::Down(
 {
   const int cw = CoarseSize(width, scale), ch = CoarseSize(height, scale);
   std::fill(coarse, coarse + static_cast<size_t>(cw) * ch * nc, 0.0);
-  std::vector<int> x0(width), x1(width);
-  std::vector<double> tx(width);
-  for (int x = 0; x < width; ++x)
-  {
-    TentWeights(x, scale, cw, x0[x], x1[x], tx[x]);
-  }
+  const AxisTents across(width, scale, cw), down(height, scale, ch);
+  const std::vector<int>& x0 = across.J0;
+  const std::vector<int>& x1 = across.J1;
+  const std::vector<double>& tx = across.T;
   for (int y = 0; y < height; ++y)
   {
-    int y0, y1;
-    double ty;
-    TentWeights(y, scale, ch, y0, y1, ty);
+    const double ty = down.T[y];
     const double* row = image + static_cast<size_t>(y) * width * nc;
-    double* r0 = coarse + static_cast<size_t>(y0) * cw * nc;
-    double* r1 = coarse + static_cast<size_t>(y1) * cw * nc;
+    double* r0 = coarse + static_cast<size_t>(down.J0[y]) * cw * nc;
+    double* r1 = coarse + static_cast<size_t>(down.J1[y]) * cw * nc;
     for (int x = 0; x < width; ++x)
     {
       for (int c = 0; c < nc; ++c)
@@ -135,19 +148,15 @@ void vtkBloomPSFSplit::AddUp(
   const double* coarse, int width, int height, int nc, int scale, double* image)
 {
   const int cw = CoarseSize(width, scale), ch = CoarseSize(height, scale);
-  std::vector<int> x0(width), x1(width);
-  std::vector<double> tx(width);
-  for (int x = 0; x < width; ++x)
-  {
-    TentWeights(x, scale, cw, x0[x], x1[x], tx[x]);
-  }
+  const AxisTents across(width, scale, cw), down(height, scale, ch);
+  const std::vector<int>& x0 = across.J0;
+  const std::vector<int>& x1 = across.J1;
+  const std::vector<double>& tx = across.T;
   for (int y = 0; y < height; ++y)
   {
-    int y0, y1;
-    double ty;
-    TentWeights(y, scale, ch, y0, y1, ty);
-    const double* r0 = coarse + static_cast<size_t>(y0) * cw * nc;
-    const double* r1 = coarse + static_cast<size_t>(y1) * cw * nc;
+    const double ty = down.T[y];
+    const double* r0 = coarse + static_cast<size_t>(down.J0[y]) * cw * nc;
+    const double* r1 = coarse + static_cast<size_t>(down.J1[y]) * cw * nc;
     double* row = image + static_cast<size_t>(y) * width * nc;
     for (int x = 0; x < width; ++x)
     {

@@ -25,15 +25,6 @@
 
 namespace
 {
-// Counts the error events of a filter (and keeps them off the terminal).
-class ErrorCount : public vtkCommand
-{
-public:
-  static ErrorCount* New() { return new ErrorCount; }
-  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
-  int Count = 0;
-};
-
 vtkSmartPointer<vtkImageData> Image(
   int w, int h, int nc, int type, const std::function<double(int, int, int)>& value, int slices = 1)
 {
@@ -318,7 +309,7 @@ TEST(FiltersPSF, BadParametersGiveErrorsAndEmptyOutputs)
   auto input = Scene(20, 16, 3, VTK_FLOAT);
   auto check = [&](vtkImageBloom* bloom, vtkImageData* in, const char* what)
   {
-    vtkNew<ErrorCount> errors;
+    vtkNew<vtkBloomTest::EventCounter> errors; // keeps them off the terminal
     bloom->AddObserver(vtkCommand::ErrorEvent, errors);
     bloom->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
     bloom->SetInputData(in);

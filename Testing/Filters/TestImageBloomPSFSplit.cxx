@@ -7,6 +7,8 @@
 #include <vtkImageBloom.h>
 #include <vtkImageBloomThreshold.h>
 
+#include "vtkBloomTestSupport.h"
+
 #include <vtkCommand.h>
 #include <vtkDataArray.h>
 #include <vtkImageData.h>
@@ -22,14 +24,6 @@
 
 namespace
 {
-class ErrorCount : public vtkCommand
-{
-public:
-  static ErrorCount* New() { return new ErrorCount; }
-  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
-  int Count = 0;
-};
-
 vtkSmartPointer<vtkImageData> Image(int w, int h, const std::function<double(int, int, int)>& value)
 {
   auto image = vtkSmartPointer<vtkImageData>::New();
@@ -200,7 +194,7 @@ TEST(FiltersPSFSplit, TheTailsGridMovesNoLight)
 TEST(FiltersPSFSplit, BadValuesAreRefused)
 {
   vtkNew<vtkImageBloom> bloom;
-  vtkNew<ErrorCount> errors;
+  vtkNew<vtkBloomTest::EventCounter> errors;
   bloom->GetParameters()->AddObserver(vtkCommand::ErrorEvent, errors);
   for (int scale : { 0, 3, 16, -1 })
   {

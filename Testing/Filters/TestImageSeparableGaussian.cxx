@@ -20,14 +20,6 @@ using vtkBloomRef::Texture;
 
 namespace
 {
-class ErrorCounter : public vtkCommand
-{
-public:
-  static ErrorCounter* New() { return new ErrorCounter; }
-  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
-  int Count = 0;
-};
-
 struct Settings
 {
   double Sigma[3] = { 2.0, 2.0, 0.0 };
@@ -396,7 +388,7 @@ TEST(FiltersGaussian, NegativeSigmaIsAnError)
   for (int axis = 0; axis < 3; ++axis)
   {
     vtkNew<vtkImageSeparableGaussian> filter;
-    vtkNew<ErrorCounter> errors;
+    vtkNew<vtkBloomTest::EventCounter> errors;
     filter->AddObserver(vtkCommand::ErrorEvent, errors);
     filter->GetExecutive()->AddObserver(vtkCommand::ErrorEvent, errors);
     double sigma[3] = { 1.0, 1.0, 0.0 };

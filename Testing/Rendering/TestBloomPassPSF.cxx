@@ -194,15 +194,6 @@ DeltaError BloomDelta(int width, int height, int x0, int y0, int r)
   return e;
 }
 
-// Counts the error events of the object it observes.
-class ErrorCount : public vtkCommand
-{
-public:
-  static ErrorCount* New() { return new ErrorCount; }
-  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
-  int Count = 0;
-};
-
 const char* BorderName(int border)
 {
   return border == vtkImageSeparableGaussian::REFLECT ? "REFLECT" : "ZERO";
@@ -522,7 +513,7 @@ TEST(RenderingBloomPassPSF, WithoutComputeShadersTheSceneRendersUnbloomedWithOne
   w.Bloom->GetParameters()->SetBloomModeToPSF();
   w.Bloom->SetSimulateComputeShaderFailure(true);
   w.Bloom->CaptureResultOn();
-  vtkNew<ErrorCount> errors;
+  vtkNew<vtkBloomTest::EventCounter> errors;
   w.Bloom->AddObserver(vtkCommand::ErrorEvent, errors);
   for (int frame = 0; frame < 3; ++frame)
   {

@@ -9,9 +9,9 @@
 #include "vtkBloomPass.h"
 #include "vtkBloomPassTestSphere.h"
 #include "vtkBloomPassThroughRenderer.h"
+#include "vtkBloomTestSupport.h"
 
 #include "vtkActor.h"
-#include "vtkCallbackCommand.h"
 #include "vtkCamera.h"
 #include "vtkCameraPass.h"
 #include "vtkCommand.h"
@@ -308,19 +308,6 @@ double LargestDifference(const Frame& a, const Frame& b)
   return largest;
 }
 
-// How many times `object` invokes `event` from now on (the returned count lives as long as it).
-struct EventCount
-{
-  EventCount(vtkObject* object, unsigned long event)
-  {
-    this->Command->SetClientData(&this->Count);
-    this->Command->SetCallback(
-      [](vtkObject*, unsigned long, void* data, void*) { ++*static_cast<int*>(data); });
-    object->AddObserver(event, this->Command);
-  }
-  int Count = 0;
-  vtkNew<vtkCallbackCommand> Command;
-};
 }
 
 //------------------------------------------------------------------------------
@@ -366,12 +353,13 @@ TEST(RenderingBloomPassTiles, TilesServedFromAKeptFrameAreThatFrame)
     EXPECT_EQ(off, 0.0);
 
     // A frame of another size kept: the tiles bloom alone, and the pass says so once.
-    const EventCount warnings(pass, vtkCommand::WarningEvent);
+    vtkNew<vtkBloomTest::EventCounter> warnings;
+    pass->AddObserver(vtkCommand::WarningEvent, warnings);
     window->SetSize(w + 1, h);
     const Frame alone = Grab(window, scale);
     EXPECT_EQ(alone.Width, (w + 1) * scale);
     EXPECT_FALSE(pass->GetLastTileFromKeptFrame());
-    EXPECT_EQ(warnings.Count, 1);
+    EXPECT_EQ(warnings->Count, 1);
     pass->ReleaseKeptFrame();
     pass->GetKeptFrameSize(kept);
     EXPECT_EQ(kept[0], 0);
@@ -383,9 +371,10 @@ TEST(RenderingBloomPassTiles, TilesServedFromAKeptFrameAreThatFrame)
 TEST(RenderingBloomPassTiles, AnUnknownKeptFrameModeIsRefused)
 {
   vtkNew<vtkBloomPass> pass;
-  const EventCount errors(pass, vtkCommand::ErrorEvent);
+  vtkNew<vtkBloomTest::EventCounter> errors;
+  pass->AddObserver(vtkCommand::ErrorEvent, errors);
   pass->SetKeptFrameMode(3);
   pass->SetKeptFrameMode(-1);
-  EXPECT_EQ(errors.Count, 2);
+  EXPECT_EQ(errors->Count, 2);
   EXPECT_EQ(pass->GetKeptFrameMode(), vtkBloomPass::KEPT_FRAME_OFF);
 }

@@ -2,6 +2,7 @@
 #ifndef vtkBloomTestSupport_h
 #define vtkBloomTestSupport_h
 
+#include <vtkCommand.h>
 #include <vtkImageData.h>
 #include <vtkSmartPointer.h>
 
@@ -14,6 +15,16 @@ class vtkImageAlgorithm;
 
 namespace vtkBloomTest
 {
+/// Counts the events it observes: `vtkNew<EventCounter> errors;
+/// filter->AddObserver(vtkCommand::ErrorEvent, errors);` then errors->Count.
+class EventCounter : public vtkCommand
+{
+public:
+  static EventCounter* New() { return new EventCounter; }
+  void Execute(vtkObject*, unsigned long, void*) override { ++this->Count; }
+  int Count = 0;
+};
+
 /// Update `algorithm` (a filter, or a reader with its file name set) and return a copy of its
 /// output, which outlives it.
 vtkSmartPointer<vtkImageData> UpdateAndCopy(vtkImageAlgorithm* algorithm);
