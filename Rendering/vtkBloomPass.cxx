@@ -496,6 +496,15 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self, vtkTextureObject* so
   {
     why = "PSF bloom's compute programs did not build (simulated for a test).";
   }
+  // The other convolution's buffers go (a frame-wide PSF's exact grid holds 1.9 GB).
+  if (this->UsePSFSplit && this->FFT.GetGridSize()[0] != 0)
+  {
+    this->FFT.ReleaseGraphicsResources(res.Context);
+  }
+  else if (!this->UsePSFSplit && this->PSFSplit.GetGridSize()[0] != 0)
+  {
+    this->PSFSplit.ReleaseGraphicsResources(res.Context);
+  }
   const int* size = res.PSFBright.Size;
   if (!why.empty() ||
     !(this->UsePSFSplit ? this->PSFSplit.Prepare(res.Context, size[0], size[1], why)

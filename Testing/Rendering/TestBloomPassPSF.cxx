@@ -422,8 +422,8 @@ TEST(RenderingBloomPassPSF, ADeltaBloomsIntoThePSFItselfOnLinesLongerThan4096)
 //------------------------------------------------------------------------------
 TEST(RenderingBloomPassPSF, FollowsAChangeOfPSFOrStrengthBetweenFrames)
 {
-  // The PSFs and their spectra are kept between frames: a new PSF must replace them, a new
-  // strength must not need them remade. Each frame is checked against the filter.
+  // The PSFs and their spectra are kept between frames: a new PSF (or split) must replace them,
+  // a new strength must not need them remade. Each frame is checked against the filter.
   BloomWindow w(150, 100);
   ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
   w.Bloom->SetEmissionSourceToScene();
@@ -453,6 +453,16 @@ TEST(RenderingBloomPassPSF, FollowsAChangeOfPSFOrStrengthBetweenFrames)
   check("an image PSF");
   parameters->SetPSFBorderMode(vtkImageSeparableGaussian::ZERO);
   check("ZERO borders");
+  // Split and exact in turn: each convolution's resources go when the other takes over.
+  parameters->SetPSFType(vtkBloomParameters::PSF_GAUSSIANS);
+  parameters->SetPSFTailScale(4);
+  check("split");
+  parameters->SetPSFCoreRadius(8);
+  check("a narrower core");
+  parameters->SetPSFTailScale(1);
+  check("exact again");
+  parameters->SetPSFTailScale(2);
+  check("split again");
 }
 
 //------------------------------------------------------------------------------
