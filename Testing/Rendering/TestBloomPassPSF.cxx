@@ -538,6 +538,33 @@ TEST(RenderingBloomPassPSF, WithoutComputeShadersTheSceneRendersUnbloomedWithOne
 }
 
 //------------------------------------------------------------------------------
+TEST(RenderingBloomPassPSF, ASplitCoreWiderThanTheGPUsLimitIsRefusedWithOneError)
+{
+  // vtkBloomPassPSFSplit::MaximumCoreRadius (256): a wider core is refused, once, and the
+  // scene renders unbloomed; a core within the limit then blooms again.
+  BloomWindow w(64, 48);
+  ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
+  w.Bloom->SetEmissionSourceToScene();
+  w.Bloom->CaptureResultOn();
+  vtkBloomParameters* parameters = w.Bloom->GetParameters();
+  SetPSF(parameters, GAUSSIANS, 300, vtkImageSeparableGaussian::REFLECT);
+  parameters->SetPSFTailScale(4);
+  parameters->SetPSFCoreRadius(257);
+  vtkNew<vtkBloomTest::EventCounter> errors;
+  w.Bloom->AddObserver(vtkCommand::ErrorEvent, errors);
+  for (int frame = 0; frame < 2; ++frame)
+  {
+    w.Window->Render();
+  }
+  EXPECT_EQ(errors->Count, 1);
+  EXPECT_TRUE(w.Bloom->GetLastBloomSkipped());
+  parameters->SetPSFCoreRadius(256);
+  w.Window->Render();
+  EXPECT_EQ(errors->Count, 1);
+  EXPECT_FALSE(w.Bloom->GetLastBloomSkipped());
+}
+
+//------------------------------------------------------------------------------
 TEST(RenderingBloomPassPSF, ThePyramidModeIsUnchangedAfterPSFMode)
 {
   // Switching PSF mode on and off again renders the pyramid's bloom as before, bit for bit.
