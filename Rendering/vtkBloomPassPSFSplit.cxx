@@ -123,22 +123,25 @@ std::string vtkBloomPassPSFSplit::CoreDefines(bool reflect) const
 //------------------------------------------------------------------------------
 unsigned int vtkBloomPassPSFSplit::Program(const std::string& defines, std::string* why)
 {
+  // A program that did not build is remembered (id 0, with its log) and not built again.
   auto found = this->Programs.find(defines);
-  if (found != this->Programs.end())
+  if (found == this->Programs.end())
   {
-    return found->second;
+    std::string text = vtkBloomPassPSFSplitCS;
+    vtkShaderProgram::Substitute(text, "//VTK::System::Dec", "#version 430 core\n" + defines);
+    std::string log;
+    const unsigned int id = vtkBloomPassChainRunner::BuildComputeProgram(text.c_str(), &log);
+    if (!id)
+    {
+      this->BuildLog = log;
+    }
+    found = this->Programs.emplace(defines, id).first;
   }
-  std::string text = vtkBloomPassPSFSplitCS;
-  vtkShaderProgram::Substitute(text, "//VTK::System::Dec", "#version 430 core\n" + defines);
-  std::string log;
-  const unsigned int id = vtkBloomPassChainRunner::BuildComputeProgram(text.c_str(), &log);
-  if (!id && why)
+  if (!found->second && why)
   {
-    *why = "PSF bloom's split program did not build: " + log;
-    return 0;
+    *why = "PSF bloom's split program did not build: " + this->BuildLog;
   }
-  this->Programs[defines] = id;
-  return id;
+  return found->second;
 }
 
 //------------------------------------------------------------------------------

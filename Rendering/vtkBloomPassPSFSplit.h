@@ -34,7 +34,7 @@ public:
   vtkBloomPassPSFSplit(const vtkBloomPassPSFSplit&) = delete;
   vtkBloomPassPSFSplit& operator=(const vtkBloomPassPSFSplit&) = delete;
 
-  /// The widest core the pass convolves (its shared row holds 64 + 2 rc samples).
+  /// The widest core the pass convolves (its shared rows hold 256 + 2 rc samples a channel).
   static constexpr int MaximumCoreRadius = 256;
 
   /// Use the split kernels of red, green and blue (one scale) from now on, as `version`.
@@ -83,7 +83,8 @@ private:
   vtkSmartPointer<vtkTextureObject> CoarseBright; ///< the bright pass on the grid
   vtkSmartPointer<vtkTextureObject> CoarseBloom;  ///< the tail's convolution there
   unsigned int CoreBuffer = 0;
-  std::map<std::string, unsigned int> Programs;
+  std::map<std::string, unsigned int> Programs; ///< by #defines; 0: did not build
+  std::string BuildLog;                         ///< the last failed build's log
   vtkBloomPassFFT::UniformCache Locations;
 };
 
