@@ -3,7 +3,6 @@
 #include "vtkBloomFFTConvolution.h"
 #include "vtkBloomImageOps.h"
 #include "vtkBloomLinearOperator.h"
-#include "vtkBloomPSFSplit.h"
 #include "vtkDataArray.h"
 #include "vtkImageData.h"
 #include "vtkPointData.h"
@@ -420,12 +419,9 @@ void vtkBloomPSFKernels::Prepare(int width, int height, int scale, int coreRadiu
   std::vector<vtkBloomPSFKernel> cores, tails;
   for (const vtkBloomPSFKernel& kernel : this->Kernels)
   {
-    const vtkBloomPSFSplit split =
-      vtkBloomPSFSplit::Make({ kernel.Radius, kernel.Values }, scale, coreRadius);
-    cores.push_back({ split.Core.Radius, split.Core.Values });
-    // A channel with no tail convolves a zero kernel on the coarse grid.
-    tails.push_back(split.HasTail() ? vtkBloomPSFKernel{ split.Tail.Radius, split.Tail.Values }
-                                    : vtkBloomPSFKernel{ 0, { 0.0 } });
+    const vtkBloomPSFSplit split = vtkBloomPSFSplit::Make(kernel, scale, coreRadius);
+    cores.push_back(split.Core);
+    tails.push_back(split.GridKernel());
     this->TailScale = split.HasTail() ? scale : this->TailScale;
   }
   this->Convolution.Prepare(width, height, cores);

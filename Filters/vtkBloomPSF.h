@@ -25,6 +25,8 @@
 #ifndef vtkBloomPSF_h
 #define vtkBloomPSF_h
 
+#include "vtkBloomPSFSplit.h" // For the kernel type
+
 #include <memory>
 #include <string>
 #include <vector>
@@ -32,11 +34,8 @@
 class vtkImageData;
 struct vtkBloomBuffer;
 
-struct vtkBloomPSFKernel
-{
-  int Radius = 0;
-  std::vector<double> Values; ///< (2 Radius + 1)^2, row-major, sum 1
-};
+/// A PSF: (2 Radius + 1)^2 values, row-major (the whole PSF sums to 1; its split parts do not).
+using vtkBloomPSFKernel = vtkBloomPSFSplit::Kernel;
 
 /**
  * The convolution of an image size with a set of kernels, prepared once: FFTW's plans and

@@ -43,6 +43,10 @@ public:
 
   bool HasTail() const { return !this->Tail.Values.empty(); }
 
+  /// What the coarse grid's convolution takes: the tail, or a zero kernel for a PSF with none
+  /// (the other channels may have one).
+  Kernel GridKernel() const { return this->HasTail() ? this->Tail : Kernel{ 0, { 0.0 } }; }
+
   /// The split of `kernel` at tail scale `scale` (>= 2) and core radius `coreRadius` (>= 1).
   static vtkBloomPSFSplit Make(const Kernel& kernel, int scale, int coreRadius);
 

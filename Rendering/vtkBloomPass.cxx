@@ -467,8 +467,8 @@ bool vtkBloomPass::vtkInternals::UpdateKernels(vtkBloomParameters* parameters)
     vtkBloomPSFSplit splits[3];
     for (int c = 0; c < 3; ++c)
     {
-      splits[c] = vtkBloomPSFSplit::Make({ kernels[c].Radius, kernels[c].Values },
-        parameters->GetPSFTailScale(), parameters->GetEffectivePSFCoreRadius());
+      splits[c] = vtkBloomPSFSplit::Make(
+        kernels[c], parameters->GetPSFTailScale(), parameters->GetEffectivePSFCoreRadius());
       this->UsePSFSplit = this->UsePSFSplit || splits[c].HasTail();
     }
     if (this->UsePSFSplit)

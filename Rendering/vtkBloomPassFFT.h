@@ -54,8 +54,9 @@
 #ifndef vtkBloomPassFFT_h
 #define vtkBloomPassFFT_h
 
-#include "vtkSmartPointer.h" // For the kernel texture
-#include "vtkType.h"         // For vtkMTimeType
+#include "vtkBloomPSFSplit.h" // For the kernel type
+#include "vtkSmartPointer.h"  // For the kernel texture
+#include "vtkType.h"          // For vtkMTimeType
 
 #include <functional> // For StageTimer
 #include <map>
@@ -75,11 +76,7 @@ public:
   vtkBloomPassFFT& operator=(const vtkBloomPassFFT&) = delete;
 
   /// One colour channel's kernel: (2 Radius + 1)^2 values, row-major, centred on (R, R).
-  struct Kernel
-  {
-    int Radius = 0;
-    std::vector<double> Values;
-  };
+  using Kernel = vtkBloomPSFSplit::Kernel;
 
   /// The longest line one dispatch transforms: 4096 vec2 fill 32 KiB of shared memory.
   static constexpr int MaximumLength = 4096;

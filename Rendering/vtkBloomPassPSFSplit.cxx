@@ -52,10 +52,7 @@ void vtkBloomPassPSFSplit::SetKernels(const vtkBloomPSFSplit splits[3], vtkMTime
   {
     this->Splits[c] = splits[c];
     this->CoreRadius = std::max(this->CoreRadius, splits[c].Core.Radius);
-    // A channel with no tail convolves a zero kernel on the grid, as the CPU filter does.
-    tails[c] = splits[c].HasTail()
-      ? vtkBloomPassFFT::Kernel{ splits[c].Tail.Radius, splits[c].Tail.Values }
-      : vtkBloomPassFFT::Kernel{ 0, { 0.0 } };
+    tails[c] = splits[c].GridKernel();
   }
   this->Scale = splits[0].Scale;
   this->TailFFT.SetKernels(tails, version);
@@ -83,16 +80,25 @@ bool vtkBloomPassPSFSplit::Prepare(
   {
     return false;
   }
-  for (const std::string& defines : { std::string(DownDefines[0]), std::string(DownDefines[1]),
-         this->CoreDefines(false), this->CoreDefines(true) })
+  if (this->ProgramsRadius != this->CoreRadius)
   {
-    if (!this->Program(defines, &why))
+    // The four programs, found (or built) once per core radius.
+    const std::string defines[4] = { DownDefines[0], DownDefines[1], this->CoreDefines(false),
+      this->CoreDefines(true) };
+    unsigned int* ids[4] = { &this->DownPrograms[0], &this->DownPrograms[1], &this->CorePrograms[0],
+      &this->CorePrograms[1] };
+    for (int p = 0; p < 4; ++p)
     {
-      return false;
+      *ids[p] = this->Program(defines[p], &why);
+      if (!*ids[p])
+      {
+        return false;
+      }
     }
+    this->ProgramsRadius = this->CoreRadius;
   }
-  if (!this->CoarseBright || cw != this->CoarseSize[0] || ch != this->CoarseSize[1] ||
-    height != this->Size[1])
+  if (!this->CoarseBright || width != this->Size[0] || height != this->Size[1] ||
+    this->Scale != this->TentsScale)
   {
     this->ReleaseTextures();
     this->CoarseRows = GridTexture(context, cw, height);
@@ -100,9 +106,10 @@ bool vtkBloomPassPSFSplit::Prepare(
     this->CoarseBloom = GridTexture(context, cw, ch);
     this->CoarseSize[0] = cw;
     this->CoarseSize[1] = ch;
+    this->Size[0] = width;
+    this->Size[1] = height;
+    this->UploadTents();
   }
-  this->Size[0] = width;
-  this->Size[1] = height;
   if (this->CoresVersion != this->KernelsVersion)
   {
     this->UploadCores();
@@ -180,6 +187,33 @@ void vtkBloomPassPSFSplit::UploadCores()
 }
 
 //------------------------------------------------------------------------------
+void vtkBloomPassPSFSplit::UploadTents()
+{
+  // Every column's, then every row's, tent weights (j0, j1, t, 0): the CPU's own.
+  std::vector<float> tents;
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    for (int i = 0; i < this->Size[axis]; ++i)
+    {
+      int j0, j1;
+      double t;
+      vtkBloomPSFSplit::TentWeights(i, this->Scale, this->CoarseSize[axis], j0, j1, t);
+      tents.insert(tents.end(),
+        { static_cast<float>(j0), static_cast<float>(j1), static_cast<float>(t), 0.0f });
+    }
+  }
+  if (!this->TentBuffer)
+  {
+    glGenBuffers(1, &this->TentBuffer);
+  }
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->TentBuffer);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(tents.size() * sizeof(float)),
+    tents.data(), GL_STATIC_DRAW);
+  glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
+  this->TentsScale = this->Scale;
+}
+
+//------------------------------------------------------------------------------
 void vtkBloomPassPSFSplit::SetGrid(unsigned int program)
 {
   glUniform2i(this->Uniform(program, "imageSize"), this->Size[0], this->Size[1]);
@@ -196,24 +230,26 @@ void vtkBloomPassPSFSplit::Down(vtkTextureObject* source)
   const int rows[2] = { this->Size[1], this->CoarseSize[1] };
   for (int axis = 0; axis < 2; ++axis)
   {
-    const unsigned int program = this->Program(DownDefines[axis]);
+    const unsigned int program = this->DownPrograms[axis];
     glUseProgram(program);
     this->SetGrid(program);
     from[axis]->Activate();
     glUniform1i(this->Uniform(program, "source"), from[axis]->GetTextureUnit());
     glBindImageTexture(0, to[axis]->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+    glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->TentBuffer);
     glDispatchCompute((this->CoarseSize[0] + 15) / 16, (rows[axis] + 15) / 16, 1);
     // The next stage (or the tail's row transforms) reads it as a texture.
     glMemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
     from[axis]->Deactivate();
   }
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
 }
 
 //------------------------------------------------------------------------------
 void vtkBloomPassPSFSplit::Core(vtkTextureObject* source, vtkTextureObject* target, bool reflect)
 {
-  const unsigned int program = this->Program(this->CoreDefines(reflect));
+  const unsigned int program = this->CorePrograms[reflect ? 1 : 0];
   glUseProgram(program);
   this->SetGrid(program);
   source->Activate();
@@ -221,6 +257,7 @@ void vtkBloomPassPSFSplit::Core(vtkTextureObject* source, vtkTextureObject* targ
   this->CoarseBloom->Activate();
   glUniform1i(this->Uniform(program, "tail"), this->CoarseBloom->GetTextureUnit());
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->CoreBuffer);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->TentBuffer);
   glBindImageTexture(0, target->GetHandle(), 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   const int width = CoreOutputs * CoreLanes;
   glDispatchCompute(
@@ -230,6 +267,7 @@ void vtkBloomPassPSFSplit::Core(vtkTextureObject* source, vtkTextureObject* targ
     GL_FRAMEBUFFER_BARRIER_BIT | GL_TEXTURE_UPDATE_BARRIER_BIT);
   glBindImageTexture(0, 0, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_RGBA32F);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, 0);
+  glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, 0);
   this->CoarseBloom->Deactivate();
   source->Deactivate();
   // VTK's shader cache must know that its last program is no longer bound.
@@ -291,15 +329,21 @@ void vtkBloomPassPSFSplit::ReleaseGraphicsResources(vtkWindow* w)
         glDeleteProgram(program.second);
       }
     }
-    if (this->CoreBuffer)
+    for (unsigned int* buffer : { &this->CoreBuffer, &this->TentBuffer })
     {
-      glDeleteBuffers(1, &this->CoreBuffer);
+      if (*buffer)
+      {
+        glDeleteBuffers(1, buffer);
+      }
     }
   }
   this->ReleaseTextures();
   this->Programs.clear();
   this->Locations.clear();
-  this->CoreBuffer = 0;
+  this->CoreBuffer = this->TentBuffer = 0;
   this->CoresVersion = 0;
+  this->ProgramsRadius = -1;
+  this->TentsScale = 0;
+  this->Size[0] = this->Size[1] = 0;
   this->Context = nullptr;
 }

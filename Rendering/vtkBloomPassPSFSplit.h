@@ -68,6 +68,8 @@ private:
   void Core(vtkTextureObject* source, vtkTextureObject* target, bool reflect);
   /// The cores into CoreBuffer, each centred in the widest one's window.
   void UploadCores();
+  /// vtkBloomPSFSplit::TentWeights of every column and row into TentBuffer.
+  void UploadTents();
   void ReleaseTextures();
 
   vtkOpenGLRenderWindow* Context = nullptr;
@@ -83,6 +85,11 @@ private:
   vtkSmartPointer<vtkTextureObject> CoarseBright; ///< the bright pass on the grid
   vtkSmartPointer<vtkTextureObject> CoarseBloom;  ///< the tail's convolution there
   unsigned int CoreBuffer = 0;
+  unsigned int TentBuffer = 0; ///< (j0, j1, t, 0) per column, then per row
+  int TentsScale = 0;          ///< the scale TentBuffer was made for
+  unsigned int DownPrograms[2] = { 0, 0 };
+  unsigned int CorePrograms[2] = { 0, 0 };      ///< zero borders, reflect
+  int ProgramsRadius = -1;                      ///< the core radius they were found for
   std::map<std::string, unsigned int> Programs; ///< by #defines; 0: did not build
   std::string BuildLog;                         ///< the last failed build's log
   vtkBloomPassFFT::UniformCache Locations;

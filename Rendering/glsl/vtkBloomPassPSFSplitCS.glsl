@@ -4,8 +4,8 @@
   split itself is vtkBloomPSFSplit's, in FiltersBloom). One stage per program, chosen by a
   #define; `scale` is the tail's grid spacing f, `imageSize` the image's, `coarseSize` the
   grid's nodes (ceil(imageSize / f)). Pixel i of an axis reads (and is spread onto) the nodes
-  j0 = floor(u) and j1 = min(j0 + 1, nodes - 1) with weights 1 - t and t, u = (i + 1/2) / f - 1/2
-  clamped to [0, nodes - 1], t = u - j0 (Tent, as vtkBloomPSFSplit::TentWeights).
+  j0 and j1 with weights 1 - t and t, vtkBloomPSFSplit::TentWeights' table (`tents`): the
+  shaders compute no weight of their own.
 
   - SPLIT_DOWN_X, then SPLIT_DOWN_Y: node (jx, jy) of `target` = the sum of the pixels of
     the bright pass that reach it, each times its weight for that node on both axes (Down: the
@@ -30,23 +30,30 @@ uniform ivec2 coarseSize;
 uniform int scale;
 uniform sampler2D source;
 
-void Tent(int i, int nodes, out int j0, out int j1, out float t)
+// Each pixel's tent weights, from vtkBloomPSFSplit::TentWeights: (j0, j1, t, 0) for the
+// columns x, then the rows y (at imageSize.x + y).
+layout(std430, binding = 1) readonly buffer Tents
 {
-  const float u = clamp((float(i) + 0.5) / float(scale) - 0.5, 0.0, float(nodes - 1));
-  j0 = int(floor(u));
-  j1 = min(j0 + 1, nodes - 1);
-  t = u - float(j0);
+  vec4 tents[];
+};
+
+void Tent(int i, int axis, out int j0, out int j1, out float t)
+{
+  const vec4 e = tents[axis == 0 ? i : imageSize.x + i];
+  j0 = int(e.x);
+  j1 = int(e.y);
+  t = e.z;
 }
 
 #if defined(SPLIT_DOWN_X) || defined(SPLIT_DOWN_Y)
 layout(local_size_x = 16, local_size_y = 16) in;
 layout(rgba32f, binding = 0) uniform writeonly image2D target;
 
-float NodeWeight(int i, int node, int nodes)
+float NodeWeight(int i, int node, int axis)
 {
   int j0, j1;
   float t;
-  Tent(i, nodes, j0, j1, t);
+  Tent(i, axis, j0, j1, t);
   return (j0 == node ? 1.0 - t : 0.0) + (j1 == node ? t : 0.0);
 }
 
@@ -74,7 +81,7 @@ void main()
   for (int i = lo; i < hi; ++i)
   {
     from[axis] = i;
-    sum += NodeWeight(i, node, coarseSize[axis]) * texelFetch(source, from, 0).rgb;
+    sum += NodeWeight(i, node, axis) * texelFetch(source, from, 0).rgb;
   }
   imageStore(target, at, vec4(sum, 0.0));
 }
@@ -131,8 +138,8 @@ vec3 Tail(int x, int y)
 {
   int i0, i1, j0, j1;
   float tx, ty;
-  Tent(x, coarseSize.x, i0, i1, tx);
-  Tent(y, coarseSize.y, j0, j1, ty);
+  Tent(x, 0, i0, i1, tx);
+  Tent(y, 1, j0, j1, ty);
   const vec3 top = (1.0 - tx) * texelFetch(tail, ivec2(i0, j0), 0).rgb +
     tx * texelFetch(tail, ivec2(i1, j0), 0).rgb;
   const vec3 bottom = (1.0 - tx) * texelFetch(tail, ivec2(i0, j1), 0).rgb +
