@@ -76,7 +76,7 @@
 // the occlusion query only, and with neither (no wait: the CPU submits the whole frame ahead
 // of the GPU), GPU time and the CPU's time in Render().
 //
-// One executable for every GPU timing of scripts/gpu-run.sh (about 990 lines): each mode is a
+// One executable for every GPU timing of scripts/gpu-run.sh (about 1080 lines): each mode is a
 // function of its own (TimeFrames, ProfilePasses, QualityTable, SparseTable, SyncTable,
 // OrbitTable, SelectiveTable, PSFTable, RenderersTable), and they share the scene set-up
 // (SetUp), the frame timing (vtkBloomFrameTimer.h) and the frame statistics, which separate

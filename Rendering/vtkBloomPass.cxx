@@ -2,7 +2,8 @@
 // internals, the kept frame of tiled screenshots (KeptFrameMode), the image entry points
 // (ApplyToImage, the read-backs) and the parameter plumbing.
 // The steps with a seam of their own live beside it (vtkBloomPassResources, ...ChainRunner,
-// ...Background, ...Steps, ...Emission, ...FFT); what stays here shares the pass's protected
+// ...Background, ...Steps, ...Emission, ...FFT, ...PSFSplit); what stays here (PSF mode's choice
+// between the exact and the split convolution among it) shares the pass's protected
 // state, which is why the file passes 800 lines.
 #include "vtkBloomPass.h"
 
