@@ -110,42 +110,68 @@ std::vector<vtkBloomPassFFT::Pass> vtkBloomPassFFT::Passes(int n, float directio
 }
 
 //------------------------------------------------------------------------------
-int vtkBloomPassFFT::LinesPerGroup(const Pass& pass, int axis)
+vtkBloomPassFFT::Layout vtkBloomPassFFT::LayoutOf(const Pass& pass, int axis)
 {
-  if (axis == 0)
+  const int length = pass.Length;
+  int widest = 1; // the most butterflies of a stage
+  for (int r : Radices(length))
   {
-    return 1;
+    widest = std::max(widest, length / r);
   }
-  int lines = 8;
-  while (lines > 1 && lines * pass.Length > MaximumLength)
+  Layout layout;
+  // A short line gets an invocation per butterfly of its widest stage; a longer one enough
+  // that each runs at most 4 butterflies of radix 2, keeping their results in registers.
+  layout.Threads = widest <= 64 ? widest : (length <= 512 ? 64 : (length <= 2048 ? 256 : 512));
+  layout.Butterflies = (widest + layout.Threads - 1) / layout.Threads;
+  // Units adjacent in memory, several to a group: columns (lines adjacent) or the sub-sequences
+  // of a row's four-step transform (adjacent, or runs one after another).
+  layout.BlockSubs = axis == 0 && pass.Count > 1;
+  layout.SamplesFastest = axis == 0 && pass.Spacing == 1;
+  layout.Lines = 1;
+  layout.Stride = length;
+  if (axis == 1 || layout.BlockSubs)
   {
-    lines /= 2;
+    // Up to 32 columns (runs of 256 bytes a row) or 8 of a row's sub-sequences, as many as
+    // fit in shared memory and in 1024 invocations (every context allows that many): the
+    // best of 4 to 32 on an NVIDIA H200 (docs/gpu.md).
+    for (int lines = axis == 0 ? 8 : 32; lines > 1; lines /= 2)
+    {
+      // Units Stride apart in shared memory, Stride = max(1, 16 / lines) (mod 16): the 16
+      // invocations of a half warp, which load a sample of each of `lines` units, hit
+      // different banks.
+      const int stride = length + ((std::max(1, 16 / lines) - length) % 16 + 16) % 16;
+      if (lines * stride <= MaximumLength && lines * layout.Threads <= 1024)
+      {
+        layout.Lines = lines;
+        layout.Stride = stride;
+        break;
+      }
+    }
   }
-  return lines;
+  return layout;
 }
 
 //------------------------------------------------------------------------------
-std::string vtkBloomPassFFT::TransformDefines(const Pass& pass, int n, bool fromTexture, int lines)
+std::string vtkBloomPassFFT::TransformDefines(
+  const Pass& pass, int n, bool fromTexture, const Layout& layout)
 {
-  // Enough invocations that each runs at most 4 butterflies of radix 2 (length <= 4096): each
-  // keeps its butterflies' results in registers.
-  const int length = pass.Length;
-  const int threads = length <= 512 ? 64 : (length <= 2048 ? 256 : 512);
-  const std::vector<int> radices = Radices(length);
-  int butterflies = 1;
+  const std::vector<int> radices = Radices(pass.Length);
   std::string calls;
   int ns = 1;
   for (int r : radices)
   {
-    butterflies = std::max(butterflies, (length / r + threads - 1) / threads);
     // The stages as calls with literal arguments, which the compiler specializes.
     calls += "Stage(" + std::to_string(r) + ", " + std::to_string(ns) + "); ";
     ns *= r;
   }
-  return "#define FFT_TRANSFORM 1\n#define FFT_N " + std::to_string(length) +
-    "\n#define FFT_TWIDDLE_STRIDE " + std::to_string(n / length) + "\n#define FFT_THREADS " +
-    std::to_string(threads) + "\n#define FFT_STAGE_CALLS " + calls + "\n#define FFT_BUTTERFLIES " +
-    std::to_string(butterflies) + "\n#define FFT_LINES " + std::to_string(lines) + "\n" +
+  const auto define = [](const char* name, int value)
+  { return "#define " + std::string(name) + " " + std::to_string(value) + "\n"; };
+  return "#define FFT_TRANSFORM 1\n" + define("FFT_N", pass.Length) +
+    define("FFT_TWIDDLE_STRIDE", n / pass.Length) + define("FFT_THREADS", layout.Threads) +
+    "#define FFT_STAGE_CALLS " + calls + "\n" + define("FFT_BUTTERFLIES", layout.Butterflies) +
+    define("FFT_LINES", layout.Lines) + define("FFT_STRIDE", layout.Stride) +
+    (layout.BlockSubs ? "#define FFT_BLOCK_SUBS 1\n" : "") +
+    (layout.SamplesFastest ? "#define FFT_SAMPLES_FASTEST 1\n" : "") +
     (fromTexture ? "#define FFT_FROM_TEXTURE 1\n" : "") +
     (pass.Twiddle ? "#define FFT_FOUR_STEP_TWIDDLE 1\n" : "");
 }
@@ -155,7 +181,8 @@ std::string vtkBloomPassFFT::LineTransformDefines(int n)
 {
   // One pass over a whole line in shared memory (vtkBloomPassFFTBlur: lines of at most
   // MaximumLength samples).
-  return TransformDefines(Pass{ n, 1, 0, 1, false }, n, false) + "#define FFT_LIBRARY 1\n";
+  const Pass whole{ n, 1, 0, 1, false };
+  return TransformDefines(whole, n, false, LayoutOf(whole, 0)) + "#define FFT_LIBRARY 1\n";
 }
 
 //------------------------------------------------------------------------------
@@ -295,7 +322,7 @@ bool vtkBloomPassFFT::BuildPrograms(const int grid[2], std::string& why)
       {
         const bool fromTexture = axis == 0 && direction < 0.0f && i == 0;
         programs.push_back(
-          TransformDefines(passes[i], grid[axis], fromTexture, LinesPerGroup(passes[i], axis)));
+          TransformDefines(passes[i], grid[axis], fromTexture, LayoutOf(passes[i], axis)));
       }
     }
   }
@@ -410,8 +437,7 @@ void vtkBloomPassFFT::MakeSpectra()
   this->KernelTexture->SetInternalFormat(GL_RGBA32F);
   this->KernelTexture->Create2DFromRaw(n, n, 4, VTK_FLOAT, texels.data());
   const int size[2] = { n, n };
-  this->Transform(0, -1.0f, this->KernelTexture, size);
-  this->Transform(1, -1.0f, nullptr, size);
+  this->Forward(this->KernelTexture, size);
   // Separate the red and green spectra, scaled by the inverse transform's 1 / (NX NY).
   const unsigned int program = this->Program("#define FFT_SEPARATE 1\n");
   glUseProgram(program);
@@ -428,30 +454,54 @@ void vtkBloomPassFFT::MakeSpectra()
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassFFT::Transform(
-  int axis, float direction, vtkTextureObject* source, const int sourceSize[2])
+void vtkBloomPassFFT::Transform(int axis, float direction, const Lines& lines)
 {
-  // Only the first dispatch reads the texture; the second (four steps) reads its output.
+  // Only the first dispatch reads the texture or meets the zero padding; the second (four
+  // steps) reads its output.
+  Lines first = lines;
   for (const Pass& pass : Passes(this->Grid[axis], direction))
   {
-    this->RunPass(pass, axis, direction, source, sourceSize);
-    source = nullptr;
+    this->RunPass(pass, axis, direction, first);
+    first.Source = nullptr;
+    first.SampleLimit = this->Grid[axis];
   }
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassFFT::RunPass(
-  const Pass& pass, int axis, float direction, vtkTextureObject* source, const int sourceSize[2])
+void vtkBloomPassFFT::ForwardRows(vtkTextureObject* source, const int sourceSize[2])
+{
+  // Rows past the source's are zero: left alone, ForwardColumns does not read them.
+  this->Transform(0, -1.0f, Lines{ 0, sourceSize[1], this->Grid[0], source, sourceSize });
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::ForwardColumns(int rows)
+{
+  this->Transform(1, -1.0f, Lines{ 0, this->Grid[0], rows, nullptr, nullptr });
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::Forward(vtkTextureObject* source, const int sourceSize[2])
+{
+  this->ForwardRows(source, sourceSize);
+  this->ForwardColumns(sourceSize[1]);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassFFT::RunPass(const Pass& pass, int axis, float direction, const Lines& lines)
 {
   const int n = this->Grid[axis];
-  const int lines = LinesPerGroup(pass, axis);
-  const unsigned int program = this->Program(TransformDefines(pass, n, source != nullptr, lines));
+  const Layout layout = LayoutOf(pass, axis);
+  vtkTextureObject* source = lines.Source;
+  const unsigned int program = this->Program(TransformDefines(pass, n, source != nullptr, layout));
   glUseProgram(program);
   // Rows: samples adjacent, lines NX apart; columns: samples NX apart, lines adjacent.
   glUniform1i(this->Uniform(program, "sampleStride"), axis == 0 ? 1 : this->Grid[0]);
   glUniform1i(this->Uniform(program, "lineStride"), axis == 0 ? this->Grid[0] : 1);
   glUniform1i(this->Uniform(program, "signalStride"), this->Grid[0] * this->Grid[1]);
-  glUniform1i(this->Uniform(program, "lineCount"), this->Grid[1 - axis]);
+  glUniform1i(this->Uniform(program, "lineFirst"), lines.First);
+  glUniform1i(this->Uniform(program, "lineCount"), lines.Count);
+  glUniform1i(this->Uniform(program, "sampleLimit"), lines.SampleLimit);
   glUniform1i(this->Uniform(program, "subCount"), pass.Count);
   glUniform1i(this->Uniform(program, "subOffset"), pass.Offset);
   glUniform1i(this->Uniform(program, "subSpacing"), pass.Spacing);
@@ -460,17 +510,23 @@ void vtkBloomPassFFT::RunPass(
   {
     source->Activate();
     glUniform1i(this->Uniform(program, "source"), source->GetTextureUnit());
-    glUniform2i(this->Uniform(program, "sourceSize"), sourceSize[0], sourceSize[1]);
+    glUniform2i(this->Uniform(program, "sourceSize"), lines.SourceSize[0], lines.SourceSize[1]);
   }
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, this->SignalBuffer);
   glBindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, this->TwiddleBuffers[axis]);
-  // One work group per sub-sequence, block of lines and signal, in rows of at most 65535
-  // (every context allows that many a dimension).
-  const long long blocks = (this->Grid[1 - axis] + lines - 1) / lines;
-  const long long groups = 2LL * blocks * pass.Count;
-  const long long across = std::min<long long>(groups, 65535);
-  glDispatchCompute(
-    static_cast<GLuint>(across), static_cast<GLuint>((groups + across - 1) / across), 1);
+  // One work group per block of units and signal, in rows of at most 65535 (every context
+  // allows that many a dimension).
+  const long long units = static_cast<long long>(lines.Count) * pass.Count;
+  const long long blocks = layout.BlockSubs
+    ? lines.Count * ((pass.Count + layout.Lines - 1) / layout.Lines)
+    : pass.Count * ((lines.Count + layout.Lines - 1) / layout.Lines);
+  const long long groups = units > 0 ? 2LL * blocks : 0;
+  if (groups > 0)
+  {
+    const long long across = std::min<long long>(groups, 65535);
+    glDispatchCompute(
+      static_cast<GLuint>(across), static_cast<GLuint>((groups + across - 1) / across), 1);
+  }
   glMemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   if (source)
   {
@@ -497,11 +553,21 @@ void vtkBloomPassFFT::Convolve(
       timer->End(name, bytes);
     }
   };
-  stage("psf rows", 32.0 * grid, [&] { this->Transform(0, -1.0f, source, this->Size); });
-  stage("psf columns", 32.0 * grid, [&] { this->Transform(1, -1.0f, nullptr, this->Size); });
+  // The forward rows only where the image is (the other rows are zero), the inverse rows only
+  // where the fold reads: the full convolution's rows for REFLECT, the image's for ZERO.
+  const int rows[2] = { reflect ? 0 : this->Radius,
+    reflect ? std::min(this->Grid[1], this->Size[1] + 2 * this->Radius) : this->Size[1] };
+  stage("psf rows", 32.0 * grid, [&] { this->ForwardRows(source, this->Size); });
+  stage("psf columns", 32.0 * grid, [&] { this->ForwardColumns(this->Size[1]); });
   stage("psf multiply", 56.0 * grid, [&] { this->Multiply(); });
-  stage("psf inverse columns", 32.0 * grid, [&] { this->Transform(1, 1.0f, nullptr, this->Size); });
-  stage("psf inverse rows", 32.0 * grid, [&] { this->Transform(0, 1.0f, nullptr, this->Size); });
+  stage("psf inverse columns", 32.0 * grid,
+    [&] {
+      this->Transform(1, 1.0f, Lines{ 0, this->Grid[0], this->Grid[1], nullptr, nullptr });
+    });
+  stage("psf inverse rows", 32.0 * grid,
+    [&] {
+      this->Transform(0, 1.0f, Lines{ rows[0], rows[1], this->Grid[0], nullptr, nullptr });
+    });
   stage("psf fold", 32.0 * this->Size[0] * this->Size[1], [&] { this->Fold(target, reflect); });
 }
 

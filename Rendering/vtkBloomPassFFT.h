@@ -19,8 +19,10 @@
  * kernel set and grid (SetKernels / Prepare), scaled by 1 / (NX NY).
  *
  * Per convolution: the row transforms (reading the texture), the column transforms, the
- * multiply, the inverse columns, the inverse rows and the fold, each line in shared memory (one
- * work group per line and signal). Storage is float32: two shader storage buffers of
+ * multiply, the inverse columns, the inverse rows and the fold, each line in shared memory,
+ * several adjacent lines (or sub-sequences) to a work group (LayoutOf). The zero padding is
+ * not transformed: the forward rows run only on the image's rows and the forward columns read
+ * only those; the inverse rows run only on the rows the fold reads. Storage is float32: two shader storage buffers of
  * 2 NX NY vec2 (the signals) and 3 NX NY vec2 (the kernels' spectra), and one twiddle table per
  * axis, cos and sin of 2 pi m / N computed in double.
  *
@@ -167,27 +169,51 @@ private:
   /// The dispatches of a forward (direction -1) or inverse (+1) transform of lines of n samples.
   static std::vector<Pass> Passes(int n, float direction);
 
-  /// The forward (direction -1) or inverse (+1) transform of every line along `axis` (0: rows,
-  /// 1: columns) of both signals; rows may read `source` instead of the buffer.
-  void Transform(int axis, float direction, vtkTextureObject* source, const int sourceSize[2]);
+  /// The lines a transform runs on, and where its input is zero.
+  struct Lines
+  {
+    int First;                ///< the first line transformed
+    int Count;                ///< lines transformed, from First; the others are left alone
+    int SampleLimit;          ///< samples at or past it along a line are zero (not read)
+    vtkTextureObject* Source; ///< rows forward: read from this texture, not the buffer
+    const int* SourceSize;    ///< its size (zero beyond)
+  };
+  /// The forward (direction -1) or inverse (+1) transform of `lines` along `axis` (0: rows,
+  /// 1: columns) of both signals.
+  void Transform(int axis, float direction, const Lines& lines);
+  /// The forward transform of `source` (its size, zero padded to the grid): its rows, then
+  /// every column, reading only the source's rows.
+  void Forward(vtkTextureObject* source, const int sourceSize[2]);
+  void ForwardRows(vtkTextureObject* source, const int sourceSize[2]);
+  void ForwardColumns(int rows);
   /// The image's spectrum times the kernels' (FFT_MULTIPLY), in place.
   void Multiply();
   /// The inverse transform's full convolution folded into `target` (FFT_FOLD).
   void Fold(vtkTextureObject* target, bool reflect);
-  void RunPass(
-    const Pass& pass, int axis, float direction, vtkTextureObject* source, const int sourceSize[2]);
+  void RunPass(const Pass& pass, int axis, float direction, const Lines& lines);
   /// The compute program of `defines`, made on first use; 0 when it does not build (the
   /// compiler's log in `log`, when given).
   unsigned int Program(const std::string& defines, std::string* log = nullptr);
-  /// The defines of `pass` along a line of n samples, `lines` lines to a work group.
-  static std::string TransformDefines(const Pass& pass, int n, bool fromTexture, int lines = 1);
   /**
-   * The lines a work group transforms along `axis` with `pass`: columns (adjacent in memory)
-   * as many as fit the 32 KiB of shared memory, up to 8 (runs of 64 bytes a row); rows one.
-   * The 7680 x 6000 grid's forward column transform took 8.0 ms with 8 and 8.9 with 16 on an
-   * NVIDIA H200, where one column a work group had taken about 80 on an H100 (docs/gpu.md).
+   * How a work group of `pass` along `axis` is laid out: Threads invocations per unit (a line's
+   * sub-sequence), Butterflies each per stage, Lines units to a group, Stride samples apart in
+   * shared memory. Units adjacent in memory come several to a group (columns, and the
+   * sub-sequences of a row's four-step transform), so that a group reads and writes runs of
+   * them rather than one sample a row; a row of one pass is a group of its own.
    */
-  static int LinesPerGroup(const Pass& pass, int axis);
+  struct Layout
+  {
+    int Threads;
+    int Butterflies;
+    int Lines;
+    int Stride;
+    bool BlockSubs;      ///< the units are sub-sequences of one line (else lines of one)
+    bool SamplesFastest; ///< consecutive invocations load consecutive samples of a unit
+  };
+  static Layout LayoutOf(const Pass& pass, int axis);
+  /// The defines of `pass` along a line of n samples laid out as `layout`.
+  static std::string TransformDefines(
+    const Pass& pass, int n, bool fromTexture, const Layout& layout);
   /// The padded grid of width x height images in `grid`, and why this context cannot use it
   /// (empty when it can).
   std::string MakeGrid(int width, int height, int grid[2]) const;

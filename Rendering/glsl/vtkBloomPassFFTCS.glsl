@@ -9,15 +9,20 @@
     l * lineStride + n * sampleStride), X[q] = sum_m x[m] exp(direction 2 pi i m q / FFT_N),
     unscaled. Sub-sequence j of a line is its samples j * subOffset + m * subSpacing,
     0 <= m < FFT_N (subCount of them per line); a line of N <= 4096 samples is one sub-sequence
-    (subOffset 0, subSpacing 1). One work group per FFT_LINES adjacent lines (a block),
-    sub-sequence and signal, numbered g = (s blocks + b) subCount + j along x, then y (2-D so
-    that the count stays within 65535 a dimension; groups and lines past the last do nothing).
-    Lines adjacent in memory (columns: lineStride 1) come FFT_LINES to a group, so that the
-    group reads and writes runs of FFT_LINES samples of each row rather than one sample a row
-    (coalesced); rows come one to a group. Each line's sub-sequence is held in shared memory
-    (FFT_LINES FFT_N <= 4096 complex samples: 32 KiB), its invocations gl_LocalInvocationID.y,
-    and transformed in place by mixed-radix
-    Stockham stages (radices 4, 2, 3, 5, the calls FFT_STAGE_CALLS lists), so that the
+    (subOffset 0, subSpacing 1). Only lines lineFirst to lineFirst + lineCount - 1 are
+    transformed (the others are zero or not needed), and samples at or past sampleLimit along
+    a line are zero: not read. A work group takes FFT_LINES units (a line's sub-sequence)
+    adjacent in memory, so that it reads and writes runs of them rather than one sample a row
+    (coalesced): adjacent lines of one sub-sequence (columns: lineStride 1), or with
+    FFT_BLOCK_SUBS adjacent sub-sequences of one line (a row's four-step transform); with
+    FFT_SAMPLES_FASTEST consecutive invocations load consecutive samples of a unit (they are
+    adjacent in memory), otherwise a sample of consecutive units. Groups are numbered
+    g = (s lineBlocks + lineBlock) subBlocks + subBlock along x, then y (2-D so that the count
+    stays within 65535 a dimension; groups and units past the last do nothing). Each unit is
+    held in shared memory FFT_STRIDE samples from the next (FFT_LINES FFT_STRIDE <= 4096
+    complex samples: 32 KiB; FFT_STRIDE >= FFT_N padded against bank conflicts), transformed
+    by the FFT_THREADS invocations of one gl_LocalInvocationID.y in place by mixed-radix Stockham
+    stages (radices 4, 2, 3, 5, the calls FFT_STAGE_CALLS lists), so that the
     result is in natural order with no bit reversal. Stage s of radix R, with Ns the product
     of the radices before it, takes butterfly j (0 <= j < N / R, k = j mod Ns) from samples
     j + r N / R, multiplies sample r by w^(k r N / (Ns R)), applies the R-point DFT and writes
@@ -53,6 +58,9 @@
 #ifndef FFT_LINES
 #define FFT_LINES 1
 #endif
+#ifndef FFT_STRIDE
+#define FFT_STRIDE FFT_N
+#endif
 layout(local_size_x = FFT_THREADS, local_size_y = FFT_LINES) in;
 #else
 layout(local_size_x = 16, local_size_y = 16) in;
@@ -78,7 +86,9 @@ layout(std430, binding = 1) readonly buffer Twiddles
 uniform int sampleStride;
 uniform int lineStride;
 uniform int signalStride;
-uniform int lineCount;  // lines per signal
+uniform int lineFirst;  // the first line transformed
+uniform int lineCount;  // lines transformed per signal, from lineFirst
+uniform int sampleLimit; // line samples at or past it are zero: not read (the zero padding)
 uniform int subCount;   // sub-sequences per line
 uniform int subOffset;  // line samples between the starts of two sub-sequences
 uniform int subSpacing; // line samples between two samples of a sub-sequence
@@ -89,7 +99,7 @@ uniform sampler2D source;
 uniform ivec2 sourceSize;
 #endif
 
-shared vec2 line[FFT_LINES * FFT_N]; // line c's samples from c FFT_N
+shared vec2 line[FFT_LINES * FFT_STRIDE]; // unit c's samples from c FFT_STRIDE
 
 
 // exp(direction 2 pi i m / N) for 0 <= m < N, N the whole line's length.
@@ -110,7 +120,7 @@ void Stage(int R, int ns)
 {
   const int butterflies = FFT_N / R;
   const int step = FFT_N / (ns * R);
-  const int at = int(gl_LocalInvocationID.y) * FFT_N; // this invocation's line
+  const int at = int(gl_LocalInvocationID.y) * FFT_STRIDE; // this invocation's unit
   // A constant trip count, and R and ns literal in each call (FFT_STAGE_CALLS): the compiler
   // unrolls the loops and keeps `results` in registers rather than in local memory.
   vec2 results[FFT_BUTTERFLIES * 5];
@@ -184,54 +194,104 @@ void TransformLine()
   FFT_STAGE_CALLS
 }
 #else
+// The group's units: FFT_LINES adjacent lines of one sub-sequence or, with FFT_BLOCK_SUBS,
+// FFT_LINES adjacent sub-sequences of one line; 2-D numbering (see the top) g = (s lineBlocks +
+// lineBlock) subBlocks + subBlock.
+struct Group
+{
+  int SubBlock, LineBlock, Signal;
+  bool Live; // groups past the last still reach every barrier, but touch nothing
+};
+
+Group ThisGroup()
+{
+  const int g = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
+#ifdef FFT_BLOCK_SUBS
+  const int subBlocks = (subCount + FFT_LINES - 1) / FFT_LINES, lineBlocks = lineCount;
+#else
+  const int subBlocks = subCount, lineBlocks = (lineCount + FFT_LINES - 1) / FFT_LINES;
+#endif
+  Group group;
+  group.SubBlock = g % subBlocks;
+  group.LineBlock = (g / subBlocks) % lineBlocks;
+  group.Signal = g / (subBlocks * lineBlocks);
+  group.Live = g < 2 * subBlocks * lineBlocks;
+  return group;
+}
+
+// Element i of the group's FFT_LINES x FFT_N samples, in the order that gives consecutive
+// invocations consecutive addresses of the signal (a unit's samples are adjacent in memory
+// with FFT_SAMPLES_FASTEST, the units otherwise): its line, sample along the line,
+// sub-sequence and sample within it, and its place in shared memory. False past the last unit.
+struct Element
+{
+  int Line, Sample, Sub, M, Shared;
+};
+
+bool Locate(Group group, int i, out Element e)
+{
+#ifdef FFT_SAMPLES_FASTEST
+  const int unit = i / FFT_N, m = i % FFT_N;
+#else
+  const int unit = i % FFT_LINES, m = i / FFT_LINES;
+#endif
+#ifdef FFT_BLOCK_SUBS
+  e.Line = lineFirst + group.LineBlock;
+  e.Sub = group.SubBlock * FFT_LINES + unit;
+#else
+  e.Line = lineFirst + group.LineBlock * FFT_LINES + unit;
+  e.Sub = group.SubBlock;
+#endif
+  e.M = m;
+  e.Sample = e.Sub * subOffset + m * subSpacing;
+  e.Shared = unit * FFT_STRIDE + m;
+  return e.Line < lineFirst + lineCount && e.Sub < subCount;
+}
+
+int Address(Group group, Element e)
+{
+  return group.Signal * signalStride + e.Line * lineStride + e.Sample * sampleStride;
+}
+
 void main()
 {
-  // Groups and lines past the last still reach every barrier (uniform control flow), but touch
-  // nothing.
-  const int g = int(gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x);
-  const int blocks = (lineCount + FFT_LINES - 1) / FFT_LINES;
-  const bool live = g < 2 * blocks * subCount;
-  const int sub = g % subCount;
-  const int block = (g / subCount) % blocks;
-  const int s = g / (subCount * blocks);
-  const int first = sub * subOffset;
-  // Consecutive invocations take consecutive lines of a sample, then the next sample.
+  const Group group = ThisGroup();
   const int invocation = int(gl_LocalInvocationID.y) * FFT_THREADS + int(gl_LocalInvocationID.x);
-  for (int i = invocation; live && i < FFT_LINES * FFT_N; i += FFT_LINES * FFT_THREADS)
+  const int stride = FFT_LINES * FFT_THREADS;
+  Element e;
+  for (int i = invocation; group.Live && i < FFT_LINES * FFT_N; i += stride)
   {
-    const int c = i % FFT_LINES, m = i / FFT_LINES;
-    const int index = block * FFT_LINES + c;
-    if (index >= lineCount)
+    if (!Locate(group, i, e))
     {
       continue;
     }
-    const int at = first + m * subSpacing;
+    vec2 value = vec2(0.0);
 #ifdef FFT_FROM_TEXTURE
-    vec4 texel = vec4(0.0);
-    if (at < sourceSize.x && index < sourceSize.y)
+    if (e.Sample < sourceSize.x && e.Line < sourceSize.y)
     {
-      texel = texelFetch(source, ivec2(at, index), 0);
+      const vec4 texel = texelFetch(source, ivec2(e.Sample, e.Line), 0);
+      value = group.Signal == 0 ? texel.rg : vec2(texel.b, 0.0);
     }
-    line[c * FFT_N + m] = s == 0 ? texel.rg : vec2(texel.b, 0.0);
 #else
-    line[c * FFT_N + m] = signal[s * signalStride + index * lineStride + at * sampleStride];
+    if (e.Sample < sampleLimit)
+    {
+      value = signal[Address(group, e)];
+    }
 #endif
+    line[e.Shared] = value;
   }
   barrier();
   FFT_STAGE_CALLS
-  for (int i = invocation; live && i < FFT_LINES * FFT_N; i += FFT_LINES * FFT_THREADS)
+  for (int i = invocation; group.Live && i < FFT_LINES * FFT_N; i += stride)
   {
-    const int c = i % FFT_LINES, m = i / FFT_LINES;
-    const int index = block * FFT_LINES + c;
-    if (index >= lineCount)
+    if (!Locate(group, i, e))
     {
       continue;
     }
-    const int at = s * signalStride + index * lineStride + (first + m * subSpacing) * sampleStride;
 #ifdef FFT_FOUR_STEP_TWIDDLE
-    signal[at] = ComplexMultiply(line[c * FFT_N + m], Twiddle(sub * m));
+    signal[Address(group, e)] = ComplexMultiply(line[e.Shared], Twiddle(e.Sub * e.M));
 #else
-    signal[at] = line[c * FFT_N + m];
+    signal[Address(group, e)] = line[e.Shared];
 #endif
   }
 }
