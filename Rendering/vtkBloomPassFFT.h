@@ -22,15 +22,15 @@
  * multiply, the inverse columns, the inverse rows and the fold, each line in shared memory,
  * several adjacent lines (or sub-sequences) to a work group (LayoutOf). The zero padding is
  * not transformed: the forward rows run only on the image's rows and the forward columns read
- * only those; the inverse rows run only on the rows the fold reads. Storage is float32: two shader storage buffers of
- * 2 NX NY vec2 (the signals) and 3 NX NY vec2 (the kernels' spectra), and one twiddle table per
- * axis, cos and sin of 2 pi m / N computed in double.
+ * only those; the inverse rows run only on the rows the fold reads. Storage is float32: two shader
+ * storage buffers of 2 NX NY vec2 (the signals) and 3 NX NY vec2 (the kernels' spectra), and one
+ * twiddle table per axis, cos and sin of 2 pi m / N computed in double.
  *
- * A line of N <= 4096 samples (MaximumLength: 4096 vec2 fill the 32 KiB of shared memory every
- * OpenGL 4.3 context has) is transformed by one dispatch. A longer one (up to
- * MaximumGridLength) takes two, the four-step transform of Bailey (1990, "FFTs in external or
- * hierarchical memory"): N = N1 N2 (Split: both at most 4096, as close as they can be), with
- * n = N2 n1 + n2 and k = k1 + N1 k2,
+ * A row of N <= 4096 samples (MaximumLength: 4096 vec2 fill the 32 KiB of shared memory every
+ * OpenGL 4.3 context has), or a column of N <= 2048, is transformed by one dispatch. A longer
+ * one (up to MaximumGridLength) takes two, the four-step transform of Bailey (1990, "FFTs in
+ * external or hierarchical memory"): N = N1 N2 (Split: both at most 4096, as close as they can be),
+ * with n = N2 n1 + n2 and k = k1 + N1 k2,
  *
  *   X[k1 + N1 k2] = sum_n2 W_N2^(n2 k2) [ W_N^(n2 k1) sum_n1 W_N1^(n1 k1) x[N2 n1 + n2] ],
  *
@@ -91,10 +91,13 @@ public:
 
   /**
    * N = n1 n2 for the four-step transform of a line of n samples (a product of 2, 3 and 5):
-   * n1 = n, n2 = 1 for n <= MaximumLength (one dispatch); else both at most MaximumLength,
+   * n1 = n, n2 = 1 for n <= longest (one dispatch); else both at most MaximumLength,
    * n1 the smallest such divisor that is at least sqrt(n). False if there is none.
    */
-  static bool Split(int n, int& n1, int& n2);
+  static bool Split(int n, int& n1, int& n2, int longest = MaximumLength);
+  /// The longest line transformed in one dispatch along `axis`: MaximumLength for rows, half
+  /// that for columns (a longer column is transformed in four steps, `longest` in Split).
+  static int LongestOnePass(int axis);
 
   /// A program's uniform locations, looked up once each (here and in vtkBloomPassFFTBlur).
   using UniformCache = std::map<std::pair<unsigned int, std::string>, int>;
@@ -167,7 +170,7 @@ private:
     bool Twiddle;
   };
   /// The dispatches of a forward (direction -1) or inverse (+1) transform of lines of n samples.
-  static std::vector<Pass> Passes(int n, float direction);
+  static std::vector<Pass> Passes(int n, int axis, float direction);
 
   /// The lines a transform runs on, and where its input is zero.
   struct Lines

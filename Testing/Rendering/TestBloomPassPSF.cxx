@@ -403,14 +403,17 @@ TEST(RenderingBloomPassPSF, AgreesWithTheCPUFilterOnColumnsLongerThan4096)
 TEST(RenderingBloomPassPSF, ADeltaBloomsIntoThePSFItselfOnLinesLongerThan4096)
 {
   // As ADeltaBloomsIntoThePSFItself, on 4100 x 9 and 9 x 4400 (grids 4320 x 50, 4320 = 72 x 60,
-  // and 50 x 4500, 4500 = 75 x 60): the four-step transform's twiddle, its order of the
+  // and 50 x 4500, 4500 = 75 x 60), and 9 x 2400 (a column of 2500 = 50 x 50: columns longer
+  // than 2048 take four steps too): the four-step transform's twiddle, its order of the
   // spectrum (the multiply's -k) and its inverse must all be right for the lopsided PSF to come
   // back in place.
   const int r = 20;
-  for (const auto& size : { std::make_pair(4100, 9), std::make_pair(9, 4400) })
+  for (const auto& size :
+    { std::make_pair(4100, 9), std::make_pair(9, 4400), std::make_pair(9, 2400) })
   {
     const int width = size.first, height = size.second;
-    const int x0 = width > height ? 3001 : 4, y0 = width > height ? 4 : 3001;
+    const int along = std::max(width, height) * 2 / 3;
+    const int x0 = width > height ? along : 4, y0 = width > height ? 4 : along;
     const DeltaError e = BloomDelta(width, height, x0, y0, r);
     std::cout << "four-step delta " << width << "x" << height << ": largest error " << e.Worst
               << " for a PSF peak of " << e.Largest << "; at the delta " << e.Centre << "\n";
