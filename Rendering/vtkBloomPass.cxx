@@ -497,7 +497,7 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self, vtkTextureObject* so
   {
     why = "PSF bloom's compute programs did not build (simulated for a test).";
   }
-  // The other convolution's buffers go (a frame-wide PSF's exact grid holds 1.9 GB).
+  // The other convolution's buffers go (a frame-wide PSF's exact grid holds 1.3 GB).
   if (this->UsePSFSplit && this->FFT.GetGridSize()[0] != 0)
   {
     this->FFT.ReleaseGraphicsResources(res.Context);

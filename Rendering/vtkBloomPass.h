@@ -128,7 +128,7 @@
  * folded back by REFLECT or dropped by ZERO borders), and the same composite. It needs OpenGL
  * 4.3 compute shaders whatever UseComputeShaders says. A grid line longer than 4096 samples
  * (the image plus twice the PSF radius) is transformed in four steps, up to 65536 samples
- * (3840 x 2160 with a PSF as wide as the frame: a 7680 x 6000 grid, 1.9 GB of buffers).
+ * (3840 x 2160 with a PSF as wide as the frame: a 7680 x 6000 grid, 1.3 GB of buffers).
  * Without compute shaders, or for a longer line or buffers over vtkBloomPassFFT's limits
  * (2 GiB a buffer, the context's largest shader storage block), the pass reports an error
  * once and renders the scene without bloom. The PSFs' spectra are made again only when

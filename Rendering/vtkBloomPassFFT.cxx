@@ -284,8 +284,8 @@ bool vtkBloomPassFFT::Prepare(
     this->Grid[1] = grid[1];
     this->SpectraVersion = 0;
     this->ProgramsBuilt = false;
-    // A grid within the limits may still not fit the GPU's memory (40 NX NY bytes in all): a
-    // buffer that could not be allocated has size 0 (and GL_OUT_OF_MEMORY is raised).
+    // A grid within the limits may still not fit the GPU's memory: a buffer that could not be
+    // allocated has size 0 (and GL_OUT_OF_MEMORY is raised).
     this->AllocateBuffers();
     GLint64 allocated[2] = { 0, 0 };
     for (int b = 0; b < 2; ++b)
@@ -294,11 +294,11 @@ bool vtkBloomPassFFT::Prepare(
       glGetBufferParameteri64v(GL_SHADER_STORAGE_BUFFER, GL_BUFFER_SIZE, &allocated[b]);
     }
     glBindBuffer(GL_SHADER_STORAGE_BUFFER, 0);
-    if (allocated[0] + allocated[1] < 40LL * grid[0] * grid[1])
+    const long long needed = SignalBytes(grid) + SpectraBytes(grid);
+    if (allocated[0] + allocated[1] < needed)
     {
       why = "PSF bloom's FFT grid " + std::to_string(grid[0]) + " x " + std::to_string(grid[1]) +
-        " does not fit in the GPU's memory (" + std::to_string(40LL * grid[0] * grid[1]) +
-        " bytes of buffers).";
+        " does not fit in the GPU's memory (" + std::to_string(needed) + " bytes of buffers).";
       this->Grid[0] = this->Grid[1] = 0;
       return false;
     }
@@ -365,8 +365,8 @@ std::string vtkBloomPassFFT::MakeGrid(int width, int height, int grid[2]) const
   grid[1] = GoodSize(static_cast<int>(padded[1]));
   const std::string name = "PSF bloom's FFT grid " + std::to_string(grid[0]) + " x " +
     std::to_string(grid[1]) + " (" + image + ")";
-  // The spectra, 3 NX NY vec2, are the largest buffer; the shaders index it with 32-bit ints.
-  const long long bytes = 3LL * grid[0] * grid[1] * 2 * sizeof(float);
+  // The shaders index the buffers with 32-bit ints.
+  const long long bytes = std::max(SignalBytes(grid), SpectraBytes(grid));
   GLint64 block = 0;
   glGetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &block);
   const long long limit = std::min<long long>(MaximumBufferBytes, block);
@@ -386,9 +386,21 @@ std::string vtkBloomPassFFT::MakeGrid(int width, int height, int grid[2]) const
 }
 
 //------------------------------------------------------------------------------
+long long vtkBloomPassFFT::SignalBytes(const int grid[2])
+{
+  return 2LL * grid[0] * grid[1] * 2 * sizeof(float);
+}
+
+//------------------------------------------------------------------------------
+long long vtkBloomPassFFT::SpectraBytes(const int grid[2])
+{
+  // Hermitian spectra: the frequencies 0 to NY / 2 along y (glsl/vtkBloomPassFFTCS.glsl).
+  return 3LL * grid[0] * (grid[1] / 2 + 1) * 2 * sizeof(float);
+}
+
+//------------------------------------------------------------------------------
 void vtkBloomPassFFT::AllocateBuffers()
 {
-  const GLsizeiptr samples = static_cast<GLsizeiptr>(this->Grid[0]) * this->Grid[1];
   if (!this->SignalBuffer)
   {
     glGenBuffers(1, &this->SignalBuffer);
@@ -396,9 +408,11 @@ void vtkBloomPassFFT::AllocateBuffers()
     glGenBuffers(2, this->TwiddleBuffers);
   }
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->SignalBuffer);
-  glBufferData(GL_SHADER_STORAGE_BUFFER, 2 * samples * 2 * sizeof(float), nullptr, GL_DYNAMIC_COPY);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(SignalBytes(this->Grid)), nullptr,
+    GL_DYNAMIC_COPY);
   glBindBuffer(GL_SHADER_STORAGE_BUFFER, this->SpectraBuffer);
-  glBufferData(GL_SHADER_STORAGE_BUFFER, 3 * samples * 2 * sizeof(float), nullptr, GL_DYNAMIC_COPY);
+  glBufferData(GL_SHADER_STORAGE_BUFFER, static_cast<GLsizeiptr>(SpectraBytes(this->Grid)), nullptr,
+    GL_DYNAMIC_COPY);
   for (int axis = 0; axis < 2; ++axis)
   {
     const std::vector<float> table = vtkBloomPassFFT::TwiddleTable(this->Grid[axis]);
@@ -549,8 +563,9 @@ void vtkBloomPassFFT::RunPass(const Pass& pass, int axis, float direction, const
 void vtkBloomPassFFT::Convolve(
   vtkTextureObject* source, vtkTextureObject* target, bool reflect, const StageTimer* timer)
 {
-  // A transform reads and writes both signals (2 x 8 bytes a sample, each way); the multiply
-  // also reads the three spectra; the fold reads both signals over the image.
+  // A transform reads and writes both signals (2 x 8 bytes a sample, each way) on the lines it
+  // runs on; the multiply also reads the three spectra, half of them (Hermitian); the fold
+  // reads both signals over the image.
   const double grid = static_cast<double>(this->Grid[0]) * this->Grid[1];
   const auto stage = [timer](const char* name, double bytes, const std::function<void()>& run)
   {
@@ -568,14 +583,15 @@ void vtkBloomPassFFT::Convolve(
   // where the fold reads: the full convolution's rows for REFLECT, the image's for ZERO.
   const int rows[2] = { reflect ? 0 : this->Radius,
     reflect ? std::min(this->Grid[1], this->Size[1] + 2 * this->Radius) : this->Size[1] };
-  stage("psf rows", 32.0 * grid, [&] { this->ForwardRows(source, this->Size); });
+  const double row = 32.0 * this->Grid[0]; // a row's traffic
+  stage("psf rows", row * this->Size[1], [&] { this->ForwardRows(source, this->Size); });
   stage("psf columns", 32.0 * grid, [&] { this->ForwardColumns(this->Size[1]); });
-  stage("psf multiply", 56.0 * grid, [&] { this->Multiply(); });
+  stage("psf multiply", 44.0 * grid, [&] { this->Multiply(); });
   stage("psf inverse columns", 32.0 * grid,
     [&] {
       this->Transform(1, 1.0f, Lines{ 0, this->Grid[0], this->Grid[1], nullptr, nullptr });
     });
-  stage("psf inverse rows", 32.0 * grid,
+  stage("psf inverse rows", row * rows[1],
     [&] {
       this->Transform(0, 1.0f, Lines{ rows[0], rows[1], this->Grid[0], nullptr, nullptr });
     });

@@ -22,9 +22,11 @@
  * multiply, the inverse columns, the inverse rows and the fold, each line in shared memory,
  * several adjacent lines (or sub-sequences) to a work group (LayoutOf). The zero padding is
  * not transformed: the forward rows run only on the image's rows and the forward columns read
- * only those; the inverse rows run only on the rows the fold reads. Storage is float32: two shader
- * storage buffers of 2 NX NY vec2 (the signals) and 3 NX NY vec2 (the kernels' spectra), and one
- * twiddle table per axis, cos and sin of 2 pi m / N computed in double.
+ * only those; the inverse rows run only on the rows the fold reads. Storage is float32: two
+ * shader storage buffers of 2 NX NY vec2 (the signals) and 3 NX (NY / 2 + 1) vec2 (the
+ * kernels' spectra: real kernels have Hermitian spectra, so only the frequencies 0 to NY / 2
+ * along y are kept), and one twiddle table per axis, cos and sin of 2 pi m / N computed in
+ * double.
  *
  * A row of N <= 4096 samples (MaximumLength: 4096 vec2 fill the 32 KiB of shared memory every
  * OpenGL 4.3 context has), or a column of N <= 2048, is transformed by one dispatch. A longer
@@ -44,9 +46,9 @@
  * then the strided sub-sequences, which leaves the signal in natural order for the fold.
  *
  * Limits: a grid line longer than MaximumGridLength, a buffer larger than MaximumBufferBytes
- * (2 GiB; the spectra, 24 NX NY bytes, are the largest) or than the context's shader storage
+ * (2 GiB; the signals, 16 NX NY bytes, are the largest) or than the context's shader storage
  * block, or a kernel window wider than its largest texture is refused. A 3840 x 2160 frame with
- * a PSF of radius 1920 (grid 7680 x 6000) needs 1.1 GB of spectra and 0.74 GB of signals.
+ * a PSF of radius 1920 (grid 7680 x 6000) needs 0.74 GB of signals and 0.55 GB of spectra.
  * Dispatches of more than 65535 work groups are laid out in 2-D.
  *
  * The programs are plain OpenGL (VTK 9.1's shader classes have no compute stage), from
@@ -86,7 +88,7 @@ public:
   /// The longest grid line: longer than MaximumLength, it is transformed in four steps.
   static constexpr int MaximumGridLength = 65536;
 
-  /// The largest shader storage buffer Prepare makes (the spectra, 24 NX NY bytes).
+  /// The largest shader storage buffer Prepare makes (the signals, 16 NX NY bytes).
   static constexpr long long MaximumBufferBytes = 1LL << 31;
 
   /**
@@ -228,6 +230,10 @@ private:
   /// The `split` uniform of the separate and multiply stages: N2 of each axis (1: one pass).
   void SetSplit(unsigned int program);
   void AllocateBuffers();
+  /// The bytes of the signals (two complex NX x NY grids) and of the kernels' spectra (three,
+  /// Hermitian: NX (NY / 2 + 1) samples each).
+  static long long SignalBytes(const int grid[2]);
+  static long long SpectraBytes(const int grid[2]);
 
   vtkOpenGLRenderWindow* Context = nullptr;
   Kernel Kernels[3];

@@ -40,13 +40,17 @@
   - FFT_SEPARATE: the kernels' spectra from the transform of (kR + i kG, kB): with Z the
     spectrum of z = r + i g (r, g real), R[k] = (Z[k] + conj Z[-k]) / 2 and
     G[k] = (Z[k] - conj Z[-k]) / (2 i). Each is scaled by `scale` = 1 / (NX NY), the inverse
-    transform's normalization, and written to `spectra` (3 NX NY: red, green, blue). Along an
-    axis transformed in four steps the spectrum is stored in the order of vtkBloomPassFFT.h
-    (position N2 k1 + k2 holds frequency k1 + N1 k2): Negative maps a position to that of
-    its frequency's negative with `split` = (N2 along x, N2 along y), 1 along a one-pass axis.
+    transform's normalization, and written to `spectra` (red, green, blue, NX HY each, HY =
+    NY / 2 + 1). The kernels are real, so their spectra are Hermitian (K[-k] = conj K[k]):
+    only the frequencies ky <= NY / 2 along y are kept, at ky NX + px (px the position along
+    x). Along an axis transformed in four steps the signal's spectrum is in the order of
+    vtkBloomPassFFT.h (position N2 k1 + k2 holds frequency k1 + N1 k2): Frequency and
+    Negative map a position to its frequency and to the position of its frequency's negative,
+    with `split` = (N2 along x, N2 along y), 1 along a one-pass axis.
   - FFT_MULTIPLY: the image's spectrum times the kernels', in place: Y = R KR + i G KG for
     signal 0 (with R, G separated as above; the inverse of Y is then r * kR + i g * kG, both
-    real), B KB for signal 1. One invocation per pair (k, -k): each reads both.
+    real), B KB for signal 1. One invocation per pair (k, -k): it reads both of the signal and
+    the kernels' spectra once, at whichever of the two is kept.
   - FFT_FOLD: the output image from the inverse transform: the full convolution's sample
     (u + radius, v + radius), centred on image pixel (u, v) for -radius <= u < W + radius,
     folded back into the image by half-sample reflection (FFT_REFLECT: u and -1 - u are the
@@ -315,14 +319,27 @@ layout(std430, binding = 1) readonly buffer Spectra
 };
 #endif
 
-// The position of frequency -k where position p of an axis of n samples, split as n1 x n2,
-// holds frequency k = p / n2 + n1 (p mod n2) (n2 = 1: p itself).
+// The frequency k = p / n2 + n1 (p mod n2) at position p of an axis of n samples split as
+// n1 x n2 (n2 = 1: p itself).
+int Frequency(int p, int n, int n2)
+{
+  return p / n2 + (n / n2) * (p % n2);
+}
+
+// The position of frequency -k where position p holds frequency k.
 int Negative(int p, int n, int n2)
 {
   const int n1 = n / n2;
-  const int k = p / n2 + n1 * (p % n2);
-  const int m = (n - k) % n;
+  const int m = (n - Frequency(p, n, n2)) % n;
   return (m % n1) * n2 + m / n1;
+}
+
+// Where the kernels' spectra keep the frequency at position (px, py), if they keep it
+// (frequency ky <= NY / 2 along y); -1 otherwise.
+int Kept(int px, int py)
+{
+  const int ky = Frequency(py, size.y, split.y);
+  return ky <= size.y / 2 ? ky * size.x + px : -1;
 }
 
 // The spectra of the real and imaginary parts of a signal whose spectrum is z at k and zm at -k.
@@ -343,30 +360,42 @@ void main()
   }
   const ivec2 km = ivec2(Negative(k.x, size.x, split.x), Negative(k.y, size.y, split.y));
   const int total = size.x * size.y;
+  const int kept = size.x * (size.y / 2 + 1); // a channel's kept spectrum
   const int p = k.y * size.x + k.x;
   const int q = km.y * size.x + km.x;
 #ifdef FFT_SEPARATE
+  const int at = Kept(k.x, k.y);
+  if (at < 0)
+  {
+    return;
+  }
   vec2 re, im;
   Separate(signal[p], signal[q], re, im);
-  spectra[p] = scale * re;
-  spectra[total + p] = scale * im;
-  spectra[2 * total + p] = scale * signal[total + p];
+  spectra[at] = scale * re;
+  spectra[kept + at] = scale * im;
+  spectra[2 * kept + at] = scale * signal[total + p];
 #else
   if (q < p)
   {
     return; // the invocation of -k does both
   }
+  // The kernels' spectra at k, from k or (conjugated) from -k, whichever is kept.
+  const int atP = Kept(k.x, k.y);
+  const int at = atP >= 0 ? atP : Kept(km.x, km.y);
+  const vec2 flip = atP >= 0 ? vec2(1.0, 1.0) : vec2(1.0, -1.0);
+  const vec2 kr = flip * spectra[at], kg = flip * spectra[kept + at];
+  const vec2 kb = flip * spectra[2 * kept + at];
   vec2 re, im;
   Separate(signal[p], signal[q], re, im);
-  // The red and green spectra are Hermitian: at -k they are the conjugates.
-  const vec2 gp = ComplexMultiply(im, spectra[total + p]);
-  signal[p] = ComplexMultiply(re, spectra[p]) + vec2(-gp.y, gp.x);
-  signal[total + p] = ComplexMultiply(signal[total + p], spectra[2 * total + p]);
+  // All these spectra are Hermitian: at -k they are the conjugates.
+  const vec2 gp = ComplexMultiply(im, kg);
+  signal[p] = ComplexMultiply(re, kr) + vec2(-gp.y, gp.x);
+  signal[total + p] = ComplexMultiply(signal[total + p], kb);
   if (q != p)
   {
-    const vec2 gq = ComplexMultiply(vec2(im.x, -im.y), spectra[total + q]);
-    signal[q] = ComplexMultiply(vec2(re.x, -re.y), spectra[q]) + vec2(-gq.y, gq.x);
-    signal[total + q] = ComplexMultiply(signal[total + q], spectra[2 * total + q]);
+    const vec2 gq = ComplexMultiply(vec2(im.x, -im.y), vec2(kg.x, -kg.y));
+    signal[q] = ComplexMultiply(vec2(re.x, -re.y), vec2(kr.x, -kr.y)) + vec2(-gq.y, gq.x);
+    signal[total + q] = ComplexMultiply(signal[total + q], vec2(kb.x, -kb.y));
   }
 #endif
 }
