@@ -90,7 +90,6 @@ bool vtkBloomPassFFT::Split(int n, int& n1, int& n2, int longest)
 }
 
 //------------------------------------------------------------------------------
-//------------------------------------------------------------------------------
 int vtkBloomPassFFT::LongestOnePass(int axis)
 {
   // A column of more than 2048 samples fills shared memory alone, so its work group reads one
@@ -100,7 +99,6 @@ int vtkBloomPassFFT::LongestOnePass(int axis)
 }
 
 //------------------------------------------------------------------------------
-
 std::vector<vtkBloomPassFFT::Pass> vtkBloomPassFFT::Passes(int n, int axis, float direction)
 {
   int n1 = n, n2 = 1;
@@ -320,30 +318,38 @@ bool vtkBloomPassFFT::Prepare(
 //------------------------------------------------------------------------------
 bool vtkBloomPassFFT::BuildPrograms(const int grid[2], std::string& why)
 {
-  // The programs of both axes' transforms (rows forward from a texture, the rest from the
-  // buffer) and of the point-wise stages, made once per grid.
-  std::vector<std::string> programs = { "#define FFT_SEPARATE 1\n", "#define FFT_MULTIPLY 1\n",
-    "#define FFT_FOLD 1\n", "#define FFT_FOLD 1\n#define FFT_REFLECT 1\n" };
-  for (int axis = 0; axis < 2; ++axis)
+  // The programs of the point-wise stages and of both axes' transforms (rows forward from a
+  // texture, the rest from the buffer), made once per grid; each transform's dispatches are
+  // planned here with their layouts and programs.
+  std::string log;
+  for (const char* defines : { "#define FFT_SEPARATE 1\n", "#define FFT_MULTIPLY 1\n",
+         "#define FFT_FOLD 1\n", "#define FFT_FOLD 1\n#define FFT_REFLECT 1\n" })
   {
-    for (float direction : { -1.0f, 1.0f })
-    {
-      const std::vector<Pass> passes = Passes(grid[axis], axis, direction);
-      for (size_t i = 0; i < passes.size(); ++i)
-      {
-        const bool fromTexture = axis == 0 && direction < 0.0f && i == 0;
-        programs.push_back(
-          TransformDefines(passes[i], grid[axis], fromTexture, LayoutOf(passes[i], axis)));
-      }
-    }
-  }
-  for (const std::string& defines : programs)
-  {
-    std::string log;
     if (!this->Program(defines, &log))
     {
       why = "A PSF bloom FFT program did not build: " + log;
       return false;
+    }
+  }
+  for (int axis = 0; axis < 2; ++axis)
+  {
+    for (int inverse = 0; inverse < 2; ++inverse)
+    {
+      std::vector<PlannedPass>& planned = this->Planned[axis][inverse];
+      planned.clear();
+      for (const Pass& pass : Passes(grid[axis], axis, inverse ? 1.0f : -1.0f))
+      {
+        const bool fromTexture = axis == 0 && !inverse && planned.empty();
+        const Layout layout = LayoutOf(pass, axis);
+        const unsigned int program =
+          this->Program(TransformDefines(pass, grid[axis], fromTexture, layout), &log);
+        if (!program)
+        {
+          why = "A PSF bloom FFT program did not build: " + log;
+          return false;
+        }
+        planned.push_back(PlannedPass{ pass, layout, program });
+      }
     }
   }
   this->ProgramsBuilt = true;
@@ -484,9 +490,9 @@ void vtkBloomPassFFT::Transform(int axis, float direction, const Lines& lines)
   // Only the first dispatch reads the texture or meets the zero padding; the second (four
   // steps) reads its output.
   Lines first = lines;
-  for (const Pass& pass : Passes(this->Grid[axis], axis, direction))
+  for (const PlannedPass& planned : this->Planned[axis][direction > 0.0f ? 1 : 0])
   {
-    this->RunPass(pass, axis, direction, first);
+    this->RunPass(planned, axis, direction, first);
     first.Source = nullptr;
     first.SampleLimit = this->Grid[axis];
   }
@@ -513,12 +519,13 @@ void vtkBloomPassFFT::Forward(vtkTextureObject* source, const int sourceSize[2])
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassFFT::RunPass(const Pass& pass, int axis, float direction, const Lines& lines)
+void vtkBloomPassFFT::RunPass(
+  const PlannedPass& planned, int axis, float direction, const Lines& lines)
 {
-  const int n = this->Grid[axis];
-  const Layout layout = LayoutOf(pass, axis);
-  vtkTextureObject* source = lines.Source;
-  const unsigned int program = this->Program(TransformDefines(pass, n, source != nullptr, layout));
+  const Pass& pass = planned.Run;
+  const Layout& layout = planned.Shape;
+  const unsigned int program = planned.Program;
+  vtkTextureObject* source = lines.Source; // only the first pass of the forward rows
   glUseProgram(program);
   // Rows: samples adjacent, lines NX apart; columns: samples NX apart, lines adjacent.
   glUniform1i(this->Uniform(program, "sampleStride"), axis == 0 ? 1 : this->Grid[0]);
@@ -661,6 +668,13 @@ void vtkBloomPassFFT::ReleaseGraphicsResources(vtkWindow* w)
     this->KernelTexture = nullptr;
   }
   this->Programs.clear();
+  for (auto& axis : this->Planned)
+  {
+    for (std::vector<PlannedPass>& planned : axis)
+    {
+      planned.clear();
+    }
+  }
   this->Locations.clear();
   this->SignalBuffer = this->SpectraBuffer = 0;
   this->TwiddleBuffers[0] = this->TwiddleBuffers[1] = 0;

@@ -195,7 +195,6 @@ private:
   void Multiply();
   /// The inverse transform's full convolution folded into `target` (FFT_FOLD).
   void Fold(vtkTextureObject* target, bool reflect);
-  void RunPass(const Pass& pass, int axis, float direction, const Lines& lines);
   /// The compute program of `defines`, made on first use; 0 when it does not build (the
   /// compiler's log in `log`, when given).
   unsigned int Program(const std::string& defines, std::string* log = nullptr);
@@ -219,10 +218,19 @@ private:
   /// The defines of `pass` along a line of n samples laid out as `layout`.
   static std::string TransformDefines(
     const Pass& pass, int n, bool fromTexture, const Layout& layout);
+  /// One dispatch of a transform as BuildPrograms planned it for the grid.
+  struct PlannedPass
+  {
+    Pass Run;
+    Layout Shape;
+    unsigned int Program;
+  };
+  void RunPass(const PlannedPass& planned, int axis, float direction, const Lines& lines);
   /// The padded grid of width x height images in `grid`, and why this context cannot use it
   /// (empty when it can).
   std::string MakeGrid(int width, int height, int grid[2]) const;
-  /// Build (or find) every program of the grid's transforms; false, with the reason in `why`.
+  /// Build (or find) every program of the grid's transforms and plan their dispatches
+  /// (Planned); false, with the reason in `why`.
   bool BuildPrograms(const int grid[2], std::string& why);
   /// Upload the kernels and compute their spectra into SpectraBuffer.
   void MakeSpectra();
@@ -243,6 +251,7 @@ private:
   int Size[2] = { 0, 0 };          ///< the image
   int Grid[2] = { 0, 0 };          ///< NX, NY
   bool ProgramsBuilt = false;      ///< BuildPrograms succeeded for Grid
+  std::vector<PlannedPass> Planned[2][2]; ///< [axis][0: forward, 1: inverse], by BuildPrograms
   unsigned int SignalBuffer = 0;
   unsigned int SpectraBuffer = 0;
   unsigned int TwiddleBuffers[2] = { 0, 0 }; ///< per axis

@@ -8,8 +8,8 @@
     complex signals in the buffer `signal` (signal s at s * signalStride; sample n of line l at
     l * lineStride + n * sampleStride), X[q] = sum_m x[m] exp(direction 2 pi i m q / FFT_N),
     unscaled. Sub-sequence j of a line is its samples j * subOffset + m * subSpacing,
-    0 <= m < FFT_N (subCount of them per line); a line of N <= 4096 samples is one sub-sequence
-    (subOffset 0, subSpacing 1). Only lines lineFirst to lineFirst + lineCount - 1 are
+    0 <= m < FFT_N (subCount of them per line); a line transformed in one dispatch (a row of
+    N <= 4096 samples, a column of N <= 2048) is one sub-sequence (subOffset 0, subSpacing 1). Only lines lineFirst to lineFirst + lineCount - 1 are
     transformed (the others are zero or not needed), and samples at or past sampleLimit along
     a line are zero: not read. A work group takes FFT_LINES units (a line's sub-sequence)
     adjacent in memory, so that it reads and writes runs of them rather than one sample a row
@@ -387,7 +387,8 @@ void main()
   const vec2 kb = flip * spectra[2 * kept + at];
   vec2 re, im;
   Separate(signal[p], signal[q], re, im);
-  // All these spectra are Hermitian: at -k they are the conjugates.
+  // The separated red and green spectra and the kernels' are Hermitian: at -k they are the
+  // conjugates.
   const vec2 gp = ComplexMultiply(im, kg);
   signal[p] = ComplexMultiply(re, kr) + vec2(-gp.y, gp.x);
   signal[total + p] = ComplexMultiply(signal[total + p], kb);
