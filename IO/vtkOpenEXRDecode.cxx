@@ -146,8 +146,8 @@ bool vtkOpenEXRChunkDecoder::Decode(vtkOpenEXRCoreFile& file, const vtkOpenEXRHe
   }
   if (result != EXR_ERR_SUCCESS)
   {
-    return failure.Set(
-      vtkErrorCode::FileFormatError, "cannot decode a pixel data chunk: " + file.Describe(result));
+    return failure.Set(vtkErrorCode::FileFormatError,
+      chunkEntry.Describe() + ": cannot be decoded: " + file.Describe(result));
   }
 
   // The decompressed chunk holds, line by line, each channel that has samples on that line
@@ -173,8 +173,8 @@ bool vtkOpenEXRChunkDecoder::Decode(vtkOpenEXRCoreFile& file, const vtkOpenEXRHe
       (channel.data_type == EXR_PIXEL_HALF) != (channel.bytes_per_element == 2) ||
       (channel.x_samples == 1 && channel.width != chunk.width))
     {
-      return failure.Set(
-        vtkErrorCode::FileFormatError, "a pixel data chunk does not match the channel layout");
+      return failure.Set(vtkErrorCode::FileFormatError,
+        chunkEntry.Describe() + ": does not match the channel layout");
     }
     expectedBytes += static_cast<uint64_t>(channel.width) * static_cast<uint64_t>(lines) *
       static_cast<uint64_t>(channel.bytes_per_element);
@@ -188,8 +188,8 @@ bool vtkOpenEXRChunkDecoder::Decode(vtkOpenEXRCoreFile& file, const vtkOpenEXRHe
   }
   if (expectedBytes != chunk.unpacked_size || (expectedBytes > 0 && !pipeline.unpacked_buffer))
   {
-    return failure.Set(
-      vtkErrorCode::FileFormatError, "a pixel data chunk does not match the channel layout");
+    return failure.Set(vtkErrorCode::FileFormatError,
+      chunkEntry.Describe() + ": its channels need " + std::to_string(expectedBytes) + " bytes");
   }
   if (!output)
   {

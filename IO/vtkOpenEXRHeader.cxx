@@ -575,3 +575,19 @@ bool vtkOpenEXRReadChunkTable(vtkOpenEXRCoreFile& file, const vtkOpenEXRHeader& 
   }
   return true;
 }
+
+//------------------------------------------------------------------------------
+std::string vtkOpenEXRChunk::Describe() const
+{
+  static const char* const codecs[] = { "uncompressed", "RLE", "ZIPS", "ZIP", "PIZ", "PXR24", "B44",
+    "B44A", "DWAA", "DWAB" };
+  const char* codec = this->Info.compression < sizeof(codecs) / sizeof(codecs[0])
+    ? codecs[this->Info.compression]
+    : "unknown";
+  std::ostringstream text;
+  text << "the " << codec << " chunk of pixels (" << this->StartX << ", " << this->StartY
+       << ") to (" << this->StartX + this->Info.width - 1 << ", "
+       << this->StartY + this->Info.height - 1 << "), " << this->Info.packed_size << " bytes for "
+       << this->Info.unpacked_size;
+  return text.str();
+}

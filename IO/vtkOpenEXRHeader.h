@@ -74,6 +74,12 @@ struct vtkOpenEXRChunk
   exr_chunk_info_t Info;
   int32_t StartX = 0;
   int32_t StartY = 0;
+
+  /**
+   * The chunk for an error message: its codec, its pixels and its sizes, e.g. "the ZIP chunk
+   * of pixels (0, 16) to (96, 31), 2710 bytes for 12416".
+   */
+  std::string Describe() const;
 };
 
 /**

@@ -7,6 +7,7 @@
 #include "vtkInformationVector.h"
 #include "vtkNew.h"
 #include "vtkObjectFactory.h"
+#include "vtkOpenEXRDWA.h"
 #include "vtkOpenEXRDecode.h"
 #include "vtkOpenEXRHeader.h"
 #include "vtkPointData.h"
@@ -254,25 +255,28 @@ int vtkOpenEXRReader::RequestData(
 
   if (scalars)
   {
+    const bool dwa =
+      header.Compression == EXR_COMPRESSION_DWAA || header.Compression == EXR_COMPRESSION_DWAB;
     if (header.LuminanceChroma)
     {
-      // Validate every chunk with the hardened decoder before the C++ library reads them
-      // (DWA chunks only by the chunk table: the core library cannot decompress them).
-      const bool dwa =
-        header.Compression == EXR_COMPRESSION_DWAA || header.Compression == EXR_COMPRESSION_DWAB;
-      if (dwa || vtkOpenEXRDecodeChunks(file, header, chunks, nullptr, false, this, failure))
+      // Every chunk is checked before the C++ library reads it: DWA chunks stream by stream
+      // against the channel list, the others by decoding them with the core library.
+      if (dwa ? vtkOpenEXRCheckDWAChunks(file, header, chunks, failure)
+              : vtkOpenEXRDecodeChunks(file, header, chunks, nullptr, false, this, failure))
       {
         file.Close();
         vtkOpenEXRConvertLuminanceChroma(
           this->FileName, header, static_cast<float*>(scalars->GetVoidPointer(0)), failure);
       }
     }
-    else if (header.Compression == EXR_COMPRESSION_DWAA ||
-      header.Compression == EXR_COMPRESSION_DWAB)
+    else if (dwa)
     {
-      file.Close();
-      vtkOpenEXRDecodeWithImf(this->FileName, header, scalars->GetVoidPointer(0),
-        header.ScalarType == VTK_UNSIGNED_INT, failure);
+      if (vtkOpenEXRCheckDWAChunks(file, header, chunks, failure))
+      {
+        file.Close();
+        vtkOpenEXRDecodeWithImf(this->FileName, header, scalars->GetVoidPointer(0),
+          header.ScalarType == VTK_UNSIGNED_INT, failure);
+      }
     }
     else
     {

@@ -29,3 +29,13 @@ vtkbloom_add_gtest(TestOpenEXRHostile
   SOURCES IO/TestOpenEXRHostile.cxx
   LIBRARIES ${vtkbloom_io_test_libraries})
 target_include_directories(TestOpenEXRHostile PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/IO")
+
+# Crafted files (Support/vtkBloomCraftedEXR.cxx): streams that decode short of the channel
+# list, refused; the valid files they are made from, read as OpenEXR decodes them. The
+# committed copies in Data/EXR/Crafted are written by MakeCraftedEXR.
+vtkbloom_add_gtest(TestOpenEXRCrafted
+  SOURCES IO/TestOpenEXRCrafted.cxx
+  LIBRARIES ${vtkbloom_io_test_libraries})
+target_include_directories(TestOpenEXRCrafted PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/IO")
+add_executable(MakeCraftedEXR IO/MakeCraftedEXR.cxx)
+target_link_libraries(MakeCraftedEXR PRIVATE vtkbloom_testing)

@@ -42,6 +42,9 @@ elif [ "${CI:-}" = "true" ]; then
 fi
 "$build/MakeHostileEXR" "$seeds/hostile"
 mv "$seeds"/hostile/* "$seeds/" && rmdir "$seeds/hostile"
+# The crafted DWA, tiled and luminance/chroma files, and the sound files they come from.
+cp "$root"/Testing/Data/EXR/Crafted/*.exr "$seeds/"
+for f in "$root"/Testing/Data/EXR/Crafted/valid/*.exr; do cp "$f" "$seeds/valid-$(basename "$f")"; done
 echo "fuzz: $(ls "$seeds" | wc -l) seed files, $(ls "$build/corpus" | wc -l) in the corpus," \
   "running for ${seconds} s"
 
