@@ -9,7 +9,8 @@
  *   vtkCompositePolyDataMapper in VTK 9.3.
  * - The window chosen at run time (VTK 9.4 and later): vtkBloomPreferHeadlessWindow() names
  *   the headless one where there is no display, and vtkBloomCheckOpenGLWindow() turns the
- *   crash of a missing OSMesa into a message.
+ *   crash of a missing OSMesa into a message; with VTK 9.1, the abort of an X window with no
+ *   display and of an EGL window with no libEGL.
  *
  * Private: not installed. Include it instead of vtk_glew.h or vtk_glad.h.
  */
@@ -27,10 +28,13 @@
 
 #if VTKBLOOM_VTK_AT_LEAST(9, 4)
 #include "vtk_glad.h" // IWYU pragma: export
-#include <dlfcn.h>
 #else
 #include "vtk_glew.h" // IWYU pragma: export
 #endif
+#include "vtkRenderWindow.h"
+#include "vtkSmartPointer.h"
+
+#include <dlfcn.h>
 
 #if VTKBLOOM_VTK_AT_LEAST(9, 3)
 #include "vtkCompositePolyDataMapper.h"
@@ -40,7 +44,6 @@ using vtkBloomCompositePolyDataMapper = vtkCompositePolyDataMapper;
 using vtkBloomCompositePolyDataMapper = vtkCompositePolyDataMapper2;
 #endif
 
-#if VTKBLOOM_VTK_AT_LEAST(9, 4)
 /// The libraries VTK 9.4 and later load (dlopen) for the EGL and the OSMesa windows; for
 /// OSMesa the names it tries, in its order.
 inline constexpr const char* vtkBloomEGLLibraries[] = { "libEGL.so.1" };
@@ -61,7 +64,42 @@ inline bool vtkBloomCanLoad(const char* const (&libraries)[N])
   }
   return false;
 }
-#endif
+
+/**
+ * Whether the X display that DISPLAY names opens. VTK 9.1's X window calls abort() when it
+ * does not, with no message; this asks Xlib first (loaded here, so that nothing links it).
+ */
+inline bool vtkBloomCanOpenXDisplay(std::string& why)
+{
+  const char* display = std::getenv("DISPLAY");
+  if (display == nullptr || *display == '\0')
+  {
+    why = "DISPLAY is not set";
+    return false;
+  }
+  void* xlib = dlopen("libX11.so.6", RTLD_LAZY | RTLD_LOCAL);
+  if (xlib == nullptr)
+  {
+    why = "libX11.so.6 cannot be loaded";
+    return false;
+  }
+  using OpenDisplay = void* (*)(const char*);
+  using CloseDisplay = int (*)(void*);
+  auto open = reinterpret_cast<OpenDisplay>(dlsym(xlib, "XOpenDisplay"));
+  auto close = reinterpret_cast<CloseDisplay>(dlsym(xlib, "XCloseDisplay"));
+  void* connection = open && close ? open(display) : nullptr;
+  if (connection)
+  {
+    close(connection);
+  }
+  dlclose(xlib);
+  if (connection == nullptr)
+  {
+    why = std::string("DISPLAY=") + display + " cannot be opened";
+    return false;
+  }
+  return true;
+}
 
 /**
  * With no X display, VTK 9.4 and later try X first, log a warning to stderr, then fall back
@@ -93,7 +131,8 @@ inline void vtkBloomPreferHeadlessWindow()
  * in one line. VTK 9.4 and later pick the window at run time, and VTK_DEFAULT_OPENGL_WINDOW
  * names one. Asked for vtkOSOpenGLRenderWindow where no libOSMesa exists (Mesa removed it in
  * 25.1), or set to an empty string, VTK 9.6 warns and then crashes; this check runs first.
- * VTK 9.1 fixes the window when it is built, so there is nothing to check there.
+ * VTK 9.1 fixes the window when it is built: there, an X window needs a display that opens
+ * (else VTK aborts with no word), and an EGL window needs libEGL.
  */
 inline bool vtkBloomCheckOpenGLWindow(std::string& why)
 {
@@ -118,7 +157,23 @@ inline bool vtkBloomCheckOpenGLWindow(std::string& why)
     return false;
   }
 #else
-  (void)why;
+  // VTK 9.1 builds one window in: an X one aborts where no display opens, an EGL one where
+  // there is no libEGL. Making the object opens nothing; only its class is asked.
+  const std::string name = vtkSmartPointer<vtkRenderWindow>::New()->GetClassName();
+  std::string missing;
+  if (name == "vtkXOpenGLRenderWindow" && !vtkBloomCanOpenXDisplay(missing))
+  {
+    why = "this VTK renders through X and " + missing +
+      ": run under xvfb-run -a, set DISPLAY, or build against the OSMesa or EGL VTK "
+      "(bash scripts/build-osmesa-vtk.sh; docs/building.md)";
+    return false;
+  }
+  if (name == "vtkEGLRenderWindow" && !vtkBloomCanLoad(vtkBloomEGLLibraries))
+  {
+    why = "this VTK renders through EGL and libEGL.so.1 cannot be loaded: install libegl1 "
+          "and a driver (libegl-mesa0 or NVIDIA's), or use the OSMesa VTK";
+    return false;
+  }
 #endif
   return true;
 }

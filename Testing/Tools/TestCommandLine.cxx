@@ -14,6 +14,7 @@
 #include <vtkNew.h>
 #include <vtkPNGReader.h>
 #include <vtkPointData.h>
+#include <vtkRenderingOpenGLConfigure.h>
 #include <vtkVersionMacros.h>
 
 #include <sys/wait.h>
@@ -406,6 +407,53 @@ TEST(CommandLine, CameraOptionsTurnTheExampleScenes)
 // VTK 9.4 and later choose the render window at run time. Asked for an OSMesa window where
 // there is no libOSMesa (Mesa 25.1 removed it), or given an empty name, VTK 9.6 crashes; the
 // tool refuses instead, with one line that names the variable, and writes nothing.
+//------------------------------------------------------------------------------
+// VTK 9.1 built for X aborts with no word where no display opens. The tool must say, in one
+// line, what is missing and what to run instead, exit 1 and write nothing. Headless builds
+// (OSMesa, EGL, VTK 9.4 and later) must render with no display at all.
+TEST(CommandLine, RenderWithoutADisplaySaysWhatToRun)
+{
+#if VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 4, 0) && defined(VTK_USE_X) &&                       \
+  !defined(VTK_OPENGL_HAS_OSMESA) && !defined(VTK_OPENGL_HAS_EGL)
+  const bool needsX = true;
+#else
+  const bool needsX = false;
+#endif
+  const std::string out = vtkBloomTest::OutputPath("render-no-display.png");
+  const std::string log = vtkBloomTest::OutputPath("render-no-display.txt");
+  for (const std::string& display :
+    { std::string("env -u DISPLAY"), std::string("env DISPLAY=:9871") })
+  {
+    for (const std::string& verb : { std::string("render"), std::string("view") })
+    {
+      fs::remove(out);
+      const std::string command = display + " " + std::string(VTKBLOOM_TOOL) + " " + verb +
+        " --size 32x24 lit-spheres" + (verb == "render" ? " " + Quote(out) : "") +
+        " >/dev/null 2>" + Quote(log);
+      const int status = std::system(command.c_str());
+      ASSERT_TRUE(WIFEXITED(status)) << command << ": the tool did not exit by itself";
+      std::ifstream in(log);
+      const std::string errors{ std::istreambuf_iterator<char>(in),
+        std::istreambuf_iterator<char>() };
+      if (verb == "render" && !needsX)
+      {
+        EXPECT_EQ(WEXITSTATUS(status), 0) << command << ": " << errors;
+        EXPECT_TRUE(fs::exists(out)) << command;
+        continue;
+      }
+      // view always needs a display; render does where VTK renders through X.
+      EXPECT_EQ(WEXITSTATUS(status), 1) << command << ": " << errors;
+      EXPECT_EQ(std::count(errors.begin(), errors.end(), '\n'), 1) << command << ": " << errors;
+      EXPECT_NE(errors.find("DISPLAY"), std::string::npos) << command << ": " << errors;
+      if (verb == "render")
+      {
+        EXPECT_NE(errors.find("xvfb-run"), std::string::npos) << errors;
+        EXPECT_FALSE(fs::exists(out)) << command;
+      }
+    }
+  }
+}
+
 TEST(CommandLine, RenderRefusesAWindowVTKCannotMake)
 {
 #if VTK_VERSION_NUMBER < VTK_VERSION_CHECK(9, 4, 0)
