@@ -130,7 +130,8 @@ render: render an example scene or your dataset headless with the GPU pass (vtkB
   --representation R     surface (default) | points | wireframe | volume (image data)
   --contour V1,V2,...    draw iso-contours of the coloured array
   --emit-range LO:HI     only the data in this range of the coloured array glows
-  --emit-gain G          HDR intensity of what glows (default 4 with --emit-range, else 1)
+  --emit-gain G          with --emit-range, the emitted light x G; without, the whole
+                         scene's colours x G, so that what then exceeds 1 glows (default 1)
   --view V               iso (default) | +x | -x | +y | -y | +z | -z: the camera looks along V
   --azimuth A, --elevation E, --zoom Z    turn and zoom the camera after --view
   --background R,G,B     background colour (default 0.02,0.02,0.03)
@@ -528,7 +529,15 @@ RenderOptions TakeRenderOptions(Arguments& args, const CommonOptions& common)
   // The bloom options are parsed now (usage errors before any rendering) and applied to the
   // pass after the scene has set its own parameters.
   const BloomOptions bloom(args);
-  options.ConfigureBloom = [bloom](vtkBloomPass* pass) { bloom.Apply(pass->GetParameters()); };
+  // With --emit-range the emitters' light blooms as it is (no threshold) through a chain that
+  // is linear in it, so the emitted light times G blooms to the glow times G: the strength.
+  const double emissionGain = data.HasEmitRange && data.EmitGain >= 0.0 ? data.EmitGain : 1.0;
+  options.ConfigureBloom = [bloom, emissionGain](vtkBloomPass* pass)
+  {
+    vtkBloomParameters* parameters = pass->GetParameters();
+    bloom.Apply(parameters);
+    parameters->SetStrength(parameters->GetStrength() * emissionGain);
+  };
   return options;
 }
 #endif

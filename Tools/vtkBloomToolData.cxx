@@ -23,6 +23,7 @@
 #include <vtkPointData.h>
 #include <vtkProperty.h>
 #include <vtkRenderer.h>
+#include <vtkShaderProperty.h>
 #include <vtkSmartVolumeMapper.h>
 #include <vtkTrivialProducer.h>
 #include <vtkVolume.h>
@@ -359,7 +360,7 @@ struct DataScene::vtkInternals
   void BuildSurface(vtkRenderer* renderer, vtkBloomPass* pass, int component, double gain);
   vtkAlgorithm* SurfaceSource();
   void ColourMapper(int component);
-  void AddEmitter(vtkBloomPass* pass, vtkProperty* property, double gain);
+  void AddEmitter(vtkBloomPass* pass, vtkProperty* property);
 };
 
 DataScene::DataScene()
@@ -475,12 +476,18 @@ void DataScene::vtkInternals::BuildSurface(
 
   if (this->Options.HasEmitRange)
   {
-    this->AddEmitter(pass, property, gain);
+    this->AddEmitter(pass, property);
   }
   else if (gain != 1.0)
   {
-    property->SetAmbient(property->GetAmbient() * gain);
-    property->SetDiffuse(property->GetDiffuse() * gain);
+    // The whole scene's colours times the gain: HDR, so that what now exceeds 1 glows. Not
+    // through the property, whose ambient and diffuse VTK clamps to [0, 1], but on the
+    // fragment's final colour (after lighting, textures and scalar colouring).
+    std::ostringstream scale;
+    scale.precision(17);
+    scale << "//VTK::Light::Impl\n  gl_FragData[0].rgb *= " << std::fixed << gain << ";\n";
+    this->Actor->GetShaderProperty()->AddFragmentShaderReplacement(
+      "//VTK::Light::Impl", true, scale.str(), false);
   }
 }
 
@@ -565,8 +572,9 @@ void DataScene::vtkInternals::ColourMapper(int component)
 
 //------------------------------------------------------------------------------
 // Only the emit range glows: an emitter copy of the actor, black outside the range, its
-// colours lifted to HDR by the gain and unlit (ambient only), as the scalar-field scene.
-void DataScene::vtkInternals::AddEmitter(vtkBloomPass* pass, vtkProperty* property, double gain)
+// colours unlit (ambient only), as the scalar-field scene. The pass blooms the range's
+// colours whatever their level (no threshold); --emit-gain scales that light (the strength).
+void DataScene::vtkInternals::AddEmitter(vtkBloomPass* pass, vtkProperty* property)
 {
   this->Emitter = vtkBloomPass::CreateScalarRangeEmitter(this->Actor, this->Options.EmitRange);
   if (!this->Emitter)
@@ -575,7 +583,7 @@ void DataScene::vtkInternals::AddEmitter(vtkBloomPass* pass, vtkProperty* proper
   }
   vtkNew<vtkProperty> glow;
   glow->DeepCopy(property);
-  glow->SetAmbient(gain);
+  glow->SetAmbient(1.0);
   glow->SetDiffuse(0.0);
   glow->SetSpecular(0.0);
   // Blocks without the array take the property's colour: black, so they do not emit.
@@ -608,8 +616,8 @@ void DataScene::Build(vtkDataObject* data, const std::string& name, const DataSc
     ArrayRange(data, d.Array, component, d.ColorRange);
   }
   FillColorMap(options.Colormap, d.Colours, d.ColorRange[0], d.ColorRange[1]);
-  const double gain =
-    options.EmitGain >= 0.0 ? options.EmitGain : (options.HasEmitRange ? 4.0 : 1.0);
+  // With --emit-range the gain scales the emitted light (the strength, in vtk-bloom.cxx).
+  const double gain = options.EmitGain >= 0.0 && !options.HasEmitRange ? options.EmitGain : 1.0;
 
   d.Producer->SetOutput(data);
   d.Data = data;

@@ -56,7 +56,7 @@ struct DataSceneOptions
   std::vector<double> Contours;
   bool HasEmitRange = false;
   double EmitRange[2] = { 0.0, 0.0 };
-  double EmitGain = -1.0;   // < 0: the default (4 with --emit-range, 1 without)
+  double EmitGain = -1.0;   // < 0: the default, 1 (with --emit-range it scales the strength)
   std::string View = "iso"; // iso | +x | -x | +y | -y | +z | -z
   double Azimuth = 0.0;
   double Elevation = 0.0;

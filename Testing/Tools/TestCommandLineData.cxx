@@ -7,6 +7,7 @@
 #include "vtkBloomToolTestHelpers.h"
 
 #include <vtkAppendFilter.h>
+#include <vtkCellArray.h>
 #include <vtkDataSetWriter.h>
 #include <vtkDoubleArray.h>
 #include <vtkImageData.h>
@@ -15,6 +16,7 @@
 #include <vtkNew.h>
 #include <vtkPlaneSource.h>
 #include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkRTAnalyticSource.h>
 #include <vtkRectilinearGrid.h>
@@ -278,6 +280,68 @@ TEST(CommandLineData, SelectiveBloomLandsInTheHotCorner)
   EXPECT_LT(added.Y, 0.4 * with.Height) << added.Y;
   EXPECT_EQ(Difference(none, without).Total, 0.0);
   EXPECT_EQ(RelativeL2(none, without), 0.0);
+}
+
+//------------------------------------------------------------------------------
+// --emit-gain G as documented. Without --emit-range the whole scene's colours are times G:
+// the wavelet's edges (VTK clamps a property's ambient and diffuse to 1, so that this once did
+// nothing) rise above 1 and glow, where at G = 1 nothing is light and the frame is the plain
+// one. With --emit-range the emitted light, and so the glow, is times G.
+TEST(CommandLineData, EmitGainScalesWhatGlows)
+{
+  // Twenty polylines coloured by x: lines, as the report that found this had.
+  const std::string lines = Directory() + "/gain-lines.vtp";
+  {
+    vtkNew<vtkPoints> points;
+    vtkNew<vtkCellArray> cells;
+    vtkNew<vtkDoubleArray> x;
+    x->SetName("x");
+    for (int row = 0; row < 20; ++row)
+    {
+      cells->InsertNextCell(50);
+      for (int i = 0; i < 50; ++i)
+      {
+        cells->InsertCellPoint(points->InsertNextPoint(i / 49.0, row / 19.0, 0.0));
+        x->InsertNextValue(i / 49.0);
+      }
+    }
+    vtkNew<vtkPolyData> polylines;
+    polylines->SetPoints(points);
+    polylines->SetLines(cells);
+    polylines->GetPointData()->AddArray(x);
+    vtkNew<vtkXMLPolyDataWriter> writer;
+    writer->SetInputData(polylines);
+    writer->SetFileName(lines.c_str());
+    writer->Write();
+  }
+  const std::string common = " --quiet --size 160x120 --view -z ";
+  auto render = [&](const std::string& options, const std::string& input, const std::string& name)
+  {
+    const std::string out = Directory() + "/" + name + ".exr";
+    std::string errors;
+    EXPECT_EQ(
+      RunTool("render" + common + options + " " + Quote(input) + " " + Quote(out), &errors), 0)
+      << errors;
+    return ReadEXR(out);
+  };
+  auto maximum = [](const Pixels& p) { return *std::max_element(p.Rgba.begin(), p.Rgba.end()); };
+
+  const Pixels plain1 = render("--no-bloom", lines, "gain-plain-1");
+  const Pixels bloom1 = render("", lines, "gain-bloom-1");
+  const Pixels plain8 = render("--no-bloom --emit-gain 8", lines, "gain-plain-8");
+  const Pixels bloom8 = render("--emit-gain 8", lines, "gain-bloom-8");
+  EXPECT_LE(maximum(plain1), 1.0f);
+  EXPECT_EQ(RelativeL2(bloom1, plain1), 0.0) << "nothing above 1: nothing glows";
+  EXPECT_GT(maximum(plain8), 2.0f) << "the colours times 8";
+  EXPECT_GT(Difference(bloom8, plain8).Total, 0.0) << "what exceeds 1 glows";
+
+  const std::string wavelet = WriteWavelet(".vtp");
+  const std::string range = "--color-by RTData --emit-range 150:300 ";
+  const Pixels plain = render("--no-bloom " + range, wavelet, "gain-range-plain");
+  const Energy glow1 = Difference(render(range, wavelet, "gain-range-1"), plain);
+  const Energy glow8 = Difference(render(range + "--emit-gain 8", wavelet, "gain-range-8"), plain);
+  ASSERT_GT(glow1.Total, 0.0);
+  EXPECT_NEAR(glow8.Total / glow1.Total, 8.0, 0.08); // float16 targets
 }
 
 //------------------------------------------------------------------------------
