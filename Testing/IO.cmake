@@ -39,3 +39,6 @@ vtkbloom_add_gtest(TestOpenEXRCrafted
 target_include_directories(TestOpenEXRCrafted PRIVATE "${CMAKE_CURRENT_SOURCE_DIR}/IO")
 add_executable(MakeCraftedEXR IO/MakeCraftedEXR.cxx)
 target_link_libraries(MakeCraftedEXR PRIVATE vtkbloom_testing)
+# The hostile headers as files, for scripts/valgrind.sh (the fuzz project builds its own).
+add_executable(MakeHostileEXR Fuzz/MakeHostileEXR.cxx)
+target_link_libraries(MakeHostileEXR PRIVATE vtkbloom_testing)

@@ -25,7 +25,7 @@ packages=(
   build-essential cmake ninja-build pkg-config ccache git
   libvtk9-dev python3-vtk9 python3-numpy python3-pytest
   libopenexr-dev libimath-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
-  libfftw3-dev libegl-mesa0 libgl1-mesa-dri libegl-dev
+  libfftw3-dev zlib1g-dev libegl-mesa0 libgl1-mesa-dri libegl-dev
   paraview-dev python3-paraview openmpi-bin xvfb xauth
   xsltproc qt6-base-dev qt6-tools-dev qt6-tools-dev-tools
 )

@@ -23,6 +23,9 @@
 #                                  tests. Not part of the default run; .ci/run runs it.
 #   bash scripts/test.sh --asan    AddressSanitizer + UndefinedBehaviorSanitizer build in
 #                                  build-asan/ (system VTK, under Xvfb)
+#   bash scripts/test.sh --valgrind the hostile-file tests (damaged corpus, hostile headers,
+#                                  crafted files) and the tool on those files under valgrind's
+#                                  memcheck, in the X11 leg's build/ (scripts/valgrind.sh)
 #   bash scripts/test.sh --fuzz [S] the OpenEXR reader's libFuzzer target for S seconds
 #                                  (default 120; scripts/fuzz.sh)
 # Tests whose shared data (../shared/data) is missing are skipped, except under CI=true, where
@@ -113,11 +116,16 @@ case "$mode" in
     export LSAN_OPTIONS="suppressions=$root/Testing/lsan.supp:print_suppressions=0"
     run_x11 "$root/build-asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVTKBLOOM_ENABLE_SANITIZERS=ON
     ;;
+  --valgrind)
+    bash "$root/scripts/configure.sh" "$root/build" -DCMAKE_BUILD_TYPE=Release \
+      -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
+    bash "$root/scripts/valgrind.sh" "$root/build"
+    ;;
   --fuzz)
     bash "$root/scripts/fuzz.sh" "${2:-120}"
     ;;
   *)
-    echo "usage: bash scripts/test.sh [--x11 | --paraview | --osmesa | --egl | --sid | --asan | --fuzz [SECONDS]]" >&2
+    echo "usage: bash scripts/test.sh [--x11 | --paraview | --osmesa | --egl | --sid | --asan | --valgrind | --fuzz [SECONDS]]" >&2
     exit 2
     ;;
 esac
