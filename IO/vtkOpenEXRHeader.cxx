@@ -388,6 +388,17 @@ bool vtkOpenEXRReadHeader(vtkOpenEXRCoreFile& file, int partIndex, const std::st
             << " data; deep images are not supported, only flat scanline and tiled parts";
     return failure.Set(vtkErrorCode::FileFormatError, message.str());
   }
+  // An empty view list makes OpenEXR's luminance/chroma reader index its first view (a null
+  // read in Imf::RgbaInputFile before 3.4.11, with no advisory; docs/openexr.md). No sound file
+  // names no views, so it is refused for every part.
+  const exr_attribute_t* views = nullptr;
+  if (exr_get_attribute_by_name(file.Context, part, "multiView", &views) == EXR_ERR_SUCCESS &&
+    views && views->type == EXR_ATTR_STRING_VECTOR &&
+    (!views->stringvector || views->stringvector->n_strings < 1))
+  {
+    return failure.Set(vtkErrorCode::FileFormatError,
+      "part " + std::to_string(part) + " has a multiView attribute that names no view");
+  }
   if (!ReadWindow(file, part, true, header.DataWindow, failure) ||
     !ReadWindow(file, part, false, header.DisplayWindow, failure))
   {
@@ -522,6 +533,18 @@ bool vtkOpenEXRReadChunkTable(vtkOpenEXRCoreFile& file, const vtkOpenEXRHeader& 
   {
     return failure.Set(
       vtkErrorCode::FileFormatError, "the chunk count does not cover the data window");
+  }
+  // OpenEXR 3.1's PIZ decoders (the core's and the C++ library's) index a chunk's wavelet
+  // buffers with 32-bit products that overflow from 2^30 samples of a channel in one chunk
+  // (CVE-2026-34588, fixed in 3.2.7). The default pixel limit keeps chunks far below that; a
+  // raised one must not let them reach it. 2^29 leaves a factor 2 of margin.
+  if (header.Compression == EXR_COMPRESSION_PIZ &&
+    std::min<vtkTypeInt64>(stepX, x1 - x0 + 1) * std::min<vtkTypeInt64>(stepY, y1 - y0 + 1) >=
+      (vtkTypeInt64(1) << 29))
+  {
+    return failure.Set(vtkErrorCode::FileFormatError,
+      "its PIZ chunks hold 2^29 or more pixels, which overflow OpenEXR 3.1's PIZ decoder "
+      "(CVE-2026-34588)");
   }
   const vtkTypeUInt64 expansion = vtkOpenEXRMaximumExpansion(header.Compression);
   const auto fileSize = static_cast<uint64_t>(file.FileSize);

@@ -338,6 +338,22 @@ std::vector<File> MakeAll()
       SinglePart("stringvector-2g.exr", "a string vector entry of 2^31 bytes", c, 96, 96));
   }
 
+  // Headers that reach known flaws of OpenEXR 3.1 (docs/openexr.md): a luminance/chroma layer
+  // with an empty view list (Imf::RgbaInputFile reads its first view), and PIZ chunks of 2^29
+  // pixels, where OpenEXR 3.1's PIZ decoders overflow (CVE-2026-34588) once a caller raises
+  // the pixel limit.
+  {
+    Part views = Window(small, 0, 0, 63, 1);
+    views.Channels = { { "x.BY", HALF, 2, 2 }, { "x.RY", HALF, 2, 2 }, { "x.Y", HALF } };
+    views.Extra.Str("multiView").Str("stringvector").I32(0);
+    files.push_back(SinglePart("multiview-empty-yca.exr",
+      "a luminance/chroma layer with a multiView attribute that names no view", views, 256, 256));
+    Part piz = Window(small, 0, 0, (1 << 24) - 1, 31);
+    piz.Compression = 4;
+    files.push_back(SinglePart("piz-2^29-pixel-chunk.exr",
+      "one PIZ chunk of 2^24 x 32 pixels (2^29: OpenEXR 3.1's PIZ overflow)", piz, 64, 64));
+  }
+
   // Tiled layouts.
   {
     Part tiny = Window(small, 0, 0, (1 << 30) - 1, 0);
