@@ -13,6 +13,7 @@
 #include <openexr.h>
 #include <zlib.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -312,13 +313,14 @@ struct DWAChunk
       this->Rules.assign(payload.begin() + 88, payload.begin() + 88 + static_cast<long>(rules));
       at += rules;
     }
-    for (auto part :
-      { std::make_pair(&this->Unknown, UnknownPacked), std::make_pair(&this->AC, ACPacked),
-        std::make_pair(&this->DC, DCPacked), std::make_pair(&this->RLE, RLEPacked) })
+    Bytes* const parts[] = { &this->Unknown, &this->AC, &this->DC, &this->RLE };
+    const int sizes[] = { UnknownPacked, ACPacked, DCPacked, RLEPacked };
+    for (int k = 0; k < 4; ++k)
     {
-      part.first->assign(payload.begin() + static_cast<long>(at),
-        payload.begin() + static_cast<long>(at + this->Word[part.second]));
-      at += this->Word[part.second];
+      const uint64_t size = this->Word[sizes[k]];
+      parts[k]->assign(
+        payload.begin() + static_cast<long>(at), payload.begin() + static_cast<long>(at + size));
+      at += size;
     }
   }
 
