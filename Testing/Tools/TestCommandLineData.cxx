@@ -30,6 +30,8 @@
 #include <vtkXMLStructuredGridWriter.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
+#include <half.h>
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -342,6 +344,109 @@ TEST(CommandLineData, EmitGainScalesWhatGlows)
   const Energy glow8 = Difference(render(range + "--emit-gain 8", wavelet, "gain-range-8"), plain);
   ASSERT_GT(glow1.Total, 0.0);
   EXPECT_NEAR(glow8.Total / glow1.Total, 8.0, 0.08); // float16 targets
+}
+
+//------------------------------------------------------------------------------
+// Each option of docs/cli.md's table for datasets, against the frame without it: the effect the
+// table documents, measured on the picture (the plain frame, --no-bloom, so that the bloom does
+// not blur what is measured). Each check fails when its option is ignored.
+TEST(CommandLineData, EveryDataOptionDoesWhatItsTableRowSays)
+{
+  const std::string input = WriteWavelet(".vti");
+  const std::string base = " --quiet --no-bloom --size 160x120 --color-by RTData ";
+  int frame = 0;
+  auto render = [&](const std::string& options)
+  {
+    const std::string out = Directory() + "/option-" + std::to_string(frame++) + ".exr";
+    std::string errors;
+    const std::string background =
+      options.find("--background") == std::string::npos ? "--background 0,0,0 " : "";
+    EXPECT_EQ(
+      RunTool(
+        "render" + base + background + options + " " + Quote(input) + " " + Quote(out), &errors),
+      0)
+      << options << ": " << errors;
+    return ReadEXR(out);
+  };
+  // Pixels that are not the black background, and their mean value.
+  auto covered = [](const Pixels& p)
+  {
+    size_t n = 0;
+    for (size_t i = 0; i < p.Rgba.size(); i += 4)
+    {
+      n += (p.Rgba[i] > 0.0f || p.Rgba[i + 1] > 0.0f || p.Rgba[i + 2] > 0.0f) ? 1 : 0;
+    }
+    return n;
+  };
+  auto mean = [](const Pixels& p)
+  {
+    double sum = 0.0;
+    for (size_t i = 0; i < p.Rgba.size(); i += 4)
+    {
+      sum += p.Rgba[i] + p.Rgba[i + 1] + p.Rgba[i + 2];
+    }
+    return sum / static_cast<double>(p.Rgba.size() / 4);
+  };
+  const Pixels plain = render("");
+  const size_t surface = covered(plain);
+  ASSERT_GT(surface, 1000u);
+
+  // --background R,G,B: the corner is that colour.
+  const Pixels red = render("--background 1,0,0");
+  EXPECT_EQ(red.Rgba[0], 1.0f);
+  EXPECT_EQ(red.Rgba[1], 0.0f);
+  EXPECT_EQ(plain.Rgba[0], 0.0f);
+
+  // --colormap grayscale: white light on grey colours leaves R = G = B; viridis does not.
+  auto spread = [](const Pixels& p)
+  {
+    float most = 0.0f;
+    for (size_t i = 0; i < p.Rgba.size(); i += 4)
+    {
+      most = std::max(most,
+        std::max(std::abs(p.Rgba[i] - p.Rgba[i + 1]), std::abs(p.Rgba[i + 1] - p.Rgba[i + 2])));
+    }
+    return most;
+  };
+  EXPECT_LT(spread(render("--colormap grayscale")), 1e-3f);
+  EXPECT_GT(spread(plain), 0.1f);
+
+  // --range LO:HI: a range above all of the data maps it to the lowest colour, a uniform one.
+  EXPECT_LT(spread(render("--colormap grayscale --range 1000:2000")), 1e-3f);
+  EXPECT_LT(mean(render("--colormap grayscale --range 1000:2000")),
+    0.5 * mean(render("--colormap grayscale")));
+
+  // --representation points and wireframe: the grid's points and edges (all of them, inside
+  // too), not its faces: frames of their own.
+  const Pixels points = render("--representation points");
+  const Pixels wireframe = render("--representation wireframe");
+  EXPECT_GT(RelativeL2(points, plain), 0.1);
+  EXPECT_GT(RelativeL2(wireframe, plain), 0.1);
+  EXPECT_GT(RelativeL2(points, wireframe), 0.1);
+
+  // --contour: iso-surfaces inside the box, not the box's faces: a different frame.
+  const Pixels contour = render("--contour 200");
+  EXPECT_GT(covered(contour), 0u);
+  EXPECT_GT(RelativeL2(contour, plain), 0.1);
+
+  // --view, --azimuth, --elevation: the camera turns; --zoom 2: the object grows.
+  EXPECT_GT(RelativeL2(render("--view +x"), plain), 0.05);
+  EXPECT_GT(RelativeL2(render("--azimuth 30"), plain), 0.05);
+  EXPECT_GT(RelativeL2(render("--elevation 30"), plain), 0.05);
+  EXPECT_GT(covered(render("--zoom 2")), surface * 3 / 2);
+
+  // --precision: 16 (default) writes values a half holds exactly, 32 values it does not.
+  auto halves = [](const Pixels& p)
+  {
+    size_t exact = 0;
+    for (float v : p.Rgba)
+    {
+      exact += static_cast<float>(half(v)) == v ? 1 : 0;
+    }
+    return exact == p.Rgba.size();
+  };
+  EXPECT_TRUE(halves(plain));
+  EXPECT_FALSE(halves(render("--precision 32")));
 }
 
 //------------------------------------------------------------------------------
