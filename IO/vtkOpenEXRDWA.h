@@ -17,9 +17,10 @@
  *   stream decodes to its raw size);
  * - DC: exactly one value per 8x8 block of every lossy channel (the library checks that the
  *   stream holds its count);
- * - AC: decoded here (vtkOpenEXRHuffman.h or deflate) to exactly the count the header gives,
- *   and that count is exactly what the blocks of all lossy channels consume. OpenEXR 3.1
- *   bounds only the first lossy group's reads by it.
+ * - AC: where there are two DCT decoders or more (colour groups and lone lossy channels),
+ *   decoded here (vtkOpenEXRHuffman.h or deflate) to exactly the count the header gives, and
+ *   that count is exactly what the blocks of all lossy channels consume: OpenEXR 3.1 bounds
+ *   only the first decoder's reads by it. With one decoder, its own bound suffices.
  * A chunk stored uncompressed (no smaller than its decoded size) is all file bytes and is not
  * checked further.
  */

@@ -20,40 +20,55 @@ uint32_t LoadLE32(const uint8_t* p)
 }
 
 //------------------------------------------------------------------------------
-// Bits, most significant first, that never reads past `limit` bits.
+// Bits, most significant first, that never reads past `limit` bits: a 64-bit window refilled
+// a byte at a time.
 class BitReader
 {
 public:
   BitReader(const uint8_t* data, uint64_t limit)
     : Data(data)
     , Limit(limit)
+    , Bytes((limit + 7) / 8)
   {
   }
-  bool Read(int bits, uint64_t& value)
+  // The next `bits` (at most 56) without consuming them, when that many remain.
+  bool Peek(int bits, uint64_t& value)
   {
+    while (this->Count <= 56 && this->Next < this->Bytes)
+    {
+      this->Window = (this->Window << 8) | this->Data[this->Next++];
+      this->Count += 8;
+    }
     if (this->Limit - this->Position < static_cast<uint64_t>(bits))
     {
       return false;
     }
-    value = 0;
-    for (int i = 0; i < bits; ++i, ++this->Position)
-    {
-      value = (value << 1) | ((this->Data[this->Position >> 3] >> (7 - (this->Position & 7))) & 1u);
-    }
+    value = (this->Window >> (this->Count - bits)) & ((uint64_t(1) << bits) - 1);
     return true;
   }
-  // The next `bits` bits without consuming them, when that many remain.
-  bool Peek(int bits, uint64_t& value) const
+  void Skip(int bits)
   {
-    BitReader copy = *this;
-    return copy.Read(bits, value);
+    this->Count -= bits;
+    this->Position += static_cast<uint64_t>(bits);
   }
-  void Skip(int bits) { this->Position += static_cast<uint64_t>(bits); }
+  bool Read(int bits, uint64_t& value)
+  {
+    if (!this->Peek(bits, value))
+    {
+      return false;
+    }
+    this->Skip(bits);
+    return true;
+  }
   uint64_t Position = 0;
 
 private:
   const uint8_t* Data;
   uint64_t Limit;
+  uint64_t Bytes;
+  uint64_t Next = 0;
+  uint64_t Window = 0;
+  int Count = 0; // bits in Window not yet consumed
 };
 
 //------------------------------------------------------------------------------
