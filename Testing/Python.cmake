@@ -13,6 +13,9 @@ file(MAKE_DIRECTORY "${vtkbloom_python_out}")
 add_test(NAME Python.vtkbloom
   COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_vtkbloom.py" -v)
 
+add_test(NAME Python.arrays
+  COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_arrays.py" -v)
+
 add_test(NAME Python.Example.BatchBloom
   COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/Python/run-with-shared-data.sh"
     "${VTKBLOOM_SHARED_DATA_DIR}/presets"
@@ -28,7 +31,7 @@ add_test(NAME Python.Example.ComparePresets
   COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/Examples/Python/compare_presets.py"
     "${vtkbloom_python_out}/compare-presets.png")
 
-set_tests_properties(Python.vtkbloom Python.Example.BatchBloom
+set_tests_properties(Python.vtkbloom Python.arrays Python.Example.BatchBloom
   Python.Example.SimulationSliceWavelet Python.Example.SimulationSliceNumpy
   Python.Example.ComparePresets
   PROPERTIES ENVIRONMENT "${vtkbloom_python_env}" SKIP_RETURN_CODE 77 TIMEOUT 120)
