@@ -15,6 +15,13 @@ add_test(NAME Python.vtkbloom
 
 add_test(NAME Python.arrays
   COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_arrays.py" -v)
+if (VTKBLOOM_ENABLE_RENDERING)
+  # add_bloom renders: under the leg's Xvfb, or headless where VTK chooses (9.4 and later).
+  add_test(NAME Python.scene
+    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_scene.py" -v)
+  set_tests_properties(Python.scene PROPERTIES
+    ENVIRONMENT "${vtkbloom_python_env}" SKIP_RETURN_CODE 77 TIMEOUT 120)
+endif ()
 
 add_test(NAME Python.Example.BatchBloom
   COMMAND "${CMAKE_CURRENT_SOURCE_DIR}/Python/run-with-shared-data.sh"

@@ -1,0 +1,207 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: BSD-3-Clause
+"""Tests of vtkbloom.add_bloom and add_emitter on raw VTK renderers and windows: one pass per
+renderer however often it is called, its place in a chain of passes (above the scene, below
+what resolves the image) kept through a rebuild of the chain as PyVista and vedo do it, the
+plain frame where nothing is light, a glow where an emitter is, and the frame as it was after
+remove_bloom. vedo's own Plotter is tested where vedo is installed."""
+
+import os
+import unittest
+
+import numpy as np
+from vtkmodules.util import numpy_support
+from vtkmodules.vtkFiltersSources import vtkSphereSource
+from vtkmodules.vtkRenderingCore import (
+    vtkActor,
+    vtkPolyDataMapper,
+    vtkRenderer,
+    vtkRenderWindow,
+    vtkWindowToImageFilter,
+)
+from vtkmodules.vtkRenderingOpenGL2 import (
+    vtkCameraPass,
+    vtkOpenGLFXAAPass,
+    vtkRenderStepsPass,
+    vtkSSAAPass,
+    vtkSequencePass,
+    vtkRenderPassCollection,
+)
+import vtkmodules.vtkRenderingOpenGL2  # noqa: F401  (the OpenGL factories)
+
+import vtkbloom
+
+try:
+    from vtkmodules.vtkRenderingOpenGL2 import vtkSSAOPass
+except ImportError:  # pragma: no cover
+    vtkSSAOPass = None
+
+
+def scene(colour=(0.9, 0.5, 0.2), size=(160, 120), renderers=1):
+    window = vtkRenderWindow()
+    window.SetOffScreenRendering(1)
+    window.SetSize(*size)
+    actors = []
+    for i in range(renderers):
+        renderer = vtkRenderer()
+        renderer.SetViewport(i / renderers, 0, (i + 1) / renderers, 1)
+        renderer.SetBackground(0.1, 0.1, 0.12)
+        source = vtkSphereSource()
+        source.SetThetaResolution(32)
+        source.SetPhiResolution(32)
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputConnection(source.GetOutputPort())
+        actor = vtkActor()
+        actor.SetMapper(mapper)
+        actor.GetProperty().SetColor(*colour)
+        actor.SetScale(0.5)
+        actor._keep = source
+        renderer.AddActor(actor)
+        window.AddRenderer(renderer)
+        actors.append(actor)
+    return window, actors
+
+
+def grab(window):
+    window.Render()
+    capture = vtkWindowToImageFilter()
+    capture.SetInput(window)
+    capture.ReadFrontBufferOff()
+    capture.Update()
+    data = capture.GetOutput()
+    w, h, _ = data.GetDimensions()
+    scalars = data.GetPointData().GetScalars()
+    return numpy_support.vtk_to_numpy(scalars).reshape(h, w, -1).astype(int)
+
+
+def chain(renderer):
+    names, current = [], renderer.GetPass()
+    while current is not None:
+        names.append(current.GetClassName())
+        get = getattr(current, "GetDelegatePass", None)
+        current = get() if get else None
+    return names
+
+
+def pyvista_like(renderer, *top):
+    """A chain as PyVista's RenderPasses builds it: camera pass over a sequence of the steps,
+    then the given passes, each delegating to the one before; returns the camera pass."""
+    collection = vtkRenderPassCollection()
+    collection.AddItem(vtkRenderStepsPass())
+    sequence = vtkSequencePass()
+    sequence.SetPasses(collection)
+    camera = vtkCameraPass()
+    camera.SetDelegatePass(sequence)
+    current = camera
+    for render_pass in top:
+        render_pass.SetDelegatePass(current)
+        current = render_pass
+    renderer.SetPass(current)
+    renderer._keep = (collection, sequence, camera) + top
+    return camera
+
+
+class AddBloom(unittest.TestCase):
+    def test_nothing_is_light_so_the_frame_is_plain_and_an_emitter_glows(self):
+        window, (actor,) = scene()
+        renderer = window.GetRenderers().GetFirstRenderer()
+        plain = grab(window)
+        bloom = vtkbloom.add_bloom(window, strength=1.0)
+        self.assertEqual(bloom.GetClassName(), "vtkBloomPass")
+        self.assertLessEqual(np.abs(grab(window) - plain).max(), 1)
+        emitter = vtkbloom.add_emitter(window, actor)
+        self.assertIs(emitter, actor)
+        glowing = grab(window)
+        self.assertGreater(np.abs(glowing - plain).max(), 20)
+        # The glow lies around the sphere: the corners stay the background.
+        self.assertLessEqual(np.abs(glowing[:8, :8] - plain[:8, :8]).max(), 1)
+        vtkbloom.remove_emitter(window, actor)
+        self.assertLessEqual(np.abs(grab(window) - plain).max(), 1)
+        vtkbloom.remove_bloom(window)
+        self.assertIsNone(renderer.GetPass())
+        np.testing.assert_array_equal(grab(window), plain)
+
+    def test_called_again_it_changes_parameters_and_never_stacks(self):
+        window, _ = scene()
+        renderer = window.GetRenderers().GetFirstRenderer()
+        first = vtkbloom.add_bloom(renderer, preset="webgpu-market")
+        second = vtkbloom.add_bloom(renderer, strength=0.25)
+        self.assertIs(first, second)
+        self.assertEqual(second.GetParameters().GetStrength(), 0.25)
+        grab(window)
+        self.assertEqual(chain(renderer).count("vtkBloomPass"), 1)
+        vtkbloom.remove_bloom(renderer)
+
+    def test_below_anti_aliasing_and_kept_through_a_rebuild(self):
+        window, (actor,) = scene()
+        renderer = window.GetRenderers().GetFirstRenderer()
+        fxaa, ssaa = vtkOpenGLFXAAPass(), vtkSSAAPass()
+        camera = pyvista_like(renderer, fxaa, ssaa)
+        plain = grab(window)
+        vtkbloom.add_bloom(renderer)
+        vtkbloom.add_emitter(renderer, actor)
+        # FXAA's pass is replaced by the renderer's FXAA; bloom goes below SSAA.
+        self.assertEqual(chain(renderer)[:3], ["vtkSSAAPass", "vtkBloomPass", "vtkCameraPass"])
+        self.assertTrue(renderer.GetUseFXAA())
+        self.assertGreater(np.abs(grab(window) - plain).max(), 20)
+        # PyVista switches SSAA off: it rebuilds its chain from its own passes only.
+        fxaa.SetDelegatePass(camera)
+        renderer.SetPass(fxaa)
+        self.assertNotIn("vtkBloomPass", chain(renderer))
+        after = grab(window)  # the pass is put back before the render
+        self.assertEqual(chain(renderer)[:2], ["vtkBloomPass", "vtkCameraPass"])
+        self.assertGreater(np.abs(after - plain).max(), 20)
+        # Every effect off: PyVista sets no pass at all.
+        renderer.SetPass(None)
+        self.assertGreater(np.abs(grab(window) - plain).max(), 20)
+        self.assertEqual(chain(renderer), ["vtkBloomPass", "vtkRenderStepsPass"])
+        vtkbloom.remove_bloom(renderer)
+        self.assertIsNone(renderer.GetPass())
+        self.assertFalse(renderer.GetUseFXAA())
+
+    def test_remove_bloom_puts_fxaa_back(self):
+        window, _ = scene()
+        renderer = window.GetRenderers().GetFirstRenderer()
+        fxaa = vtkOpenGLFXAAPass()
+        pyvista_like(renderer, fxaa)
+        plain = grab(window)
+        vtkbloom.add_bloom(renderer)
+        grab(window)
+        vtkbloom.remove_bloom(renderer)
+        self.assertEqual(chain(renderer)[:2], ["vtkOpenGLFXAAPass", "vtkCameraPass"])
+        np.testing.assert_array_equal(grab(window), plain)
+
+    @unittest.skipIf(vtkSSAOPass is None, "no vtkSSAOPass in this VTK")
+    def test_above_ssao(self):
+        window, _ = scene()
+        renderer = window.GetRenderers().GetFirstRenderer()
+        pyvista_like(renderer, vtkSSAOPass(), vtkSSAAPass())
+        vtkbloom.add_bloom(renderer)
+        grab(window)
+        self.assertEqual(chain(renderer)[:4], ["vtkSSAAPass", "vtkBloomPass", "vtkSSAOPass", "vtkCameraPass"])
+        vtkbloom.remove_bloom(renderer)
+        self.assertEqual(chain(renderer)[:3], ["vtkSSAAPass", "vtkSSAOPass", "vtkCameraPass"])
+
+    def test_every_renderer_of_a_window(self):
+        window, actors = scene(renderers=2)
+        passes = vtkbloom.add_bloom(window)
+        self.assertEqual(len(passes), 2)
+        self.assertIsNot(passes[0], passes[1])
+        vtkbloom.add_emitter(window, actors[0])
+        grab(window)
+        vtkbloom.remove_bloom(window)
+
+    def test_a_target_it_does_not_know(self):
+        with self.assertRaises(TypeError) as raised:
+            vtkbloom.add_bloom("plotter")
+        self.assertIn("pyvista.Plotter", str(raised.exception))
+        window, _ = scene()
+        with self.assertRaises(ValueError):
+            vtkbloom.add_bloom(window, preset="glowy")
+        with self.assertRaises(TypeError):
+            vtkbloom.add_bloom(window, strenght=1.0)
+        vtkbloom.remove_bloom(window)
+
+
+if __name__ == "__main__":
+    unittest.main()
