@@ -191,6 +191,38 @@ class AddBloom(unittest.TestCase):
         grab(window)
         vtkbloom.remove_bloom(window)
 
+    def test_no_display_is_an_exception_not_an_abort(self):
+        import subprocess
+        import sys
+
+        script = (
+            "import vtkbloom\n"
+            "from vtkmodules.vtkRenderingCore import vtkRenderer, vtkRenderWindow\n"
+            "import vtkmodules.vtkRenderingOpenGL2\n"
+            "window = vtkRenderWindow(); window.SetOffScreenRendering(1)\n"
+            "renderer = vtkRenderer(); window.AddRenderer(renderer)\n"
+            "try:\n"
+            "    vtkbloom.add_bloom(window)\n"
+            "except RuntimeError as e:\n"
+            "    print('refused:', e); raise SystemExit(3)\n"
+            "window.Render(); print('rendered')\n"
+        )
+        env = dict(os.environ)
+        env.pop("DISPLAY", None)
+        run = subprocess.run([sys.executable, "-c", script], capture_output=True, text=True, env=env)
+        from vtkmodules.vtkCommonCore import vtkVersion
+
+        old_x = vtkRenderWindow().GetClassName() == "vtkXOpenGLRenderWindow" and (
+            vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion()) < (9, 4)
+        if old_x:
+            # VTK 9.1 built for X: one line, not SIGABRT.
+            self.assertEqual(run.returncode, 3, run.stderr)
+            self.assertIn("xvfb-run", run.stdout)
+        else:
+            # A VTK that renders headless (9.4 and later choose EGL or OSMesa) just renders.
+            self.assertEqual(run.returncode, 0, run.stdout + run.stderr)
+            self.assertIn("rendered", run.stdout)
+
     def test_a_target_it_does_not_know(self):
         with self.assertRaises(TypeError) as raised:
             vtkbloom.add_bloom("plotter")

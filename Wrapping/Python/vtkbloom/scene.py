@@ -23,6 +23,8 @@ StartEvent), so it survives them in any order. Nothing of PyVista's or vedo's is
 neither is imported here.
 """
 
+import ctypes
+import os
 import weakref
 
 __all__ = ["add_bloom", "remove_bloom", "add_emitter", "remove_emitter", "get_bloom"]
@@ -172,6 +174,38 @@ def _configure(bloom_pass, preset, parameters):
     configure_parameters(bloom_pass, table, parameters, "add_bloom")
 
 
+def _check_window(renderer):
+    """VTK 9.1's X window aborts the interpreter where no display opens, with no message; VTK
+    9.4 and later fall back to EGL or OSMesa. Say it first, as a Python exception."""
+    from vtkmodules.vtkCommonCore import vtkVersion
+
+    window = renderer.GetRenderWindow()
+    if window is None or window.GetClassName() != "vtkXOpenGLRenderWindow":
+        return
+    if (vtkVersion.GetVTKMajorVersion(), vtkVersion.GetVTKMinorVersion()) >= (9, 4):
+        return
+    display = os.environ.get("DISPLAY", "")
+    problem = "DISPLAY is not set" if not display else None
+    if problem is None:
+        try:
+            xlib = ctypes.CDLL("libX11.so.6")
+            xlib.XOpenDisplay.restype = ctypes.c_void_p
+            xlib.XOpenDisplay.argtypes = [ctypes.c_char_p]
+            xlib.XCloseDisplay.argtypes = [ctypes.c_void_p]
+            connection = xlib.XOpenDisplay(display.encode())
+            if connection:
+                xlib.XCloseDisplay(connection)
+            else:
+                problem = "DISPLAY=%s cannot be opened" % display
+        except OSError:
+            problem = "libX11.so.6 cannot be loaded"
+    if problem is not None:
+        raise RuntimeError(
+            "this VTK renders through X and %s: run under xvfb-run -a, set DISPLAY, or use a "
+            "VTK built for OSMesa or EGL (VTK 9.4 and later choose one by themselves)" % problem
+        )
+
+
 def add_bloom(target, preset=None, **parameters):
     """Bloom `target`'s scene; returns its vtkBloomPass, or a list of them for several
     renderers. Called again, it changes the parameters of the passes it made (a preset first,
@@ -181,6 +215,7 @@ def add_bloom(target, preset=None, **parameters):
 
     passes = []
     for renderer in _renderers(target):
+        _check_window(renderer)
         record = _INSTALLED.get(id(renderer))
         if record is not None and record.renderer() is not renderer:
             record = None  # a renderer that reused a freed one's address
