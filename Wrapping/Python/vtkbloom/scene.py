@@ -25,7 +25,6 @@ neither is imported here.
 
 import ctypes
 import os
-import weakref
 
 __all__ = ["add_bloom", "remove_bloom", "add_emitter", "remove_emitter", "get_bloom"]
 
@@ -37,13 +36,18 @@ _RESOLVE = ("vtkSSAAPass", "vtkToneMappingPass")
 # is the renderer's pass) does its work; it is put back by remove_bloom.
 _FXAA = "vtkOpenGLFXAAPass"
 
-# One record a renderer: {id(renderer): _Installed}
-_INSTALLED = {}
+# Each renderer's record is an attribute of the renderer: VTK keeps a wrapper's attributes
+# with its C++ object when the Python wrapper goes away (a raw vtkRenderer that only its window
+# holds gets a new wrapper each time it is fetched), and drops them with the renderer.
+_RECORD = "_vtkbloom_record"
+
+
+def _record(renderer):
+    return getattr(renderer, _RECORD, None)
 
 
 class _Installed:
     def __init__(self, renderer, bloom_pass):
-        self.renderer = weakref.ref(renderer)
         self.bloom = bloom_pass
         self.steps = None  # the vtkRenderStepsPass made here where the renderer had no pass
         self.saved_threshold_mode = None  # the scene's threshold mode while emitters glow
@@ -216,12 +220,10 @@ def add_bloom(target, preset=None, **parameters):
     passes = []
     for renderer in _renderers(target):
         _check_window(renderer)
-        record = _INSTALLED.get(id(renderer))
-        if record is not None and record.renderer() is not renderer:
-            record = None  # a renderer that reused a freed one's address
+        record = _record(renderer)
         if record is None:
             record = _Installed(renderer, vtkBloomPass())
-            _INSTALLED[id(renderer)] = record
+            setattr(renderer, _RECORD, record)
         _configure(record.bloom, preset, parameters)
         _place(renderer, record)
         passes.append(record.bloom)
@@ -232,8 +234,8 @@ def get_bloom(target):
     """The vtkBloomPass add_bloom made for `target` (a list for several renderers), or None."""
     found = []
     for renderer in _renderers(target):
-        record = _INSTALLED.get(id(renderer))
-        found.append(record.bloom if record is not None and record.renderer() is renderer else None)
+        record = _record(renderer)
+        found.append(record.bloom if record is not None else None)
     return found[0] if len(found) == 1 else found
 
 
@@ -241,9 +243,10 @@ def remove_bloom(target):
     """Take the bloom away: each renderer's passes are as they were (or as its plotter has made
     them since)."""
     for renderer in _renderers(target):
-        record = _INSTALLED.pop(id(renderer), None)
-        if record is None or record.renderer() is not renderer:
+        record = _record(renderer)
+        if record is None:
             continue
+        delattr(renderer, _RECORD)
         renderer.RemoveObserver(record.observer)
         below = record.bloom.GetDelegatePass()
         chain = _chain(renderer)
@@ -265,10 +268,11 @@ def add_emitter(target, actor):
     had comes back with remove_emitter. Adds bloom first where there is none. Returns `actor`."""
     from . import vtkImageBloomThreshold
 
+    actor = getattr(actor, "actor", actor)  # vedo 2024 and later: the object's vtkActor
     if get_bloom(target) in (None, [None]):
         add_bloom(target)
     for renderer in _renderers(target):
-        record = _INSTALLED.get(id(renderer))
+        record = _record(renderer)
         if record is None:
             continue
         parameters = record.bloom.GetParameters()
@@ -284,7 +288,7 @@ def remove_emitter(target, emitter):
     """Stop `emitter` (what add_emitter returned) glowing; with no emitter left, the whole
     scene's light blooms again."""
     for renderer in _renderers(target):
-        record = _INSTALLED.get(id(renderer))
+        record = _record(renderer)
         if record is None:
             continue
         record.bloom.RemoveEmitter(emitter)
