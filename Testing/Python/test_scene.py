@@ -121,6 +121,17 @@ class AddBloom(unittest.TestCase):
         self.assertIsNone(renderer.GetPass())
         np.testing.assert_array_equal(grab(window), plain)
 
+    def test_a_renderer_only_its_window_holds(self):
+        # No Python reference to the renderer: each fetch makes a new wrapper of it.
+        window, (actor,) = scene()
+        plain = grab(window)
+        vtkbloom.add_emitter(window, actor)
+        self.assertGreater(np.abs(grab(window) - plain).max(), 20)
+        vtkbloom.add_bloom(window, strength=0.5)
+        self.assertEqual(chain(window.GetRenderers().GetFirstRenderer()).count("vtkBloomPass"), 1)
+        vtkbloom.remove_bloom(window)
+        np.testing.assert_array_equal(grab(window), plain)
+
     def test_called_again_it_changes_parameters_and_never_stacks(self):
         window, _ = scene()
         renderer = window.GetRenderers().GetFirstRenderer()
