@@ -17,7 +17,7 @@ packages=(
   libvtk9-dev vtk9 python3-vtk9 python3-numpy python3-pytest
   libopenexr-dev libimath-dev
   libgtest-dev libgmock-dev libbenchmark-dev
-  xvfb xauth clang-format libcli11-dev libfftw3-dev valgrind zlib1g-dev
+  xvfb xauth clang-format libcli11-dev libfftw3-dev valgrind zlib1g-dev python3-vedo
 )
 
 missing=()

@@ -246,5 +246,35 @@ class AddBloom(unittest.TestCase):
         vtkbloom.remove_bloom(window)
 
 
+try:
+    import vedo
+except ImportError:  # vedo is optional; Debian 12's CI leg installs python3-vedo
+    vedo = None
+
+
+@unittest.skipIf(vedo is None, "vedo is not installed")
+class Vedo(unittest.TestCase):
+    def test_a_vedo_plotter_blooms_through_show_and_its_effects(self):
+        plotter = vedo.Plotter(offscreen=True, size=(160, 120))
+        _, (actor,) = scene()
+        plotter.show(actor, interactive=False)
+        plain = grab(plotter.window)
+        vtkbloom.add_emitter(plotter, actor)
+        plotter.show(actor, interactive=False)
+        self.assertGreater(np.abs(grab(plotter.window) - plain).max(), 20)
+        screenshot = plotter.screenshot(asarray=True)
+        self.assertGreater(np.abs(screenshot.astype(int) - plain[::-1, :, :3]).max(), 20)
+        # vedo's own effects set the renderer's pass; the bloom is put back over them.
+        for effect, arguments in (("add_depth_of_field", ()), ("add_ambient_occlusion", (0.1,))):
+            getattr(plotter, effect)(*arguments)
+            plotter.show(actor, interactive=False)
+            passes = chain(plotter.renderer)
+            self.assertEqual(passes.count("vtkBloomPass"), 1, effect)
+            self.assertEqual(passes[0], "vtkBloomPass", effect)  # above vedo's effect
+        vtkbloom.remove_bloom(plotter)
+        self.assertNotIn("vtkBloomPass", chain(plotter.renderer))
+        plotter.close()
+
+
 if __name__ == "__main__":
     unittest.main()
