@@ -65,16 +65,9 @@ SKIPPED = {
 # Where a proxy's default (its XML default_values) is not the C++ default, although the XML says
 # "Defaults are vtkBloomParameters'": each entry is checked to still differ (remove it once
 # fixed), and the reference filters get the proxy's value, as ParaView pushes it at creation.
-KNOWN_DEFAULT_DIFFERENCES = {
-    # 3.4028234663852886e+38 (FLT_MAX) in the XML; VTK_FLOAT_MAX, which is 1.0e+38f in VTK 9.1
-    # and 9.2, in C++. Documented as "no clamp" on both sides, but the C++ default clamps a
-    # luminance above 1e38: a +Inf sample (sanitized to FLT_MAX) blooms 2.4 times weaker from
-    # vtkImageBloom than from the Bloom proxy at their defaults (0.34 relative L2 on the
-    # 'nonfinite' image).
-    ('Bloom', 'ClampLuminance'): 'FLT_MAX in the XML, VTK_FLOAT_MAX (1e38) in vtkBloomParameters',
-    ('BrightPass', 'ClampLuminance'): 'FLT_MAX in the XML, VTK_FLOAT_MAX (1e38) in '
-                                      'vtkImageBloomThreshold',
-}
+# (proxy, property) pairs whose XML default knowingly differs from the C++ one: none. (The
+# XML's ClampLuminance said FLT_MAX where C++ has VTK_FLOAT_MAX, 1e38f, until this test.)
+KNOWN_DEFAULT_DIFFERENCES = {}
 
 # What each case sets. A property maps to one spec or a list of them; a spec may have:
 #   values:  the values to set (for enumerations, string lists and booleans the default is every
