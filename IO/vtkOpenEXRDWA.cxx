@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // VTK-HeaderTest-Exclude: vtkOpenEXRDWA.cxx
 #include "vtkOpenEXRDWA.h"
+#include "vtkOpenEXRBytes.h"
 #include "vtkOpenEXRHuffman.h"
 
 #include "vtkErrorCode.h"
@@ -50,17 +51,6 @@ enum ACCoding
   StaticHuffman = 0,
   Deflate = 1
 };
-
-//------------------------------------------------------------------------------
-uint64_t LoadLE64(const uint8_t* p)
-{
-  uint64_t value = 0;
-  for (int i = 7; i >= 0; --i)
-  {
-    value = (value << 8) | p[i];
-  }
-  return value;
-}
 
 //------------------------------------------------------------------------------
 // A rule that classes a channel by the part of its name after the last '.', and its type.
@@ -437,7 +427,7 @@ std::string vtkOpenEXRCheckDWAChunk(const vtkOpenEXRHeader& header, const uint8_
   uint64_t word[HeaderWords];
   for (int i = 0; i < HeaderWords; ++i)
   {
-    word[i] = LoadLE64(packed + 8 * i);
+    word[i] = vtkOpenEXRLoadLE64(packed + 8 * i);
   }
   if (word[Version] > 2)
   {

@@ -1,4 +1,5 @@
 #include "vtkOpenEXRDecode.h"
+#include "vtkOpenEXRBytes.h"
 #include "vtkOpenEXRThreadPool.h"
 
 #include "vtkAlgorithm.h"
@@ -25,19 +26,6 @@
 
 namespace
 {
-//------------------------------------------------------------------------------
-// Little-endian loads (the EXR byte order) that work on any host and any alignment.
-inline uint32_t LoadLE32(const uint8_t* p)
-{
-  return static_cast<uint32_t>(p[0]) | (static_cast<uint32_t>(p[1]) << 8) |
-    (static_cast<uint32_t>(p[2]) << 16) | (static_cast<uint32_t>(p[3]) << 24);
-}
-
-inline uint16_t LoadLE16(const uint8_t* p)
-{
-  return static_cast<uint16_t>(p[0] | (p[1] << 8));
-}
-
 //------------------------------------------------------------------------------
 // Exact half -> float widening on the bit level. Every half, NaN payloads (signalling ones
 // included) and subnormals too, maps to the float of identical value: the mantissa is shifted
@@ -224,7 +212,7 @@ bool vtkOpenEXRChunkDecoder::Decode(vtkOpenEXRCoreFile& file, const vtkOpenEXRHe
           uint32_t* out = static_cast<uint32_t*>(output) + first;
           for (size_t x = 0; x < count; ++x, out += components)
           {
-            *out = LoadLE32(in + x * 4);
+            *out = vtkOpenEXRLoadLE32(in + x * 4);
           }
         }
         else if (channel.data_type == EXR_PIXEL_HALF)
@@ -232,7 +220,7 @@ bool vtkOpenEXRChunkDecoder::Decode(vtkOpenEXRCoreFile& file, const vtkOpenEXRHe
           float* out = static_cast<float*>(output) + first;
           for (size_t x = 0; x < count; ++x, out += components)
           {
-            *out = HalfBitsToFloat(LoadLE16(in + x * 2));
+            *out = HalfBitsToFloat(vtkOpenEXRLoadLE16(in + x * 2));
           }
         }
         else if (channel.data_type == EXR_PIXEL_FLOAT)
@@ -240,7 +228,7 @@ bool vtkOpenEXRChunkDecoder::Decode(vtkOpenEXRCoreFile& file, const vtkOpenEXRHe
           float* out = static_cast<float*>(output) + first;
           for (size_t x = 0; x < count; ++x, out += components)
           {
-            const uint32_t bits = LoadLE32(in + x * 4);
+            const uint32_t bits = vtkOpenEXRLoadLE32(in + x * 4);
             std::memcpy(out, &bits, sizeof(bits));
           }
         }
@@ -250,7 +238,7 @@ bool vtkOpenEXRChunkDecoder::Decode(vtkOpenEXRCoreFile& file, const vtkOpenEXRHe
           float* out = static_cast<float*>(output) + first;
           for (size_t x = 0; x < count; ++x, out += components)
           {
-            *out = static_cast<float>(LoadLE32(in + x * 4));
+            *out = static_cast<float>(vtkOpenEXRLoadLE32(in + x * 4));
           }
         }
       }

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // VTK-HeaderTest-Exclude: vtkOpenEXRHuffman.cxx
 #include "vtkOpenEXRHuffman.h"
+#include "vtkOpenEXRBytes.h"
 
 #include <array>
 
@@ -11,13 +12,6 @@ constexpr uint64_t ShortZeroRun = 59;   // 59..62: 2..5 unused symbols
 constexpr uint64_t LongZeroRun = 63;    // 63, then 8 bits: 6..261 unused symbols
 constexpr uint32_t SymbolLimit = 65537; // 65536 values and the run code
 constexpr int TableBits = 12;           // codes up to this long are found with one look-up
-
-//------------------------------------------------------------------------------
-uint32_t LoadLE32(const uint8_t* p)
-{
-  return static_cast<uint32_t>(p[0]) | (static_cast<uint32_t>(p[1]) << 8) |
-    (static_cast<uint32_t>(p[2]) << 16) | (static_cast<uint32_t>(p[3]) << 24);
-}
 
 //------------------------------------------------------------------------------
 // Bits, most significant first, that never reads past `limit` bits: a 64-bit window refilled
@@ -242,9 +236,9 @@ bool vtkOpenEXRHuffmanDecode(const uint8_t* data, size_t size, uint64_t count,
     }
     return true;
   }
-  const uint32_t first = LoadLE32(data);
-  const uint32_t last = LoadLE32(data + 4);
-  const uint32_t codedBits = LoadLE32(data + 12);
+  const uint32_t first = vtkOpenEXRLoadLE32(data);
+  const uint32_t last = vtkOpenEXRLoadLE32(data + 4);
+  const uint32_t codedBits = vtkOpenEXRLoadLE32(data + 12);
   if (first >= SymbolLimit || last >= SymbolLimit || first > last || codedBits > 0x7fffffffu)
   {
     error = "the Huffman header is invalid (symbols " + std::to_string(first) + " to " +
