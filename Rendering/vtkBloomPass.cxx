@@ -709,8 +709,21 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     vtkErrorMacro(<< "vtkBloomPass needs a vtkOpenGLRenderWindow.");
     return;
   }
-  int x, y, w, h;
-  r->GetTiledSizeAndOrigin(&w, &h, &x, &y);
+  // The part of the framebuffer the pass was called with that it renders: the renderer's tile
+  // of the window, or, where a pass above it renders into a framebuffer of its own (vtkSSAAPass
+  // at a larger size), the whole of that framebuffer, as vtkCameraPass does.
+  int x = 0, y = 0, w, h;
+  if (s->GetFrameBuffer())
+  {
+    int size[2];
+    s->GetWindowSize(size);
+    w = size[0];
+    h = size[1];
+  }
+  else
+  {
+    r->GetTiledSizeAndOrigin(&w, &h, &x, &y);
+  }
   if (w <= 0 || h <= 0)
   {
     return;

@@ -359,6 +359,13 @@ public:
    */
   static vtkSmartPointer<vtkActor> CreateScalarRangeEmitter(vtkActor* actor, const double range[2]);
 
+  /**
+   * CreateScalarRangeEmitter(actor, {low, high}) given to AddEmitter, in one call that the
+   * Python wrapping reaches (vtkbloom.add_emitter(..., clim=...)). Returns the emitter, which
+   * the pass holds until RemoveEmitter, or null where CreateScalarRangeEmitter makes none.
+   */
+  vtkActor* AddScalarRangeEmitter(vtkActor* actor, double low, double high);
+
   ///@{
   /**
    * What CreateScalarRangeEmitter records in a texture-coloured emitter's property keys: the

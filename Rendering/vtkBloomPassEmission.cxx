@@ -22,12 +22,14 @@
 namespace
 {
 // Whether `prop`'s fragments all come from a polydata mapper's shader, which writes the
-// emission: an opaque actor, not a level-of-detail actor (its mappers are its own).
+// emission: an opaque actor, not a level-of-detail actor (its mappers are its own), nor a
+// follower (vtkFollower draws through an actor of its own, which the mapper sees instead: vedo
+// 2023's meshes are followers).
 bool WritesEmission(vtkProp* prop)
 {
   auto* actor = vtkActor::SafeDownCast(prop);
   return actor && !actor->IsA("vtkLODActor") && !actor->IsA("vtkQuadricLODActor") &&
-    vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) &&
+    !actor->IsA("vtkFollower") && vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) &&
     !actor->HasTranslucentPolygonalGeometry();
 }
 
@@ -169,7 +171,13 @@ void vtkBloomPassEmission::SetUniforms(
     return;
   }
   const auto found = this->Props.find(prop);
-  const Emission e = found == this->Props.end() ? Emission() : found->second;
+  Emission e = found == this->Props.end() ? Emission() : found->second;
+  if (found == this->Props.end() && this->EmittersAlone)
+  {
+    // Only emitters render alone: a prop the plan does not know draws one of them (a
+    // vtkFollower's own actor), and emits its whole colour.
+    e.What = WHOLE;
+  }
   program->SetUniformi("bloomEmission", e.What);
   if (program->IsUniformUsed("bloomEmittersAlone"))
   {

@@ -62,6 +62,15 @@ void vtkBloomPass::AddEmitter(vtkProp* prop)
 }
 
 //------------------------------------------------------------------------------
+vtkActor* vtkBloomPass::AddScalarRangeEmitter(vtkActor* actor, double low, double high)
+{
+  const double range[2] = { low, high };
+  vtkSmartPointer<vtkActor> emitter = vtkBloomPass::CreateScalarRangeEmitter(actor, range);
+  this->AddEmitter(emitter); // the collection holds it
+  return emitter;
+}
+
+//------------------------------------------------------------------------------
 void vtkBloomPass::RemoveEmitter(vtkProp* prop)
 {
   if (prop && this->Emitters->IsItemPresent(prop))

@@ -19,7 +19,10 @@ if (VTKBLOOM_ENABLE_RENDERING)
   # add_bloom renders: under the leg's Xvfb, or headless where VTK chooses (9.4 and later).
   add_test(NAME Python.scene
     COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_scene.py" -v)
-  set_tests_properties(Python.scene PROPERTIES
+  # PyVista's own Plotter: where python3-pyvista is installed (the sid leg), else skipped.
+  add_test(NAME Python.pyvista
+    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_pyvista.py" -v)
+  set_tests_properties(Python.scene Python.pyvista PROPERTIES
     ENVIRONMENT "${vtkbloom_python_env}" SKIP_RETURN_CODE 77 TIMEOUT 120)
 endif ()
 

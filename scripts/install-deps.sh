@@ -18,6 +18,7 @@ packages=(
   libopenexr-dev libimath-dev
   libgtest-dev libgmock-dev libbenchmark-dev
   xvfb xauth clang-format libcli11-dev libfftw3-dev valgrind zlib1g-dev python3-vedo
+  python3-vedo-examples lintian
 )
 
 missing=()

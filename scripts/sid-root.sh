@@ -27,6 +27,7 @@ packages=(
   libopenexr-dev libimath-dev libgtest-dev libgmock-dev libbenchmark-dev libcli11-dev
   libfftw3-dev zlib1g-dev libegl-mesa0 libgl1-mesa-dri libegl-dev
   paraview-dev python3-paraview openmpi-bin xvfb xauth
+  python3-pyvista python3-vedo python3-vedo-examples
   xsltproc qt6-base-dev qt6-tools-dev qt6-tools-dev-tools
 )
 stamp_text="${packages[*]}"

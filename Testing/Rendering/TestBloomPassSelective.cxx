@@ -12,6 +12,7 @@
 #include "vtkBloomVTKCompat.h"
 #include "vtkCamera.h"
 #include "vtkDoubleArray.h"
+#include "vtkFollower.h"
 #include "vtkImageData.h"
 #include "vtkLookupTable.h"
 #include "vtkNew.h"
@@ -235,4 +236,29 @@ TEST(RenderingBloomPassSelective, FallsBackToASecondRenderWhereItMust)
       EXPECT_LE(vtkBloomTest::ColourRelativeL2(fallback, one), 0.2);
     }
   }
+}
+
+//------------------------------------------------------------------------------
+// A vtkFollower draws through an actor of its own (vedo 2023's meshes are followers): as an
+// emitter it glows as the same lamp made as a plain actor does, through the second render.
+TEST(RenderingBloomPassSelective, AFollowerEmitsAsAnActorDoes)
+{
+  vtkSmartPointer<vtkImageData> images[2];
+  for (const int follower : { 0, 1 })
+  {
+    BloomWindow w(200, 150);
+    vtkSmartPointer<vtkActor> lamp = follower
+      ? vtkSmartPointer<vtkActor>(vtkSmartPointer<vtkFollower>::New())
+      : vtkSmartPointer<vtkActor>::New();
+    vtkNew<vtkActor> wall;
+    LampAndWall(w, lamp, wall);
+    images[follower] = RenderSelective(w, true, follower == 0);
+    if (follower)
+    {
+      vtkNew<vtkImageData> scene;
+      ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
+      EXPECT_GT(vtkBloomTest::ColourRelativeL2(images[1], scene), 1e-2) << "the follower must glow";
+    }
+  }
+  EXPECT_LE(vtkBloomTest::ColourRelativeL2(images[1], images[0]), 1e-6);
 }

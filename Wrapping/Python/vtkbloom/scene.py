@@ -53,6 +53,7 @@ class _Installed:
         self.saved_threshold_mode = None  # the scene's threshold mode while emitters glow
         self.fxaa = None  # the FXAA pass taken out of the chain, and the renderer's UseFXAA
         self.saved_use_fxaa = None
+        self.made = {}  # the clim emitters made here, and the actor each was made from
         self.observer = renderer.AddObserver("StartEvent", self._place)
 
     def _place(self, renderer, event=None):
@@ -210,6 +211,13 @@ def _check_window(renderer):
         )
 
 
+def _refresh(target):
+    """A pyvista.Plotter renders again, as its own add_* and enable_* methods do, so that the
+    next screenshot() shows the change (PyVista's render() waits for the first show())."""
+    if type(target).__module__.split(".")[0] == "pyvista" and hasattr(target, "render"):
+        target.render()
+
+
 def add_bloom(target, preset=None, **parameters):
     """Bloom `target`'s scene; returns its vtkBloomPass, or a list of them for several
     renderers. Called again, it changes the parameters of the passes it made (a preset first,
@@ -227,6 +235,7 @@ def add_bloom(target, preset=None, **parameters):
         _configure(record.bloom, preset, parameters)
         _place(renderer, record)
         passes.append(record.bloom)
+    _refresh(target)
     return passes[0] if len(passes) == 1 else passes
 
 
@@ -260,40 +269,90 @@ def remove_bloom(target):
                     renderer.SetPass(record.fxaa)
                 else:
                     above.SetDelegatePass(record.fxaa)
+    _refresh(target)
 
 
-def add_emitter(target, actor):
-    """Make `actor` glow in an LDR scene, whatever its colour. The pass then blooms its emitters
-    only, with no threshold (vtkBloomPass::SetEmissionSourceToEmitters); the threshold the scene
-    had comes back with remove_emitter. Adds bloom first where there is none. Returns `actor`."""
+def _actor(target, actor):
+    """The vtkActor that `actor` names: itself, a vedo object's actor (vedo 2024 and later) or,
+    given a string, the actor of a pyvista.Plotter of that name (add_mesh(..., name=...))."""
+    if isinstance(actor, str):
+        named = getattr(target, "actors", None)
+        if not isinstance(named, dict) or actor not in named:
+            raise KeyError("add_emitter(): the target has no actor named %r" % actor)
+        return named[actor]
+    return getattr(actor, "actor", actor)
+
+
+def _showing(target, actor):
+    """The renderers of `target` that show `actor`; where none does yet (a vedo object before
+    show()), the target's current renderer."""
+    renderers = _renderers(target)
+    showing = [r for r in renderers if r.HasViewProp(actor)]
+    if showing:
+        return showing
+    current = getattr(target, "renderer", None)
+    return [current if current in renderers else renderers[0]]
+
+
+def add_emitter(target, actor, clim=None):
+    """Make `actor` glow in an LDR scene, whatever its colour, in the renderers of `target` that
+    show it. With clim=(low, high) (PyVista's name for a scalar range), only where its mapped
+    scalars lie in [low, high] glows: the hot spots of a temperature field.
+
+    `actor` is a vtkActor, a vedo object, or the name of a pyvista.Plotter's actor. The pass
+    then blooms its emitters only, with no threshold (vtkBloomPass::SetEmissionSourceToEmitters);
+    the threshold the scene had comes back with remove_emitter. Adds bloom first where there is
+    none. Returns what glows: `actor`, or with clim the emitter made from it."""
     from . import vtkImageBloomThreshold
 
-    actor = getattr(actor, "actor", actor)  # vedo 2024 and later: the object's vtkActor
-    if get_bloom(target) in (None, [None]):
-        add_bloom(target)
-    for renderer in _renderers(target):
+    actor = _actor(target, actor)
+    if clim is not None:
+        try:
+            low, high = (float(v) for v in clim)
+        except (TypeError, ValueError):
+            raise TypeError("add_emitter(): clim must be two numbers (low, high), not %r" % (clim,))
+        if not low <= high:
+            raise ValueError("add_emitter(): clim=%r must hold low <= high" % (clim,))
+        mapper = actor.GetMapper() if hasattr(actor, "GetMapper") else None
+        if mapper is None or mapper.GetLookupTable() is None or not mapper.GetScalarVisibility():
+            raise ValueError("add_emitter(): clim needs an actor coloured by scalars (a mapper "
+                             "with scalar visibility and a lookup table)")
+    emitted = actor
+    for renderer in _showing(target, actor):
+        if _record(renderer) is None:
+            add_bloom(renderer)
         record = _record(renderer)
-        if record is None:
-            continue
         parameters = record.bloom.GetParameters()
         if record.saved_threshold_mode is None:
             record.saved_threshold_mode = parameters.GetThresholdMode()
-        record.bloom.AddEmitter(actor)
+        if clim is None:
+            record.bloom.AddEmitter(actor)
+        else:
+            emitted = record.bloom.AddScalarRangeEmitter(actor, low, high)
+            record.made[emitted] = actor
         record.bloom.SetEmissionSourceToEmitters()
         parameters.SetThresholdMode(vtkImageBloomThreshold.NONE)  # emitters glow at any level
-    return actor
+    _refresh(target)
+    return emitted
 
 
 def remove_emitter(target, emitter):
-    """Stop `emitter` (what add_emitter returned) glowing; with no emitter left, the whole
-    scene's light blooms again."""
+    """Stop `emitter` glowing: what add_emitter returned, or the actor it was given (which
+    removes its clim emitters too). With no emitter left, the whole scene's light blooms
+    again."""
+    emitter = _actor(target, emitter)
     for renderer in _renderers(target):
         record = _record(renderer)
         if record is None:
             continue
+        for made, source in list(record.made.items()):
+            if made is emitter or source is emitter:
+                record.bloom.RemoveEmitter(made)
+                del record.made[made]
         record.bloom.RemoveEmitter(emitter)
         if record.bloom.GetEmitters().GetNumberOfItems() == 0:
             record.bloom.SetEmissionSourceToScene()
             if record.saved_threshold_mode is not None:
                 record.bloom.GetParameters().SetThresholdMode(record.saved_threshold_mode)
                 record.saved_threshold_mode = None
+    _refresh(target)
