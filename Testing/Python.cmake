@@ -45,3 +45,27 @@ set_tests_properties(Python.vtkbloom Python.arrays Python.Example.BatchBloom
   Python.Example.SimulationSliceWavelet Python.Example.SimulationSliceNumpy
   Python.Example.ComparePresets
   PROPERTIES ENVIRONMENT "${vtkbloom_python_env}" SKIP_RETURN_CODE 77 TIMEOUT 120)
+
+# docs/python.md's three recipes, each run as written; the pictures in docs/images come from
+# them. PyVista's where this Python has it (CI's sid leg), vedo's where it renders.
+add_test(NAME Python.Recipe.Numpy
+  COMMAND "${Python3_EXECUTABLE}" "${CMAKE_SOURCE_DIR}/Examples/Python/recipes/numpy_frame.py"
+    "${vtkbloom_python_out}/recipe-numpy.png" "${vtkbloom_python_out}/recipe-numpy.exr")
+set_tests_properties(Python.Recipe.Numpy PROPERTIES ENVIRONMENT "${vtkbloom_python_env}" TIMEOUT 120)
+if (VTKBLOOM_ENABLE_RENDERING)
+  foreach (client IN ITEMS pyvista vedo)
+    execute_process(COMMAND "${Python3_EXECUTABLE}" -c "import ${client}"
+      RESULT_VARIABLE vtkbloom_no_client OUTPUT_QUIET ERROR_QUIET)
+    if (vtkbloom_no_client)
+      continue ()
+    endif ()
+    set(recipe "${CMAKE_SOURCE_DIR}/Examples/Python/recipes/vedo_tubes.py")
+    if (client STREQUAL "pyvista")
+      set(recipe "${CMAKE_SOURCE_DIR}/Examples/Python/recipes/pyvista_lamp.py")
+    endif ()
+    add_test(NAME Python.Recipe.${client}
+      COMMAND "${Python3_EXECUTABLE}" "${recipe}" "${vtkbloom_python_out}/recipe-${client}.png")
+    set_tests_properties(Python.Recipe.${client} PROPERTIES
+      ENVIRONMENT "${vtkbloom_python_env}" TIMEOUT 120)
+  endforeach ()
+endif ()
