@@ -136,6 +136,9 @@ done
 launcher=()
 command -v ccache >/dev/null 2>&1 &&
   launcher=(-DCMAKE_C_COMPILER_LAUNCHER=ccache -DCMAKE_CXX_COMPILER_LAUNCHER=ccache)
+# Paths relative to the work tree, which has the same layout for OSMesa and EGL: the second
+# prefix reuses most of the first one's objects (about 2 minutes instead of 20).
+export CCACHE_BASEDIR=$work
 
 build="$work/build"
 log "configuring VTK from $vtk_src (log: $work/configure.log)"
