@@ -11,7 +11,7 @@ import argparse
 import os
 import sys
 
-from paraview.simple import Render, SaveScreenshot, TrivialProducer
+from paraview.simple import Render, TrivialProducer
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from catalyst_scene import IMAGE_SIZE, VIEW_SIZE, bloom_view, frame, show_field  # noqa: E402
@@ -23,6 +23,7 @@ view = bloom_view()
 # After the view: ParaView 6.1's mini-app module initializes ParaView on import, and a session
 # it starts does not load PV_PLUGIN_PATH's plugins.
 from paraview.demos.wavelet_miniapp import create_dataset  # noqa: E402
+from screenshot import save  # noqa: E402  (SaveScreenshot that fails)
 for step in range(steps):
     dataset, _ = create_dataset(step, argparse.Namespace(size=101), 0, 1)
     producer.GetClientSideObject().SetOutput(dataset)
@@ -31,6 +32,6 @@ for step in range(steps):
         show_field(producer, view)
     Render(view)  # ParaView may reset the camera where a representation first gets data
     frame(view)
-    SaveScreenshot(os.path.join(out, 'bloom_%02d.png' % step), view,
+    save(os.path.join(out, 'bloom_%02d.png' % step), view,
                    ImageResolution=VIEW_SIZE if os.environ.get('VTKBLOOM_CATALYST_SIZE') == 'view' else IMAGE_SIZE)
 print('bloom_catalyst_reference: wrote', steps, 'steps to', out)

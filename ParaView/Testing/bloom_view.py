@@ -16,6 +16,7 @@ from paraview.simple import *  # noqa: F403
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from spheres_scene import show_spheres  # noqa: E402
+from screenshot import save  # noqa: E402  (SaveScreenshot that fails)
 
 out = sys.argv[1]
 preset = sys.argv[2] if len(sys.argv) > 2 else 'custom'
@@ -36,5 +37,5 @@ view.BloomStrength = 1.0
 
 show_spheres(view, [0.10, 0.15, 0.45], lit=False)
 Render(view)
-SaveScreenshot(out, view, ImageResolution=[480, 360])
+save(out, view, ImageResolution=[480, 360])
 print('bloom_view: wrote', out)

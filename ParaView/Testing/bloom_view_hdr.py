@@ -22,6 +22,7 @@ from paraview.simple import *  # noqa: F403
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from spheres_scene import hdr_view  # noqa: E402
+from screenshot import save  # noqa: E402  (SaveScreenshot that fails)
 
 if sys.argv[1] == '--server':
     Connect('localhost', int(sys.argv[2]))
@@ -43,7 +44,7 @@ if os.environ.get('VTKBLOOM_RESIZE_ONCE'):
     view.ViewSize = [400, 300]
 # VTKBLOOM_SCREENSHOT_SCALE=k: the screenshot at k times the view's size (rendered in tiles).
 scale = int(os.environ.get('VTKBLOOM_SCREENSHOT_SCALE', '1'))
-SaveScreenshot(out, view, ImageResolution=[400 * scale, 300 * scale])
+save(out, view, ImageResolution=[400 * scale, 300 * scale])
 view.UpdatePropertyInformation()
 composited = view.GetProperty('BloomLastSceneWasComposited').GetData()
 with open(out + '.txt', 'w') as f:

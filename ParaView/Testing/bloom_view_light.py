@@ -20,6 +20,9 @@ import sys
 
 from paraview.simple import *  # noqa: F403
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from screenshot import save  # noqa: E402  (SaveScreenshot that fails)
+
 out = sys.argv[1]
 os.makedirs(out, exist_ok=True)
 
@@ -57,7 +60,7 @@ def shoot(name, background, lamp_on=False, annotations=True):
     for bloom in (0, 1):
         view.UseBloom = bloom
         Render(view)
-        SaveScreenshot(os.path.join(out, '%s-%d.png' % (name, bloom)), view,
+        save(os.path.join(out, '%s-%d.png' % (name, bloom)), view,
                        ImageResolution=[400, 300])
 
 

@@ -19,6 +19,7 @@ from paraview.simple import *  # noqa: F403
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from spheres_scene import show_spheres  # noqa: E402
+from screenshot import save  # noqa: E402  (SaveScreenshot that fails)
 
 prefix = sys.argv[1]
 reference_height = int(sys.argv[2])
@@ -41,17 +42,17 @@ for use_bloom in (1, 0):
         view.ViewSize = size
         Render(view)
         out = '%s-%s-%d.png' % (prefix, 'bloom' if use_bloom else 'plain', scale)
-        SaveScreenshot(out, view, ImageResolution=size)
+        save(out, view, ImageResolution=size)
         print('bloom_view_scale: wrote', out)
     if not tiled:
         continue
     view.ViewSize = [1920, 1440]
     Render(view)
-    SaveScreenshot('%s-%s-4.png' % (prefix, 'bloom' if use_bloom else 'plain'), view,
+    save('%s-%s-4.png' % (prefix, 'bloom' if use_bloom else 'plain'), view,
                    ImageResolution=[1920, 1440])
     view.ViewSize = [480, 360]
     Render(view)
     for scale in (2, 4):
         out = '%s-%s-tiled%d.png' % (prefix, 'bloom' if use_bloom else 'plain', scale)
-        SaveScreenshot(out, view, ImageResolution=[480 * scale, 360 * scale])
+        save(out, view, ImageResolution=[480 * scale, 360 * scale])
         print('bloom_view_scale: wrote', out)

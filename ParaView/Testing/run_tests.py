@@ -314,7 +314,9 @@ def tiled_as_resized(prefix, where, reference):
 
 
 prefix = os.path.join(out, 'scale-1080')
-if os.path.exists(prefix + '-bloom-tiled4.png'):
+written = os.path.exists(prefix + '-bloom-tiled4.png')
+check(written, 'bloom_view_scale.py wrote the tiled screenshots (%s-bloom-tiled4.png)' % prefix)
+if written:
     tiled_as_resized(prefix, '1 rank', prefix)
 
 # 4d. Under MPI, IceT composites the window's size, a tile at a time: at the first tile every
@@ -456,7 +458,8 @@ def catalyst(ranks, folder, size='image'):
 insitu = os.path.join(out, 'catalyst')
 status, log = catalyst(1, os.path.join(insitu, 'serial'))
 if 'paraview.catalyst' in log and 'No module named' in log:
-    check(True, 'this ParaView ships no Catalyst bridge (paraview.catalyst): in situ not run')
+    # ParaView 5.11 and 6.1 both ship it: a ParaView without it cannot pass this part.
+    check(False, 'this ParaView ships no Catalyst bridge (paraview.catalyst): in situ not run')
 else:
     status_ref, _ = pvbatch(1, 'bloom_catalyst_reference.py', os.path.join(insitu, 'reference'), '3')
     shots = [os.path.join(insitu, d, 'bloom_%02d.png' % k) for d in ('serial', 'reference')
@@ -497,6 +500,11 @@ if status == 0:
 
     # FXAA runs on the finished frame with the bloom, inside the scene render without it: its
     # edge blends round differently by up to 2 levels (ParaView 6.1; 1 on 5.11).
+    # The palettes did what they say: the corners are the white and the dark background.
+    corners = {name: shots(name)[0][:4, :4].mean(axis=(0, 1)) for name in ('white', 'dark')}
+    check(corners['white'].min() >= 250 and corners['dark'].max() <= 80,
+          'the white palette gives a white background (corner %s), the dark one a dark one (%s)'
+          % (corners['white'].round().tolist(), corners['dark'].round().tolist()))
     for name, bound in (('white', 1), ('dark', 1), ('fxaa-nolamp', 2), ('tonemap-nolamp', 1)):
         off, on = shots(name)
         worst = float(np.abs(on - off).max())
