@@ -158,6 +158,10 @@ public:
   /// The names of GetPresetNames() joined by ", ", for messages and help.
   static std::string GetPresetNamesList();
 
+  /// The preset a tool applies where none is named (vtk-bloom image): the first of
+  /// GetPresetNames().
+  static std::string GetDefaultPresetName();
+
   /**
    * An empty string when `name` is a preset, else the one-line error SetPreset reports (the
    * filter and the pass report it as their own).

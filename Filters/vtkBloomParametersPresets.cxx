@@ -31,6 +31,12 @@ std::string vtkBloomParameters::GetPresetNamesList()
 }
 
 //------------------------------------------------------------------------------
+std::string vtkBloomParameters::GetDefaultPresetName()
+{
+  return vtkBloomParameters::GetPresetNames().front();
+}
+
+//------------------------------------------------------------------------------
 std::string vtkBloomParameters::CheckPresetName(const char* name)
 {
   const std::string preset = name ? name : "";

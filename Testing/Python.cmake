@@ -13,6 +13,11 @@ file(MAKE_DIRECTORY "${vtkbloom_python_out}")
 add_test(NAME Python.vtkbloom
   COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_vtkbloom.py" -v)
 
+# ParaView's XML states the C++ defaults and enumerations by hand: checked against them.
+add_test(NAME Python.ParaViewXML
+  COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_paraview_xml.py" -v)
+set_tests_properties(Python.ParaViewXML PROPERTIES ENVIRONMENT "${vtkbloom_python_env}" TIMEOUT 60)
+
 add_test(NAME Python.arrays
   COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_arrays.py" -v)
 if (VTKBLOOM_ENABLE_RENDERING)

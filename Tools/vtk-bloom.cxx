@@ -40,6 +40,7 @@
 #include <map>
 #include <string>
 #include <unistd.h>
+#include <utility>
 #include <vector>
 
 #ifdef VTKBLOOM_HAS_RENDERING
@@ -64,7 +65,7 @@ const char* const Usage = R"(usage:
   vtk-bloom --help
 
 image: HDR bloom (vtkImageBloom). A preset is applied first; options then override it.
-  --preset NAME          webgpu-market | mip-atlas | ping-pong | crt-halfres
+  --preset NAME          @PRESETS@ (default @DEFAULT_PRESET@)
   --exact                the double-precision REFERENCE chain, bit for bit PRESETS.md's
                          (default: the fused float32 FAST chain, within 1e-5 relative L2 of it)
   --threshold T          bright-pass threshold, >= 0
@@ -383,7 +384,7 @@ int RunImage(int argc, char* argv[])
   }
   // Statistics cost about twice the chain; measure them only when they are reported.
   bloom->SetComputeStatistics(!common.StatisticsFile.empty());
-  bloom->SetPreset("webgpu-market");
+  bloom->SetPreset(vtkBloomParameters::GetDefaultPresetName().c_str());
   BloomOptions(args).Apply(bloom->GetParameters());
   return RunFiles(args, common, bloom, bloom, "image", false);
 }
@@ -599,19 +600,41 @@ int RunRender(int argc, char* argv[], bool interactive)
 }
 }
 
+namespace
+{
+// Usage with the preset names and the default filled in from vtkBloomParameters.
+std::string UsageText()
+{
+  std::string text = Usage;
+  const std::pair<const char*, std::string> fields[] = {
+    { "@PRESETS@", vtkBloomParameters::GetPresetNamesList() },
+    { "@DEFAULT_PRESET@", vtkBloomParameters::GetDefaultPresetName() },
+  };
+  for (const auto& field : fields)
+  {
+    const size_t at = text.find(field.first);
+    if (at != std::string::npos)
+    {
+      text.replace(at, std::strlen(field.first), field.second);
+    }
+  }
+  return text;
+}
+}
+
 int main(int argc, char* argv[])
 {
   const std::string command = argc > 1 ? argv[1] : "";
   if (command == "--help" || command == "-h" || command == "help")
   {
-    std::cout << Usage;
+    std::cout << UsageText();
     return 0;
   }
   for (int i = 2; i < argc; ++i)
   {
     if (std::strcmp(argv[i], "--help") == 0 || std::strcmp(argv[i], "-h") == 0)
     {
-      std::cout << Usage;
+      std::cout << UsageText();
       return 0;
     }
   }

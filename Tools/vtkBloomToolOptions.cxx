@@ -166,11 +166,10 @@ BloomOptions::BloomOptions(Arguments& args)
   if (args.Take("--preset", v))
   {
     // Checked here, so that the usage error is the only line (SetPreset would log its own).
-    const std::vector<std::string> presets = vtkBloomParameters::GetPresetNames();
-    if (std::find(presets.begin(), presets.end(), v) == presets.end())
+    const std::string error = vtkBloomParameters::CheckPresetName(v.c_str());
+    if (!error.empty())
     {
-      throw UsageError{ "--preset: unknown preset '" + v + "', expected one of " +
-        vtkBloomParameters::GetPresetNamesList() };
+      throw UsageError{ "--preset: " + error };
     }
     this->Edits.emplace_back([v](vtkBloomParameters* p) { p->SetPreset(v.c_str()); });
   }

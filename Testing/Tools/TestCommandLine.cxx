@@ -1,5 +1,6 @@
 // End-to-end tests of `vtk-bloom`: the acceptance commands, exit codes, and that nothing is
 // ever overwritten or left half-written.
+#include "vtkBloomParameters.h"
 #include "vtkBloomTestSupport.h"
 #include "vtkBloomToolTestHelpers.h"
 
@@ -246,8 +247,8 @@ TEST(CommandLine, UsageErrorsExitWithTwo)
   EXPECT_EQ(RunTool("", &errors), 2);
   EXPECT_EQ(RunTool("frobnicate " + in + " " + out), 2);
   EXPECT_EQ(RunTool("image --preset nope " + in + " " + out, &errors), 2);
-  EXPECT_NE(errors.find("unknown preset"), std::string::npos) << errors;
-  EXPECT_NE(errors.find("crt-halfres"), std::string::npos) << errors;
+  EXPECT_NE(errors.find("--preset: Unknown bloom preset 'nope'"), std::string::npos) << errors;
+  EXPECT_NE(errors.find(vtkBloomParameters::GetPresetNamesList()), std::string::npos) << errors;
   EXPECT_EQ(errors.find("ERR|"), std::string::npos)
     << "VTK's own log before the message: " << errors;
   // Values the filter would take but misuse: each refused with the option and its range.
@@ -277,6 +278,13 @@ TEST(CommandLine, UsageErrorsExitWithTwo)
   EXPECT_EQ(RunTool("blur --radius 4 " + in + " out.tiff"), 2);
   EXPECT_EQ(RunTool("--help"), 0);
   EXPECT_EQ(RunTool("image --help"), 0);
+  // The help's presets and default are vtkBloomParameters' own.
+  const std::string help = vtkBloomTest::OutputPath("cli-help.txt");
+  ASSERT_EQ(std::system((std::string(VTKBLOOM_TOOL) + " --help >" + Quote(help)).c_str()), 0);
+  EXPECT_NE(Slurp(help).find("--preset NAME          " + vtkBloomParameters::GetPresetNamesList() +
+              " (default " + vtkBloomParameters::GetDefaultPresetName() + ")"),
+    std::string::npos)
+    << Slurp(help);
 }
 
 TEST(CommandLine, NeverOverwritesTheInput)
