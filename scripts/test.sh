@@ -35,12 +35,42 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 mode=${1:-all}
 [ "$mode" = --in-sid-root ] || bash "$root/scripts/install-deps.sh"
 
+# Fails unless every group of tests named (the start of a ctest name, after any
+# parameterization prefix, as an extended regular expression) is in the build: a target that
+# the configuration should have made but did not (a module not found, a condition gone wrong)
+# would otherwise pass by not running. ctest itself runs with --no-tests=error.
+require_tests() {
+  local build=$1 group names missing=()
+  shift
+  names=$(ctest --test-dir "$build" -N | sed -n 's/^ *Test *#[0-9]*: //p')
+  for group in "$@"; do
+    grep -Eq "(^|/)$group" <<<"$names" || missing+=("$group")
+  done
+  if [ ${#missing[@]} -gt 0 ]; then
+    echo "test: $build has no tests ${missing[*]}, which its configuration should have built" >&2
+    exit 1
+  fi
+}
+# The groups every rendering build has (VTK with FreeType, annotations and widgets: Debian's,
+# sid's and the cached OSMesa and EGL prefixes alike).
+rendering_tests=('RenderingBloomPass[.]' 'RenderingBloomPassLight[.]' 'RenderingGallery[.]'
+  'RenderingBloomPassTiles[.]' 'RenderingBloomPassMotion[.]' 'CommandLine[.]')
+# And where the package is wrapped for Python (not in the sanitizer build, not in the cached
+# prefixes' builds, whose VTK has no Python).
+python_tests=('Python[.]vtkbloom' 'Python[.]arrays' 'Python[.]scene' 'Python[.]ParaViewXML'
+  'Python[.]Recipe[.]' 'Docs[.]NamedPathsExist')
+
 run_x11() {
   local build=$1
   shift
   bash "$root/scripts/configure.sh" "$build" "$@"
+  local required=("${rendering_tests[@]}")
+  grep -q '^VTKBLOOM_ENABLE_SANITIZERS:BOOL=ON' "$build/CMakeCache.txt" ||
+    required+=("${python_tests[@]}")
+  require_tests "$build" "${required[@]}"
   echo "test: running the suite against the system VTK (X11, private Xvfb)"
-  bash "$root/scripts/lib/with-xvfb.sh" ctest --test-dir "$build" --output-on-failure -j"$(nproc)"
+  bash "$root/scripts/lib/with-xvfb.sh" ctest --test-dir "$build" --output-on-failure \
+    --no-tests=error -j"$(nproc)"
 }
 
 # The headless legs: the suite against Debian's VTK built for osmesa or egl (no X at all).
@@ -51,9 +81,10 @@ run_headless() {
   bash "$root/scripts/configure.sh" "$root/build-$backend" -DCMAKE_BUILD_TYPE=Release \
     -DVTKBLOOM_WARNINGS_AS_ERRORS=ON -DVTKBLOOM_WRAP_PYTHON=OFF \
     -DVTK_DIR="$prefix/lib/cmake/vtk-9.1"
+  require_tests "$root/build-$backend" "${rendering_tests[@]}"
   echo "test: running the suite against the ${backend^^} VTK (no DISPLAY, no X server)"
   env -u DISPLAY -u WAYLAND_DISPLAY ctest --test-dir "$root/build-$backend" --output-on-failure \
-    -j"$(nproc)"
+    --no-tests=error -j"$(nproc)"
 }
 
 # The ParaView plugin against Debian's ParaView 5.11 (its VTK 9.2): build it, then run its
@@ -74,12 +105,15 @@ run_sid() {
 run_in_sid_root() {
   bash "$root/scripts/configure.sh" "$root/build-sid" -DCMAKE_BUILD_TYPE=Release \
     -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
+  # sid has PyVista 0.49 and vedo 2026: their tests and recipes are built there.
+  require_tests "$root/build-sid" "${rendering_tests[@]}" "${python_tests[@]}" \
+    'Python[.]pyvista' 'Python[.]Recipe[.]pyvista' 'Python[.]Recipe[.]vedo'
   echo "test: running the suite against VTK 9.6 (no DISPLAY: VTK chooses EGL)"
   env -u DISPLAY -u WAYLAND_DISPLAY ctest --test-dir "$root/build-sid" --output-on-failure \
-    -j"$(nproc)"
+    --no-tests=error -j"$(nproc)"
   echo "test: the tests that open a window, again against VTK 9.6 through X (private Xvfb)"
   bash "$root/scripts/lib/with-xvfb.sh" ctest --test-dir "$root/build-sid" --output-on-failure \
-    -j"$(nproc)" -R '^(Rendering|CommandLineData[.]View)'
+    --no-tests=error -j"$(nproc)" -R '^(Rendering|CommandLineData[.]View)'
   bash "$root/scripts/build-paraview-plugin.sh" "$root/build-paraview-sid"
   echo "test: running the ParaView 6.1 plugin's tests (pvbatch, 1 to 4 MPI ranks)"
   VTKBLOOM_PARAVIEW_BUILD="$root/build-paraview-sid" /usr/bin/python3 \
