@@ -35,6 +35,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <limits>
 #include <vector>
 
 namespace
@@ -143,6 +144,12 @@ Frame BloomTerm(
 {
   Frame with = Render(width, height, scale, true, seamless, viewports, nullptr, throughRenderer);
   const Frame without = Render(width, height, scale, false, seamless, viewports);
+  if (with.Values.size() != without.Values.size())
+  {
+    ADD_FAILURE() << "the frames with and without the pass differ in size: " << with.Width << "x"
+                  << with.Height << " and " << without.Width << "x" << without.Height;
+    return Frame();
+  }
   for (size_t k = 0; k < with.Values.size(); ++k)
   {
     with.Values[k] -= without.Values[k];
@@ -162,6 +169,12 @@ Frame BloomTerm(
 
 double RelativeL2(const Frame& a, const Frame& reference)
 {
+  if (a.Values.size() != reference.Values.size() || a.Values.empty())
+  {
+    ADD_FAILURE() << "frames of " << a.Values.size() << " and " << reference.Values.size()
+                  << " values cannot be compared";
+    return std::numeric_limits<double>::infinity();
+  }
   double error = 0.0, norm = 0.0;
   for (size_t k = 0; k < a.Values.size(); ++k)
   {
