@@ -848,11 +848,19 @@ void vtkBloomPass::vtkInternals::Compose(
   const int zero[2] = { -this->Tile.Inner[0], -this->Tile.Inner[1] };
   const int origin[2] = { x, y };
   const int shifted[2] = { x - this->Tile.Inner[0], y - this->Tile.Inner[1] };
+  // Into a multisampled framebuffer, the samples at anti-aliased edges are then composited from
+  // the scene's own samples, as the renderer would have drawn them
+  // (vtkBloomPassChainRunner::SceneSamples). With two renders the multisampled target last
+  // held the emitters: the resolved scene only.
+  this->Runner.SceneSamples =
+    res.Samples > 1 && !twoRenders ? res.Multisample.Color.Get() : nullptr;
+  this->Runner.SceneSampleCount = res.Samples;
   if (self->CaptureResult)
   {
     this->Runner.Composite(&res.Result, zero, bloom);
     state->PopFramebufferBindings();
     this->Runner.Copy(nullptr, origin, res.Result);
+    this->Runner.CompositeEdges(shifted, bloom);
   }
   else
   {

@@ -109,6 +109,11 @@ vtkOpenGLQuadHelper* vtkBloomPassChainRunner::Program(const std::string& variant
     std::string fs =
       variant.rfind("#define REDUCE", 0) == 0 ? vtkBloomPassReduceFS : vtkBloomPassFS;
     vtkShaderProgram::Substitute(fs, "//BLOOM::Constants", ShaderConstants());
+    // gl_SampleID, which VTK's GLSL 1.50 has from the extension (core in GLSL 4.00).
+    vtkShaderProgram::Substitute(fs, "//BLOOM::Extensions",
+      variant.find("#define COMPOSITE_SAMPLES") != std::string::npos
+        ? "#extension GL_ARB_sample_shading : require\n"
+        : "");
     vtkShaderProgram::Substitute(fs, "//BLOOM::Variant", variant);
     this->CompiledProgram = true;
     quad.reset(new vtkOpenGLQuadHelper(this->Resources.Context,
@@ -172,6 +177,10 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
   if (spec.Samples)
   {
     os << "#define SAMPLE_THRESHOLD " << spec.SampleCount << "\n";
+  }
+  if (spec.SceneSamples)
+  {
+    os << "#define COMPOSITE_SAMPLES " << spec.SceneSampleCount << "\n";
   }
   if (spec.Tiled && spec.Second)
   {
@@ -337,7 +346,8 @@ vtkBloomPassChainRunner::VariantEntry& vtkBloomPassChainRunner::VariantOf(
     static_cast<std::uintptr_t>(format), bits,
     reinterpret_cast<std::uintptr_t>(spec.Second ? spec.Second->X : nullptr),
     reinterpret_cast<std::uintptr_t>(spec.Second ? spec.Second->Y : nullptr),
-    static_cast<std::uintptr_t>(spec.Samples ? spec.SampleCount : 0) };
+    static_cast<std::uintptr_t>(spec.Samples ? spec.SampleCount : 0),
+    static_cast<std::uintptr_t>(spec.SceneSamples ? spec.SceneSampleCount : 0) };
   VariantEntry& entry = this->Variants[key];
   if (entry.Variant.empty())
   {
@@ -483,7 +493,8 @@ vtkBloomPassChainRunner::PassTextures vtkBloomPassChainRunner::PassTexturesOf(co
       : nullptr,
     spec.Second ? spec.Second->Source : nullptr,
     spec.Second ? this->OperatorTexture(*spec.Second->X) : nullptr,
-    spec.Second ? this->OperatorTexture(*spec.Second->Y) : nullptr, spec.Samples };
+    spec.Second ? this->OperatorTexture(*spec.Second->Y) : nullptr, spec.Samples,
+    spec.SceneSamples };
   return t;
 }
 

@@ -92,6 +92,17 @@ public:
   vtkTextureObject* SourceSamples = nullptr;
   int SourceSampleCount = 0;
   /**
+   * The multisampled scene again, for the composite: where it writes the framebuffer the pass
+   * was called with and that framebuffer has as many samples, each of its samples is the
+   * composite of the scene's own sample (COMPOSITE_SAMPLES in vtkBloomPassFS.glsl), so that the
+   * window resolves the samples the renderer would have drawn, as it resolves them (VTK presents
+   * a multisampled window through a gamma 2.2 average). Null, or no per-sample shading
+   * (GL_ARB_sample_shading): the resolved scene, the same value in every sample. Set before
+   * Composite().
+   */
+  vtkTextureObject* SceneSamples = nullptr;
+  int SceneSampleCount = 0;
+  /**
    * The pass into the framebuffer (the composite, or the copy of the captured result) goes
    * over what the framebuffer holds, premultiplied (GL_ONE, GL_ONE_MINUS_SRC_ALPHA), instead of
    * replacing it: a renderer on a higher layer, which clears nothing, blooms over the layers
@@ -170,6 +181,14 @@ public:
 
   /// Copy `source` into `target`, or into the bound framebuffer at `origin` when it is null.
   void Copy(vtkBloomPassTarget* target, const int origin[2], vtkBloomPassTarget& source);
+
+  /**
+   * After the composite or the copy into the bound framebuffer at `origin`, where that
+   * framebuffer is multisampled: its samples at anti-aliased edges become the composites of the
+   * scene's own samples (COMPOSITE_SAMPLES in vtkBloomPassFS.glsl), as the renderer would have
+   * drawn them. Nothing where it does not apply (CompositeSamples).
+   */
+  void CompositeEdges(const int origin[2], bool bloom);
 
   /**
    * PSF mode (vtkBloomParameters::BLOOM_PSF): the bright pass of `emission` at full size, with
@@ -324,6 +343,9 @@ private:
     /// The bright pass: the multisampled source, thresholded sample by sample (SourceSamples).
     vtkTextureObject* Samples = nullptr;
     int SampleCount = 0;
+    /// The composite: the multisampled scene, composited sample by sample (SceneSamples).
+    vtkTextureObject* SceneSamples = nullptr;
+    int SceneSampleCount = 0;
   };
 
   /// The most samples a pass may have to be one draw (SingleDrawSamples, or its automatic value).
@@ -482,6 +504,7 @@ private:
   /// The region of the bloom term within the composite's output; outside it the bloom is zero.
   Box CompositeRegion;
   bool CompositeRestricted = false;
+  int CompositeSize[2] = { 0, 0 }; ///< the composite's size (CompositeSpec points at it)
   double ComputedSamples = 0.0;
   double FullSamples = 0.0;
 
@@ -565,6 +588,19 @@ private:
 
   int GLVersion = 0; ///< major * 10 + minor, asked with ComputeSupport
 
+  /// Whether a fragment shader can run per sample (gl_SampleID, GL_ARB_sample_shading), asked
+  /// once.
+  bool SampleShadingSupported();
+  int SampleShading = 0; ///< 0 not asked, 1 yes, -1 no
+  /**
+   * The multisampled scene (SceneSamples) where the bound framebuffer has as many samples, a
+   * fragment shader can run per sample and the composite replaces what the framebuffer holds
+   * (not CompositeOver); else null.
+   */
+  vtkTextureObject* CompositeSamples();
+  /// The composite's pass (Composite, CompositeEdges).
+  PassSpec CompositeSpec(bool bloom);
+
   /**
    * Where a compute pass writes: level `Level` of the texture `Texture`, bound as image unit 0
    * in `Format` (GL_RGBA8, GL_RGBA16F or GL_RGBA32F), the pass's output sample (0, 0) at
@@ -622,9 +658,10 @@ private:
   /// The textures a pass reads, in a fixed order, and their samplers' names.
   struct PassTextures
   {
-    std::array<vtkTextureObject*, 12> Textures;
-    static constexpr const char* Samplers[12] = { "source", "xRows", "yRows", "addend", "scene",
-      "emitterDepth", "sceneDepth", "background", "source2", "x2Rows", "y2Rows", "sourceSamples" };
+    std::array<vtkTextureObject*, 13> Textures;
+    static constexpr const char* Samplers[13] = { "source", "xRows", "yRows", "addend", "scene",
+      "emitterDepth", "sceneDepth", "background", "source2", "x2Rows", "y2Rows", "sourceSamples",
+      "sceneSamples" };
   };
 
   /**
@@ -637,7 +674,7 @@ private:
    * barrier after every pass, so that each pass's timestamps hold its own work.
    */
   bool Deferring = false;                            ///< within Run(), not Profiling
-  using TextureNames = std::array<unsigned int, 12>; ///< PassTextures' names, 0 where absent
+  using TextureNames = std::array<unsigned int, 13>; ///< PassTextures' names, 0 where absent
   static TextureNames NamesOf(const PassTextures& textures);
   void BeforeComputePass(const TextureNames& reads, unsigned int written);
   void AfterComputePass(const TextureNames& reads, unsigned int written);
@@ -658,7 +695,7 @@ private:
     ComputeProgram* Program = nullptr; ///< null: not made, or it did not build
     bool Asked = false;                ///< Compute() was asked for Program
   };
-  using VariantKey = std::array<std::uintptr_t, 12>;
+  using VariantKey = std::array<std::uintptr_t, 13>;
   std::map<VariantKey, VariantEntry> Variants;
   VariantEntry& VariantOf(const PassSpec& spec, const Draw& draw, unsigned int format);
   /**

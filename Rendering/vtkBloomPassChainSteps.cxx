@@ -633,18 +633,18 @@ void vtkBloomPassChainRunner::EndCoverage(bool measured)
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassChainRunner::Composite(vtkBloomPassTarget* target, const int origin[2], bool bloom)
+vtkBloomPassChainRunner::PassSpec vtkBloomPassChainRunner::CompositeSpec(bool bloom)
 {
   // out = keep * scene + Strength * Tint * bloom, the final resample of CASCADE included.
   vtkBloomPassResources& res = this->Resources;
   const vtkBloomChain& c = res.Chain;
   // PSF mode builds no chain: the size is its bloom term's.
-  const int full[2] = { this->PSFBloom ? this->PSFBloom->Size[0] : c.Width,
-    this->PSFBloom ? this->PSFBloom->Size[1] : c.Height };
+  this->CompositeSize[0] = this->PSFBloom ? this->PSFBloom->Size[0] : c.Width;
+  this->CompositeSize[1] = this->PSFBloom ? this->PSFBloom->Size[1] : c.Height;
   PassSpec composite;
   composite.Step = STEP_COMPOSITE;
   composite.Source = res.Scene.Color;
-  composite.SourceSize = full;
+  composite.SourceSize = this->CompositeSize;
   composite.CompositeBloom = bloom;
   composite.Name = "composite";
   composite.Region = bloom && this->CompositeRestricted ? &this->CompositeRegion : nullptr;
@@ -666,8 +666,33 @@ void vtkBloomPassChainRunner::Composite(vtkBloomPassTarget* target, const int or
       composite.Y = &c.Final.Y;
     }
   }
-  this->Pass(target, origin, composite);
+  return composite;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::Composite(vtkBloomPassTarget* target, const int origin[2], bool bloom)
+{
+  this->Pass(target, origin, this->CompositeSpec(bloom));
+  if (!target)
+  {
+    this->CompositeEdges(origin, bloom);
+  }
   this->EndCostTiming();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::CompositeEdges(const int origin[2], bool bloom)
+{
+  vtkTextureObject* samples = this->CompositeSamples();
+  if (!samples)
+  {
+    return;
+  }
+  PassSpec edges = this->CompositeSpec(bloom);
+  edges.SceneSamples = samples;
+  edges.SceneSampleCount = this->SceneSampleCount;
+  edges.Name = "composite-samples";
+  this->Pass(nullptr, origin, edges);
 }
 
 //------------------------------------------------------------------------------

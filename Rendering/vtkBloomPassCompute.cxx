@@ -174,6 +174,42 @@ bool vtkBloomPassChainRunner::ComputeSupported()
 }
 
 //------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::SampleShadingSupported()
+{
+  if (this->SampleShading == 0)
+  {
+    // The extension, also where OpenGL 4.0 has it in its core: VTK's shaders are GLSL 1.50,
+    // which reach gl_SampleID through it.
+    bool supported = false;
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; !supported && i < count; ++i)
+    {
+      const GLubyte* name = glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i));
+      supported =
+        name && std::string(reinterpret_cast<const char*>(name)) == "GL_ARB_sample_shading";
+    }
+    this->SampleShading = supported ? 1 : -1;
+  }
+  return this->SampleShading > 0;
+}
+
+//------------------------------------------------------------------------------
+vtkTextureObject* vtkBloomPassChainRunner::CompositeSamples()
+{
+  // Over the layers below (CompositeOver) the first composite has blended already: a sample
+  // cannot be composited again.
+  if (!this->SceneSamples || this->SceneSampleCount < 2 || this->CompositeOver)
+  {
+    return nullptr;
+  }
+  GLint samples = 0;
+  glGetIntegerv(GL_SAMPLES, &samples);
+  return samples == this->SceneSampleCount && this->SampleShadingSupported() ? this->SceneSamples
+                                                                             : nullptr;
+}
+
+//------------------------------------------------------------------------------
 bool vtkBloomPassChainRunner::SoftwareRasterizer()
 {
   if (this->Software == 0)

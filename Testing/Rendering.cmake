@@ -72,6 +72,16 @@ if (TARGET VTK::InteractionWidgets AND TARGET VTK::RenderingFreeType AND
       VTK::RenderingVolumeOpenGL2 VTK::RenderingVolume VTK::ImagingCore VTK::IOImage
       VTK::FiltersCore VTK::FiltersSources VTK::RenderingOpenGL2 VTK::RenderingCore
       VTK::CommonDataModel VTK::CommonCore)
-  vtk_module_autoinit(TARGETS TestBloomPassGallery MODULES VTK::RenderingOpenGL2
-    VTK::RenderingVolumeOpenGL2 VTK::RenderingFreeType VTK::InteractionStyle)
+  set(vtkbloom_gallery_autoinit VTK::RenderingOpenGL2 VTK::RenderingVolumeOpenGL2
+    VTK::RenderingFreeType VTK::InteractionStyle)
+  # A chart's marks (vtkChartXY in a vtkContextActor), where this VTK has the chart modules
+  # (the OSMesa and EGL builds of scripts/lib/build-debian-vtk.sh do not).
+  if (TARGET VTK::ChartsCore AND TARGET VTK::RenderingContext2D AND
+      TARGET VTK::RenderingContextOpenGL2)
+    target_link_libraries(TestBloomPassGallery PRIVATE VTK::ChartsCore VTK::RenderingContext2D
+      VTK::RenderingContextOpenGL2)
+    target_compile_definitions(TestBloomPassGallery PRIVATE VTKBLOOM_GALLERY_CHARTS=1)
+    list(APPEND vtkbloom_gallery_autoinit VTK::RenderingContextOpenGL2)
+  endif ()
+  vtk_module_autoinit(TARGETS TestBloomPassGallery MODULES ${vtkbloom_gallery_autoinit})
 endif ()

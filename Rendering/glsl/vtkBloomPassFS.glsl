@@ -1,4 +1,5 @@
 //VTK::System::Dec
+//BLOOM::Extensions
 
 /*=========================================================================
   vtkBloomPassFS.glsl: one full-screen pass of vtkBloomPass.
@@ -57,6 +58,19 @@
   or a point that covers part of a pixel then brings light in proportion to its coverage, as
   the scene does, rather than nothing until its resolved colour crosses the threshold.
 
+  COMPOSITE_SAMPLES (a second composite into a framebuffer with as many samples as the
+  multisampled scene, after the composite of the resolved scene into all its samples): each
+  sample whose scene sample differs from the resolved scene (an anti-aliased edge) becomes the
+  composite of its own scene sample (gl_SampleID: the shader runs once per sample; the others
+  are discarded before any tap). The framebuffer then holds the samples the renderer would have
+  drawn and resolves as it resolves them without the pass: VTK presents a multisampled window
+  through a gamma 2.2 average of its samples, where every sample holding the linear average
+  was up to 72 levels off at the edges of thin lines on white. The bloom is the pixel's, the
+  same for each of its samples. Where the samples' excess above 1 (light, which an 8-bit
+  framebuffer clips sample by sample) would take more than half a level off their mean, the
+  pixel keeps the resolved composite (discarded): the float resolve keeps the light's excess at
+  its edges, as before.
+
   COMPUTE: the same pass as a compute shader (OpenGL 4.3; vtkBloomPass::UseComputeShaders),
   one invocation per output sample of the draw's region, written with imageStore into the
   target bound as image unit 0 (IMAGE_FORMAT) at targetOffset (the composite's origin in the
@@ -98,6 +112,9 @@ uniform float weight;       // SCALE, KARIS_TERM and ADD weight
 #endif
 #ifndef SAMPLE_THRESHOLD
 #define SAMPLE_THRESHOLD 0
+#endif
+#ifndef COMPOSITE_SAMPLES
+#define COMPOSITE_SAMPLES 0
 #endif
 #if SAMPLE_THRESHOLD
 uniform sampler2DMS sourceSamples; // the scene before its resolve
@@ -181,6 +198,9 @@ uniform sampler2D addend;
 #endif
 #if STEP == STEP_COMPOSITE
 uniform sampler2D scene;
+#if COMPOSITE_SAMPLES
+uniform sampler2DMS sceneSamples; // the scene before its resolve
+#endif
 uniform float keep;
 uniform vec3 strengthTint;
 uniform float glowAlpha; // 1: the glow raises a transparent scene's alpha; 0: alpha is kept
@@ -417,6 +437,45 @@ vec4 finite(vec4 v)
   }
   return v;
 }
+
+// The composite of one scene colour `base` (the resolved scene's, or one of its samples') with
+// the bloom term `sum` at p.
+vec4 compositeOf(vec4 base, vec3 sum, ivec2 p)
+{
+#if SCENE_ALPHA_CLAMPED
+  base.a = min(base.a, 1.0); // selective bloom's weight rode above 1 (EMISSION_IN_ALPHA)
+#endif
+#if SANITIZE_OUTPUT
+  base = finite(base);
+#endif
+#if COMPOSITE_BLOOM
+  // The bloom is clamped to the float range first (NaN 0), as vtkImageBloom's composite does,
+  // so a zero strength or tint channel adds nothing even where the float32 bloom overflowed.
+  vec3 bloom = sum;
+  for (int i = 0; i < 3; ++i)
+  {
+    bloom[i] = isnan(bloom[i]) ? 0.0 : clamp(bloom[i], -FLOAT_MAX, FLOAT_MAX);
+  }
+  // The glow carries alpha (a rendered frame): over a transparent background (alpha < 1) the
+  // colour stays premultiplied and alpha rises by the glow's largest channel, so that the halo
+  // shows over any backdrop. Where the scene is opaque (alpha >= 1), or with glowAlpha 0 (an
+  // image, as vtkImageBloom), alpha is the scene's exactly.
+  vec3 glow = strengthTint * bloom;
+  float coverage = clamp(max(max(glow.r, glow.g), glow.b), 0.0, 1.0);
+  base = overBackground(base, coverage, p);
+  vec4 result =
+    vec4(keep * base.rgb + glow, base.a + glowAlpha * max(1.0 - base.a, 0.0) * coverage);
+#else
+  // No bloom (nothing passed the bright pass, or the effect is off): keep * in + 0, as
+  // vtkImageBloom composites a skipped bloom.
+  base = overBackground(base, 0.0, p);
+  vec4 result = vec4(keep * base.rgb + vec3(0.0), base.a);
+#endif
+#if SANITIZE_OUTPUT
+  result = finite(result);
+#endif
+  return result;
+}
 #endif
 
 // Whether tap k of weight w contributes. Bit k of `any`: the tap is non-zero in some phase
@@ -538,6 +597,14 @@ void main()
 #else
   ivec2 p = regionOffset + ivec2(floor(texCoord * regionSize));
 #endif
+#if COMPOSITE_SAMPLES
+  // A sample equal to the resolved scene holds its composite already (the composite before).
+  vec4 ownSample = texelFetch(sceneSamples, p, gl_SampleID);
+  if (ownSample == texelFetch(scene, p, 0))
+  {
+    discard;
+  }
+#endif
 
 #if ZERO_BLOOM
   vec4 sum = vec4(zeroBloom);
@@ -598,37 +665,29 @@ void main()
 #elif STEP == STEP_ADD
   result = sum + weight * texelFetch(addend, p, 0);
 #else // STEP_COMPOSITE
-  vec4 base = texelFetch(scene, p, 0);
-#if SCENE_ALPHA_CLAMPED
-  base.a = min(base.a, 1.0); // selective bloom's weight rode above 1 (EMISSION_IN_ALPHA)
+#if !COMPOSITE_BLOOM
+  vec4 sum = vec4(0.0); // no bloom term
 #endif
-#if SANITIZE_OUTPUT
-  base = finite(base);
-#endif
-#if COMPOSITE_BLOOM
-  // The bloom is clamped to the float range first (NaN 0), as vtkImageBloom's composite does,
-  // so a zero strength or tint channel adds nothing even where the float32 bloom overflowed.
-  vec3 bloom = sum.rgb;
-  for (int i = 0; i < 3; ++i)
+#if COMPOSITE_SAMPLES
+  // Each sample's own composite, which the framebuffer clips to [0, 1] as it clips the
+  // renderer's samples, unless the pixel holds light: where the samples' excess above 1 would
+  // take more than half a level off their mean, the pixel keeps the resolved composite (the
+  // float resolve keeps the light's excess at its edges). Colours a sample interpolates from
+  // outside its triangle (multisampling shades at the pixel's centre) stray a little out of
+  // [0, 1] at the edges of colour-mapped surfaces: that is not light.
+  result = compositeOf(ownSample, sum.rgb, p);
+  vec3 excess = vec3(0.0);
+  for (int j = 0; j < COMPOSITE_SAMPLES; ++j)
   {
-    bloom[i] = isnan(bloom[i]) ? 0.0 : clamp(bloom[i], -FLOAT_MAX, FLOAT_MAX);
+    vec3 c = compositeOf(texelFetch(sceneSamples, p, j), sum.rgb, p).rgb;
+    excess += max(c - vec3(1.0), vec3(0.0));
   }
-  // The glow carries alpha (a rendered frame): over a transparent background (alpha < 1) the
-  // colour stays premultiplied and alpha rises by the glow's largest channel, so that the halo
-  // shows over any backdrop. Where the scene is opaque (alpha >= 1), or with glowAlpha 0 (an
-  // image, as vtkImageBloom), alpha is the scene's exactly.
-  vec3 glow = strengthTint * bloom;
-  float coverage = clamp(max(max(glow.r, glow.g), glow.b), 0.0, 1.0);
-  base = overBackground(base, coverage, p);
-  result = vec4(keep * base.rgb + glow, base.a + glowAlpha * max(1.0 - base.a, 0.0) * coverage);
+  if (any(greaterThan(excess, vec3(0.5 * float(COMPOSITE_SAMPLES) / 255.0))))
+  {
+    discard;
+  }
 #else
-  // No bloom (nothing passed the bright pass, or the effect is off): keep * in + 0, as
-  // vtkImageBloom composites a skipped bloom.
-  base = overBackground(base, 0.0, p);
-  result = vec4(keep * base.rgb + vec3(0.0), base.a);
-#endif
-#if SANITIZE_OUTPUT
-  result = finite(result);
+  result = compositeOf(texelFetch(scene, p, 0), sum.rgb, p);
 #endif
 #endif
 

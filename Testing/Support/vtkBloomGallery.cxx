@@ -283,7 +283,23 @@ Frame GrabFloatPlain(Scene& scene)
 }
 
 //------------------------------------------------------------------------------
-Frame Grab(vtkRenderWindow* window, int* errors)
+namespace
+{
+Frame ReadBuffer(vtkRenderWindow* window, bool front)
+{
+  vtkNew<vtkWindowToImageFilter> grab;
+  grab->SetInput(window);
+  grab->SetInputBufferTypeToRGB();
+  grab->SetReadFrontBuffer(front);
+  grab->ShouldRerenderOff();
+  grab->Update();
+  auto frame = Frame::New();
+  frame->DeepCopy(grab->GetOutput());
+  return frame;
+}
+}
+
+Frame Grab(vtkRenderWindow* window, int* errors, Frame* presented)
 {
   window->MakeCurrent();
   for (int i = 0; i < 64 && glGetError() != GL_NO_ERROR; ++i)
@@ -294,15 +310,11 @@ Frame Grab(vtkRenderWindow* window, int* errors)
   {
     ++*errors;
   }
-  vtkNew<vtkWindowToImageFilter> grab;
-  grab->SetInput(window);
-  grab->SetInputBufferTypeToRGB();
-  grab->ReadFrontBufferOff();
-  grab->ShouldRerenderOff();
-  grab->Update();
-  auto frame = Frame::New();
-  frame->DeepCopy(grab->GetOutput());
-  return frame;
+  if (presented)
+  {
+    *presented = ReadBuffer(window, true);
+  }
+  return ReadBuffer(window, false);
 }
 
 namespace

@@ -115,8 +115,12 @@ Frame GrabFloatPlain(Scene& scene);
 ///@{
 /// Frames and their metrics. Grab renders the window explicitly, then reads the back buffer
 /// as 8-bit RGB without rendering again; it adds the OpenGL errors the render raised to
-/// `errors` where given (errors pending before the render are cleared first).
-Frame Grab(vtkRenderWindow* window, int* errors = nullptr);
+/// `errors` where given (errors pending before the render are cleared first). With `presented`
+/// it also reads the front buffer of the same render: the frame as the window presents it,
+/// which VTK resolves from a multisampled window's samples through a gamma 2.2 average (the
+/// back buffer's read resolves them by their plain mean). PyVista's and vedo's screenshots are
+/// that frame.
+Frame Grab(vtkRenderWindow* window, int* errors = nullptr, Frame* presented = nullptr);
 /// The largest channel difference |a - b| of pixel `p`, in levels.
 double Difference(vtkImageData* a, vtkImageData* b, vtkIdType p);
 /// max over pixels and channels of |a - b|, in levels.
