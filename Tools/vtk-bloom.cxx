@@ -31,6 +31,7 @@
 #include <vtkNew.h>
 #include <vtkPointData.h>
 #include <vtkSmartPointer.h>
+#include <vtkVersion.h>
 
 #include <algorithm>
 #include <chrono>
@@ -62,7 +63,7 @@ const char* const Usage = R"(usage:
   vtk-bloom render [options] SCENE|FILE OUT.exr|OUT.png
   vtk-bloom render --list
   vtk-bloom view [options] SCENE|FILE
-  vtk-bloom --help
+  vtk-bloom --help | --version
 
 image: HDR bloom (vtkImageBloom). A preset is applied first; options then override it.
   --preset NAME          @PRESETS@ (default @DEFAULT_PRESET@)
@@ -625,6 +626,12 @@ std::string UsageText()
 int main(int argc, char* argv[])
 {
   const std::string command = argc > 1 ? argv[1] : "";
+  if (command == "--version")
+  {
+    std::cout << "vtk-bloom " << VTKBLOOM_VERSION << " (VTK " << vtkVersion::GetVTKVersion()
+              << ")\n";
+    return 0;
+  }
   if (command == "--help" || command == "-h" || command == "help")
   {
     std::cout << UsageText();

@@ -21,6 +21,13 @@
 #                                  the tests that need a window again through X under Xvfb,
 #                                  then the ParaView 6.1 plugin in build-paraview-sid/ and its
 #                                  tests. Not part of the default run; .ci/run runs it.
+#   bash scripts/test.sh --deb     the Debian 12 packages: scripts/package-deb.sh builds them
+#                                  into build-deb/, scripts/test-deb.sh installs them with apt
+#                                  in a clean Debian 12 root (made once and cached) and runs
+#                                  the tool, the Python package, a find_package(VTKBloom)
+#                                  consumer, the ParaView plugin in pvbatch and lintian there.
+#                                  `--deb --sid`: the same for Debian sid (build-deb-sid/). .ci/run
+#                                  runs --deb.
 #   bash scripts/test.sh --asan    AddressSanitizer + UndefinedBehaviorSanitizer build in
 #                                  build-asan/ (system VTK, under Xvfb)
 #   bash scripts/test.sh --valgrind the hostile-file tests (damaged corpus, hostile headers,
@@ -144,6 +151,14 @@ case "$mode" in
   --in-sid-root)
     run_in_sid_root
     ;;
+  --deb)
+    case ${2:-} in
+      '' | --sid) ;;
+      *) echo "usage: bash scripts/test.sh --deb [--sid]" >&2; exit 2 ;;
+    esac
+    bash "$root/scripts/package-deb.sh" ${2:-}
+    bash "$root/scripts/test-deb.sh" ${2:-}
+    ;;
   --asan)
     export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1
     export UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
@@ -159,7 +174,7 @@ case "$mode" in
     bash "$root/scripts/fuzz.sh" "${2:-120}"
     ;;
   *)
-    echo "usage: bash scripts/test.sh [--x11 | --paraview | --osmesa | --egl | --sid | --asan | --valgrind | --fuzz [SECONDS]]" >&2
+    echo "usage: bash scripts/test.sh [--x11 | --paraview | --osmesa | --egl | --sid | --deb [--sid] | --asan | --valgrind | --fuzz [SECONDS]]" >&2
     exit 2
     ;;
 esac

@@ -278,6 +278,7 @@ TEST(CommandLine, UsageErrorsExitWithTwo)
   EXPECT_EQ(RunTool("blur --radius 4 " + in + " out.tiff"), 2);
   EXPECT_EQ(RunTool("--help"), 0);
   EXPECT_EQ(RunTool("image --help"), 0);
+  EXPECT_EQ(RunTool("--version"), 0);
   // The help's presets and default are vtkBloomParameters' own.
   const std::string help = vtkBloomTest::OutputPath("cli-help.txt");
   ASSERT_EQ(std::system((std::string(VTKBLOOM_TOOL) + " --help >" + Quote(help)).c_str()), 0);
