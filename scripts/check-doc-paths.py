@@ -13,11 +13,19 @@ Exits 1, listing each missing name with its document and line.
 """
 import os
 import re
+import subprocess
 import sys
 
 root = os.path.abspath(sys.argv[1] if len(sys.argv) > 1 else os.path.join(os.path.dirname(__file__), ".."))
-top_dirs = [e for e in os.listdir(root)
-            if os.path.isdir(os.path.join(root, e)) and not e.startswith((".", "build"))]
+# The repository's own folders: those git tracks (what a run writes, such as output/, is not
+# a name the docs promise); without git, every folder but the build trees.
+try:
+    tracked = subprocess.run(["git", "-C", root, "ls-files"], capture_output=True, text=True,
+                             check=True).stdout.split("\n")
+    top_dirs = sorted({f.split("/")[0] for f in tracked if "/" in f})
+except (OSError, subprocess.CalledProcessError):
+    top_dirs = [e for e in os.listdir(root)
+                if os.path.isdir(os.path.join(root, e)) and not e.startswith((".", "build"))]
 names = set()
 for folder, dirs, files in os.walk(root):
     dirs[:] = [d for d in dirs if not d.startswith((".", "build"))]
