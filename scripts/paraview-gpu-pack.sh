@@ -8,7 +8,8 @@
 #
 # Writes DEST/paraview-gpu.tar.xz (xz -9e with the x86 filter), or, if that is over
 # $VTKBLOOM_PV_LIMIT_MB (default 56: a device call carries 64 MiB with the checkout), the same
-# files split into DEST/paraview-gpu-1.tar.xz and -2 for two calls. Steps, each logged under
+# files split into DEST/paraview-gpu-1.tar.xz and -2 for two calls (VTKBLOOM_PV_PARTS=2: the
+# two parts at once, without trying one archive). Steps, each logged under
 # .pvgpack-work/ (ignored):
 #
 # 1. build: in the sid root, the project's modules, Python package and vtk-bloom tool against
@@ -76,6 +77,7 @@ commit=${VTKBLOOM_PV_COMMIT:-$(git -C "$root" rev-parse --short HEAD 2>/dev/null
 [ -n "${VTKBLOOM_PV_COMMIT:-}" ] || git -C "$root" diff --quiet HEAD -- . 2>/dev/null || commit="$commit+"
 cat >"$work/extra.txt" <<EXTRA
 # Read by the steps only on a GPU machine, or by the loader, or needed to enter the root.
+/lib64/ld-linux-x86-64.so.2
 /usr/bin/env
 /bin/bash
 /etc/ld.so.conf
@@ -89,9 +91,10 @@ cat >"$work/extra.txt" <<EXTRA
 EXTRA
 rm -rf "$work/stubs"
 /usr/bin/python3 "$root/scripts/lib/paraview_gpu_pack.py" stage "$sid" "$work/trace.db" \
-  "$work/strace.log" "$stage" "$work/extra.txt" "$work/stubs" | tee "$work/stage.log" >&2
+  "$work/strace.log" "$stage" "$work/extra.txt" "$work/stubs" "$root/build-sid-gpu/bin" \
+  "$root/build-sid-gpu/lib" "$root/build-paraview-sid-gpu/lib" | tee "$work/stage.log" >&2
 # The project: its scripts and ParaView tests, the two builds' outputs that run there.
-for p in scripts ParaView build-sid-gpu/bin/vtk-bloom build-sid-gpu/lib/libvtk*.so \
+for p in scripts ParaView build-sid-gpu/bin/vtk-bloom build-sid-gpu/lib/libvtk*.so* \
   build-sid-gpu/lib/python3 build-paraview-sid-gpu/lib/paraview-6.1/plugins; do
   for f in $root/$p; do
     mkdir -p "$stage$(dirname "$f")"
@@ -101,33 +104,49 @@ done
 find "$stage$root" -name __pycache__ -prune -exec rm -rf {} +
 # The stubs, assembled in the sid root; the project's objects stripped there.
 sid_run "bash '$work/stubs/build.sh' &&
-  find '$stage$root' -type f \\( -name '*.so' -o -name vtk-bloom \\) -exec strip --strip-unneeded {} +" \
+  find '$stage$root' -type f \\( -name '*.so*' -o -name vtk-bloom \\) -exec strip --strip-unneeded {} +" \
   >"$work/stubs.log" 2>&1 || { tail -n 20 "$work/stubs.log"; exit 1; }
 "$sid/usr/sbin/ldconfig" -r "$stage" 2>/dev/null || true
 du -sh "$stage" >&2
 
 # 5. compress (the check below unpacks exactly this)
 rm -f "$dest"/paraview-gpu*.tar.xz
-pack() { # pack ARCHIVE PARTS [FILES_FROM]
+manifest() { # what paraview-gpu-run.sh reads: the source path, the parts, the commit
   printf 'VTKBLOOM_PV_SOURCE=%s\nVTKBLOOM_PV_PARTS="%s"\nVTKBLOOM_PV_COMMIT=%s\n' \
-    "$root" "$2" "$commit" >"$stage/.vtkbloom-pv"
+    "$root" "$1" "$commit" >"$stage/.vtkbloom-pv"
+}
+pack() { # pack ARCHIVE [FILES_FROM]
   local what=(.)
-  [ -z "${3:-}" ] || what=(--files-from="$3" .vtkbloom-pv)
+  [ -z "${2:-}" ] || what=(--files-from="$2" .vtkbloom-pv)
   (cd "$stage" && tar --sort=name --owner=0 --group=0 --numeric-owner -cf - "${what[@]}") |
     xz -9e --x86 --lzma2=preset=9e,dict=192MiB -T"${VTKBLOOM_JOBS:-2}" >"$1"
 }
-log "compressing (xz -9e, x86 filter)"
-pack "$dest/paraview-gpu.tar.xz" paraview-gpu.tar.xz
-size_mb=$(($(stat -c %s "$dest/paraview-gpu.tar.xz") / 1048576))
-if [ "$size_mb" -ge "$limit_mb" ]; then
-  log "one archive is $size_mb MiB, over $limit_mb: two parts"
-  rm -f "$dest/paraview-gpu.tar.xz"
+split_parts() { # the files in two lists of about equal size
   (cd "$stage" && find . ! -type d ! -name .vtkbloom-pv -printf '%s %p\n' | sort -n) >"$work/files.txt"
+  local half
   half=$(awk '{ s += $1 } END { print s / 2 }' "$work/files.txt")
-  awk -v h="$half" '{ s += $1; print $2 > (s <= h ? "'"$work"'/part1.txt" : "'"$work"'/part2.txt") }' \
+  awk -v h="$half" -v w="$work" '{ s += $1; print $2 > (s <= h ? w "/part1.txt" : w "/part2.txt") }' \
     "$work/files.txt"
-  pack "$dest/paraview-gpu-1.tar.xz" "paraview-gpu-1.tar.xz paraview-gpu-2.tar.xz" "$work/part1.txt"
-  pack "$dest/paraview-gpu-2.tar.xz" "paraview-gpu-1.tar.xz paraview-gpu-2.tar.xz" "$work/part2.txt"
+}
+two=(paraview-gpu-1.tar.xz paraview-gpu-2.tar.xz)
+if [ "${VTKBLOOM_PV_PARTS:-}" != 2 ]; then
+  log "compressing (xz -9e, x86 filter)"
+  manifest paraview-gpu.tar.xz
+  pack "$dest/paraview-gpu.tar.xz"
+  size_mb=$(($(stat -c %s "$dest/paraview-gpu.tar.xz") / 1048576))
+  if [ "$size_mb" -ge "$limit_mb" ]; then
+    log "one archive is $size_mb MiB, over $limit_mb: two parts"
+    rm -f "$dest/paraview-gpu.tar.xz"
+    VTKBLOOM_PV_PARTS=2
+  fi
+fi
+if [ "${VTKBLOOM_PV_PARTS:-}" = 2 ]; then
+  log "compressing two parts (xz -9e, x86 filter, one each on a core)"
+  split_parts
+  manifest "${two[*]}"
+  VTKBLOOM_JOBS=1 pack "$dest/${two[0]}" "$work/part1.txt" &
+  VTKBLOOM_JOBS=1 pack "$dest/${two[1]}" "$work/part2.txt"
+  wait
 fi
 ls -la "$dest" >&2
 
@@ -137,18 +156,21 @@ if [ "${VTKBLOOM_PV_CHECK:-1}" = 1 ]; then
   mesa=$work/mesa-gl
   rm -rf "$mesa" && mkdir -p "$mesa/lib" "$mesa/egl_vendor.d"
   cp "$sid"/usr/share/glvnd/egl_vendor.d/*mesa*.json "$mesa/egl_vendor.d/"
-  # glvnd's loaders, Mesa's EGL and gallium driver and what they need that the pack lacks.
+  # glvnd's loaders, Mesa's EGL and gallium driver and what they need (the pack may hold a stub
+  # of it: the real one in host-gl comes first), but glibc and the C++ runtime, the pack's.
   sid_run "for f in /usr/lib/x86_64-linux-gnu/{libEGL.so.1,libOpenGL.so.0,libGLdispatch.so.0,libEGL_mesa.so.0,libgallium-*.so}; do
       echo \$f; ldd \$f | awk '/=> \\// { print \$3 }'; done | sort -u" >"$work/mesa.txt"
   while read -r f; do
-    [ -e "$stage$f" ] || cp -L "$sid$f" "$mesa/lib/"
+    case $(basename "$f") in libc.so* | libm.so* | libstdc++* | libgcc_s* | ld-linux*) ;;
+      *) cp -L "$sid$f" "$mesa/lib/" ;; esac
   done <"$work/mesa.txt"
   rm -rf "$work/check-root" "$work/check-out"
   (cd "$root" && env -u DISPLAY VTKBLOOM_PV_ROOT="$work/check-root" VTKBLOOM_PV_HOST_GL="$mesa" \
     GPUS=2 VTKBLOOM_PV_DEVICES=1 SIZES=320x240 FRAMES=3 OUT="$work/check-out" \
     PACK_DIR="$dest" bash scripts/paraview-gpu-run.sh tests devices bench) >"$work/check.log" 2>&1 ||
     log "the check had failures (the devices step's NVIDIA checks fail on llvmpipe): $work/check.log"
-  grep -E '^(PASS|FAIL)|run_tests: ' "$work/check-out/tests.log" | grep -v '^PASS' >&2 || true
+  grep -E '^(PASS|FAIL)|run_tests: |vtk-bloom pack: ' "$work/check-out/tests.log" \
+    "$work/check-out/devices.md" "$work/check.log" | grep -v 'PASS' >&2 || true
   rm -rf "$work/check-root"
 fi
 log "done: $(ls "$dest")"

@@ -183,6 +183,7 @@ else
   libs=$(ldconfig -p | awk '{ print $NF }' | grep -E "/($gl_names)$" | sort -u)
   if [ -z "$libs" ] && ls .gl/*.deb >/dev/null 2>&1; then
     echo "paraview-gpu-run: the machine has no glvnd loader; Debian's from .gl/"
+    mkdir -p "$root/var/tmp/glvnd"
     for f in .gl/*.deb; do dpkg-deb -x "$f" "$root/var/tmp/glvnd"; done
     cp -a "$root"/var/tmp/glvnd/usr/lib/x86_64-linux-gnu/lib* "$hostgl/"
   fi

@@ -2,7 +2,7 @@
 """The file list of the ParaView GPU pack, from a traced run (scripts/paraview-gpu-pack.sh).
 
     python3 paraview_gpu_pack.py scan DB LD_DEBUG_FILE...
-    python3 paraview_gpu_pack.py stage ROOT DB STRACE_LOG STAGE EXTRA_LIST STUBS
+    python3 paraview_gpu_pack.py stage ROOT DB STRACE_LOG STAGE EXTRA_LIST STUBS [BUILD...]
 
 scan reads the dynamic loader's own log of a run (LD_DEBUG=files,reloc,bindings, one file a
 process) into DB (JSON, merged over calls):
@@ -11,7 +11,9 @@ process) into DB (JSON, merged over calls):
   it called, or was called through, a procedure linkage table after start-up (or dlsym found a
   symbol in it). Bindings made while an object's relocations are processed (data, vtables,
   function pointers) are load-time bindings, kept per target object with the symbol, its
-  version and the object that needed it. Bindings made while an object's initializers run
+  version and the object that needed it (an object relocated at once, RTLD_NOW or BIND_NOW,
+  binds its calls there too: its function bindings count as uses where it is kept). Bindings
+  made while an object's initializers run
   (static constructors) are kept per that object: they count only if it is kept;
 - dlopened: what dlopen loaded, and by whom.
 
@@ -55,6 +57,9 @@ GLIBC = ('libc.so.6', 'libm.so.6', 'libdl.so.2', 'libpthread.so.0', 'librt.so.1'
 
 BIND = re.compile(r"binding file (.*?) \[\d+\] to (.*?) \[\d+\]: (?:normal|protected) symbol "
                   r"`(.*?)'(?: \[(.*?)\])?")
+# The loader's lines that end a relocation or an initializer phase.
+MARKERS = ('relocation processing: ', 'calling init: ', 'calling fini: ', 'file=', 'opening file=',
+           'closing file=', 'transferring control: ', 'initialize program: ')
 DLOPEN = re.compile(r"file=(.*?) \[\d+\];\s+dynamically loaded by (.*?) \[\d+\]")
 
 
@@ -65,6 +70,7 @@ def scan(db_path, logs):
     dlopened = {tuple(x) for x in db.get('dlopened', [])}
     loadtime = {k: {tuple(x) for x in v} for k, v in db.get('loadtime', {}).items()}
     init = {k: set(v) for k, v in db.get('init', {}).items()}
+    eager = set(db.get('eager', []))
     for path in logs:
         current = owner = None
         with open(path, errors='replace') as f:
@@ -88,11 +94,15 @@ def scan(db_path, logs):
                         used.add(a)
                         used.add(b)
                     continue
+                if not text.startswith(MARKERS):
+                    continue  # a long binding line's continuation, or the loader's detail
                 current = owner = None
                 if text.startswith('relocation processing: '):
                     current = text[len('relocation processing: '):]
                     if current.endswith(' (lazy)'):
                         current = current[:-len(' (lazy)')]
+                    else:
+                        eager.add(current)  # RTLD_NOW or BIND_NOW: calls bound here too
                     loaded.add(current)
                     continue
                 if text.startswith('calling init: '):
@@ -103,7 +113,7 @@ def scan(db_path, logs):
                     dlopened.add(m.groups())
     db = {'loaded': sorted(loaded), 'used': sorted(used), 'dlopened': sorted(dlopened),
           'loadtime': {k: sorted(v) for k, v in loadtime.items()},
-          'init': {k: sorted(v) for k, v in init.items()}}
+          'init': {k: sorted(v) for k, v in init.items()}, 'eager': sorted(eager)}
     with open(db_path + '.tmp', 'w') as f:
         json.dump(db, f)
     os.replace(db_path + '.tmp', db_path)
@@ -148,15 +158,16 @@ class Root:
 
 
 def elf_info(path):
-    """(is ELF, SONAME, NEEDED list, e_type) of a file, by readelf."""
+    """(is ELF, SONAME, NEEDED list, e_type, BIND_NOW) of a file, by readelf."""
     with open(path, 'rb') as f:
         if f.read(4) != b'\x7fELF':
-            return False, None, [], None
+            return False, None, [], None, False
     out = subprocess.run(['readelf', '-dhW', path], capture_output=True, text=True).stdout
     soname = re.search(r'\(SONAME\)\s+Library soname: \[(.*?)\]', out)
     needed = re.findall(r'\(NEEDED\)\s+Shared library: \[(.*?)\]', out)
     kind = re.search(r'Type:\s+(\w+)', out)
-    return True, soname.group(1) if soname else None, needed, kind.group(1) if kind else None
+    now = bool(re.search(r'\(FLAGS\)\s+.*BIND_NOW|\(FLAGS_1\)\s+.*\bNOW\b', out))
+    return True, soname.group(1) if soname else None, needed, kind.group(1) if kind else None, now
 
 
 def dynamic_symbols(path):
@@ -256,7 +267,7 @@ def stub_source(real, soname, wanted):
     return source, version_script
 
 
-def stage(root_dir, db_path, strace_log, stage_dir, extra_list, stubs_dir):
+def stage(root_dir, db_path, strace_log, stage_dir, extra_list, stubs_dir, *builds):
     root = Root(root_dir)
     db = json.load(open(db_path))
     os.makedirs(stage_dir, exist_ok=True)
@@ -311,7 +322,7 @@ def stage(root_dir, db_path, strace_log, stage_dir, extra_list, stubs_dir):
     def fact(path):
         if path not in facts:
             host = root.host(path)
-            facts[path] = elf_info(host) if os.path.isfile(host) else (False, None, [], None)
+            facts[path] = elf_info(host) if os.path.isfile(host) else (False, None, [], None, False)
             if facts[path][1]:
                 by_soname.setdefault(facts[path][1], path)
         return facts[path]
@@ -349,15 +360,59 @@ def stage(root_dir, db_path, strace_log, stage_dir, extra_list, stubs_dir):
         p = needed_path(lib, None)
         if p:
             roots.add(p)
+    # The project's own objects (the plugin, the vtkbloom package, vtk-bloom), which the pack
+    # script copies: what they name from the root is carried as a program's needs are.
+    for build_dir in builds:
+        for directory, _, files in os.walk(build_dir):
+            if '/CMakeFiles' in directory:
+                continue
+            for name in files:
+                path = os.path.join(directory, name)
+                if os.path.islink(path) or not ('.so' in name or name == 'vtk-bloom'):
+                    continue
+                info = elf_info(path)
+                for soname in info[2] if info[0] else []:
+                    if os.path.exists(os.path.join(directory, soname)):
+                        continue  # the project's own, beside it
+                    child = needed_path(soname, None)
+                    if child and not is_gl(child):
+                        roots.add(child)
 
     # Initializers: what an object's initializers called is used if that object is kept.
     init = {}
     for owner, touched in db.get('init', {}).items():
         init.setdefault(canon(owner), set()).update(canon(t) for t in touched)
+    # An object linked with BIND_NOW binds every function it calls while it is relocated, so
+    # its load-time bindings may be calls: they count as uses where it is kept.
+    # So does an object relocated at once (dlopen with RTLD_NOW, as Python imports its
+    # extension modules, and what they bring in): its bindings of functions may be calls.
+    eager_objects = {canon(p) for p in db.get('eager', [])}
+    functions = {}
+
+    def is_function(target, symbol, version):
+        if target not in functions:
+            host = root.host(target)
+            functions[target] = {k for k, v in dynamic_symbols(host).items()
+                                 if v[0] in ('FUNC', 'IFUNC')} if os.path.isfile(host) else set()
+        return (symbol, version) in functions[target] or (symbol, '') in functions[target]
+
+    eager = {}
+    for target, entries in loadtime.items():
+        for symbol, version, by in entries:
+            by_c = canon(by) if '/' in by else None
+            if by_c and (by_c in eager_objects or (root.exists(by_c) and fact(by_c)[4])) and \
+                    target not in eager.get(by_c, ()) and is_function(target, symbol, version):
+                eager.setdefault(by_c, set()).add(target)
+    # Plugins that a library loads to probe a device or a transport (hwloc's, Open MPI's, UCX's,
+    # PMIx's; not Python's extension modules): what they name is carried as it is, since a probe
+    # that found nothing in the trace (hwloc's OpenCL plugin on llvmpipe) may call it elsewhere.
+    probes = {r for r in roots if fact(r)[3] == 'DYN' and '/python3' not in r and
+              not r.endswith(tuple(GLIBC)) and '/bin/' not in r}
     keep, gl_out = set(), set()
     while True:
         stubs = set()
-        live = used | roots | set().union(*(init.get(k, set()) for k in keep)) if keep else used | roots
+        live = used | roots | set().union(set(), *(init.get(k, set()) | eager.get(k, set())
+                                                    for k in keep))
         pending, seen = sorted(roots), set()
         kept = set()
         while pending:
@@ -373,7 +428,7 @@ def stage(root_dir, db_path, strace_log, stage_dir, extra_list, stubs_dir):
                     continue
                 if is_gl(child):
                     gl_out.add(child)
-                elif child in live or child not in loaded:
+                elif child in live or child not in loaded or p in probes:
                     # Used, or not loaded in the trace at all (needed by an object that was,
                     # never reached there): the real one, to be safe.
                     pending.append(child)
@@ -410,16 +465,20 @@ def stage(root_dir, db_path, strace_log, stage_dir, extra_list, stubs_dir):
     def skipped(path):
         return path.startswith(SKIP_PREFIX) or path.startswith(GL_DATA)
 
-    # The objects.
+    # The objects, and the names the programs were run by (python3 -> python3.14).
     for p in sorted(keep):
         add(p)
+    for p in sorted(executed):
+        if canon(p) in keep:
+            add(p)
     plan_stubs = {}
     for p in sorted(stubs):
         real = add(p)
         if real is None:
             continue
         soname = fact(p)[1] or os.path.basename(p)
-        wanted = {(s, v) for s, v, by in loadtime.get(p, []) if canon(by) in keep}
+        # The main program is named as it was run (no '/'): it is kept.
+        wanted = {(s, v) for s, v, by in loadtime.get(p, []) if '/' not in by or canon(by) in keep}
         source, script = stub_source(root.host(real), soname, wanted)
         key = re.sub(r'[^A-Za-z0-9_.-]', '_', real.lstrip('/'))
         with open(os.path.join(stubs_dir, key + '.S'), 'w') as f:
@@ -478,6 +537,6 @@ if __name__ == '__main__':
     if sys.argv[1] == 'scan':
         scan(sys.argv[2], sys.argv[3:])
     elif sys.argv[1] == 'stage':
-        stage(*sys.argv[2:8])
+        stage(*sys.argv[2:])
     else:
-        sys.exit('usage: paraview_gpu_pack.py scan DB LOG... | stage ROOT DB STRACE STAGE EXTRA STUBS')
+        sys.exit('usage: paraview_gpu_pack.py scan DB LOG... | stage ROOT DB STRACE STAGE EXTRA STUBS [BUILD]')
