@@ -18,9 +18,9 @@
 #             each rank's EGL device, CUDA device and GPU UUID asked of its own context and
 #             nvidia-smi's process list taken while every rank holds its context; the N-rank
 #             image against the 1-rank one, and against $REFERENCE/hdr-400-300.png if given
-#   bench     bench.md: bloom_gpu_timing.py with one rank per GPU at $SIZES (default 1920x1080
-#             3840x2160 7680x4320), $FRAMES frames a mode (default 100); bench.jsonl: the raw
-#             records
+#   bench     bench.md: bloom_gpu_timing.py with one rank per GPU (or $RANKS, a list: "2 4"
+#             ranks share the GPUs round-robin) at $SIZES (default 1920x1080 3840x2160
+#             7680x4320), $FRAMES frames a mode (default 100); bench.jsonl: the raw records
 # Besides: run.log (everything printed) and images.tar.gz (the checks' and devices' images).
 # GPUS (default: the cards nvidia-smi lists) sets the ranks of devices and bench.
 #
@@ -103,14 +103,16 @@ inside() {
         [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
         ;;
       bench)
-        echo "== bench: one rank per GPU, ${SIZES:-1920x1080 3840x2160 7680x4320}, ${FRAMES:-100} frames"
+        echo "== bench: ${RANKS:-$gpus} rank(s) on $gpus GPU(s), ${SIZES:-1920x1080 3840x2160 7680x4320}, ${FRAMES:-100} frames"
         : >"$out/bench.jsonl"
-        for size in ${SIZES:-1920x1080 3840x2160 7680x4320}; do
-          timeout 900 bash scripts/pvbatch.sh -n "$gpus" --opengl-window-backend=EGL \
-            --displays="$(displays "$gpus")" --displays-assignment-mode=round-robin \
-            ParaView/Testing/bloom_gpu_timing.py \
-            "${size%x*}" "${size#*x}" "${FRAMES:-100}" 2>&1 | grep '^timing-json ' |
-            sed 's/^timing-json //' | tee -a "$out/bench.jsonl"
+        for ranks in ${RANKS:-$gpus}; do
+          for size in ${SIZES:-1920x1080 3840x2160 7680x4320}; do
+            timeout 900 bash scripts/pvbatch.sh -n "$ranks" --opengl-window-backend=EGL \
+              --displays="$(displays "$ranks")" --displays-assignment-mode=round-robin \
+              ParaView/Testing/bloom_gpu_timing.py \
+              "${size%x*}" "${size#*x}" "${FRAMES:-100}" 2>&1 | grep '^timing-json ' |
+              sed "s/^timing-json {/{\"gpus\": $gpus, /" | tee -a "$out/bench.jsonl"
+          done
         done
         /usr/bin/python3 ParaView/Testing/bloom_gpu_report.py bench "$out/bench.jsonl" |
           tee "$out/bench.md"
@@ -243,7 +245,7 @@ unshare -m --propagation private -- /bin/bash -c '
   [ -z "$reference" ] || mount --bind "$reference" "$root/reference"
   exec chroot "$root" /usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb \
     PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin LD_LIBRARY_PATH=/usr/lib/host-gl \
-    SIZES="${SIZES:-}" FRAMES="${FRAMES:-}" REFERENCE="${reference:+/reference}" \
+    SIZES="${SIZES:-}" FRAMES="${FRAMES:-}" RANKS="${RANKS:-}" REFERENCE="${reference:+/reference}" \
     VTKBLOOM_PV_DEVICES="${VTKBLOOM_PV_DEVICES:-}" \
     /bin/bash "$src/scripts/paraview-gpu-run.sh" --inside "$src" /out "$@"
 ' paraview-gpu-run "$root" "$OUT" "$checkout" "$src" "${REFERENCE:+$(cd "$REFERENCE" && pwd)}" \

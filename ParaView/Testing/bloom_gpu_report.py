@@ -127,7 +127,7 @@ MODES = {'plain': 'bloom off', 'bloom-8bit': 'bloom, 8-bit composite',
 
 def bench(paths):
     records = [json.loads(line) for p in paths for line in open(p) if line.startswith('{')]
-    records.sort(key=lambda r: (r['width'] * r['height'], r['ranks'],
+    records.sort(key=lambda r: (r['width'] * r['height'], r.get('gpus', r['ranks']), r['ranks'],
                                 list(MODES).index(r['mode'])))
 
     def ms(r, key, what='mean'):
@@ -137,8 +137,8 @@ def bench(paths):
           'composite | IceT collect | bloom (GPU) | IceT MB sent, rank 0 | frames |')
     print('|---:|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|')
     for r in records:
-        print('| %d | %dx%d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %d |' % (
-            r['ranks'], r['width'], r['height'], MODES[r['mode']], ms(r, 'frame'),
+        print('| %d (%d) | %dx%d | %s | %s | %s | %s | %s | %s | %s | %s | %s | %d |' % (
+            r.get('gpus', r['ranks']), r['ranks'], r['width'], r['height'], MODES[r['mode']], ms(r, 'frame'),
             ms(r, 'frame', 'p99'), ms(r, 'frame', 'max'), ms(r, 'icet_render'),
             ms(r, 'icet_composite'), ms(r, 'icet_collect'), ms(r, 'bloom_gpu'),
             '%.1f' % (r['icet_bytes']['mean'] / 1e6) if r.get('icet_bytes') else '–',
