@@ -43,6 +43,25 @@ vtkStandardNewMacro(vtkBloomPass);
 
 namespace
 {
+// The part of the framebuffer the pass was called with that it renders: the renderer's tile of
+// the window, or, where a pass above it renders into a framebuffer of its own (vtkSSAAPass at a
+// larger size), the whole of that framebuffer, as vtkCameraPass does.
+void RenderedPart(const vtkRenderState* s, int& x, int& y, int& w, int& h)
+{
+  x = y = 0;
+  if (s->GetFrameBuffer())
+  {
+    int size[2];
+    s->GetWindowSize(size);
+    w = size[0];
+    h = size[1];
+  }
+  else
+  {
+    s->GetRenderer()->GetTiledSizeAndOrigin(&w, &h, &x, &y);
+  }
+}
+
 // A scene read back from a render that wrote its emission in the alpha (an emitting fragment
 // has alpha 1 + weight, vtkBloomPassEmission): the scene, with its alpha at most 1, or
 // (`emission`) the emission, the colour times the weight.
@@ -59,7 +78,6 @@ void vtkBloomPassDecodeEmission(vtkImageData* image, bool emission)
     rgba[3] = emission ? weight : std::min(rgba[3], 1.0f);
   }
 }
-
 }
 
 //------------------------------------------------------------------------------
@@ -709,21 +727,8 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     vtkErrorMacro(<< "vtkBloomPass needs a vtkOpenGLRenderWindow.");
     return;
   }
-  // The part of the framebuffer the pass was called with that it renders: the renderer's tile
-  // of the window, or, where a pass above it renders into a framebuffer of its own (vtkSSAAPass
-  // at a larger size), the whole of that framebuffer, as vtkCameraPass does.
-  int x = 0, y = 0, w, h;
-  if (s->GetFrameBuffer())
-  {
-    int size[2];
-    s->GetWindowSize(size);
-    w = size[0];
-    h = size[1];
-  }
-  else
-  {
-    r->GetTiledSizeAndOrigin(&w, &h, &x, &y);
-  }
+  int x, y, w, h;
+  RenderedPart(s, x, y, w, h);
   if (w <= 0 || h <= 0)
   {
     return;

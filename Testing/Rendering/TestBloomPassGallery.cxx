@@ -22,9 +22,9 @@
 // Each configuration prints one table line, appends it to $VTKBLOOM_GALLERY_CSV when set, and
 // writes `<configuration>.png` (plain | bloom with the emitter) to $VTKBLOOM_GALLERY_PNG_DIR;
 // $VTKBLOOM_GALLERY_DEBUG_DIR receives plain | after and plain | before.
-// The file is long because it is a catalogue: 36 short scene builders (each under 60 lines,
-// read one at a time) and the one test that runs them; the measuring and the support live in
-// Testing/Support/vtkBloomGallery.{h,cxx}.
+// The file is long because it is a catalogue: 29 short scene builders for 36 configurations
+// (each builder under 60 lines, read one at a time) and the one test that runs them; the
+// measuring and the support live in Testing/Support/vtkBloomGallery.{h,cxx}.
 #include "vtkBloomGallery.h"
 
 #include "vtkActor.h"
