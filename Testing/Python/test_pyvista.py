@@ -26,6 +26,7 @@ except ImportError:
         raise SystemExit("PyVista is not installed, and CI's VTK 9.6 leg has it (python3-pyvista)")
 
 import vtkbloom
+from test_scene import chain  # the pass classes of a renderer's chain, top down
 
 if pv is not None:
     pv.OFF_SCREEN = True
@@ -43,15 +44,6 @@ EFFECTS = {
 # mapping.
 SCENE_PASSES = {"vtkSSAOPass", "vtkEDLShading", "vtkDepthOfFieldPass", "vtkCameraPass"}
 RESOLVE_PASSES = {"vtkSSAAPass", "vtkToneMappingPass"}
-
-
-def chain(renderer):
-    names, current = [], renderer.GetPass()
-    while current is not None:
-        names.append(current.GetClassName())
-        get = getattr(current, "GetDelegatePass", None)
-        current = get() if get else None
-    return names
 
 
 def plotter(**kwargs):
