@@ -19,7 +19,6 @@ set -euo pipefail
 project=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 cache=${VTKBLOOM_CACHE:-$HOME/.cache/vtk-bloom}
 root=${VTKBLOOM_SID_ROOT:-$cache/sid-root}
-mirror=http://deb.debian.org/debian
 
 packages=(
   build-essential cmake ninja-build pkg-config ccache git
@@ -35,28 +34,10 @@ stamp_text="${packages[*]}"
 SUDO=""
 [ "$(id -u)" -ne 0 ] && SUDO="sudo"
 
-# debootstrap from sid's own archive, unpacked into a temporary folder, with a private apt state
-# so that the host's apt lists and sources are not touched.
+# The bare root: debootstrap of sid (scripts/lib/debootstrap.sh).
+source "$project/scripts/lib/debootstrap.sh"
 bootstrap() {
-  local tmp
-  tmp=$(mktemp -d)
-  trap 'rm -rf "$tmp"' RETURN
-  mkdir -p "$tmp/lists/partial" "$tmp/cache/archives/partial"
-  echo "deb $mirror sid main" >"$tmp/sources.list"
-  local apt_opts=(-o "Dir::State::Lists=$tmp/lists" -o "Dir::Etc::SourceList=$tmp/sources.list"
-    -o "Dir::Etc::SourceParts=/dev/null" -o "Dir::Cache=$tmp/cache"
-    -o "Acquire::Check-Valid-Until=false")
-  echo "sid-root: fetching debootstrap" >&2
-  apt-get "${apt_opts[@]}" update -q >&2
-  (cd "$tmp" && apt-get "${apt_opts[@]}" download debootstrap >&2)
-  dpkg -x "$tmp"/debootstrap_*.deb "$tmp/debootstrap"
-  echo "sid-root: debootstrap sid into $root" >&2
-  rm -rf "$root.tmp"
-  $SUDO env DEBOOTSTRAP_DIR="$tmp/debootstrap/usr/share/debootstrap" \
-    "$tmp/debootstrap/usr/sbin/debootstrap" --variant=minbase \
-    --keyring=/usr/share/keyrings/debian-archive-keyring.gpg sid "$root.tmp" "$mirror" >&2
-  # sid's Release file can carry a Valid-Until earlier than the clock.
-  echo 'Acquire::Check-Valid-Until "false";' | $SUDO tee "$root.tmp/etc/apt/apt.conf.d/99vtkbloom" >/dev/null
+  debootstrap_into sid "$root.tmp" sid-root || exit 1
   $SUDO mv "$root.tmp" "$root"
 }
 

@@ -32,36 +32,16 @@ start=$SECONDS
 SUDO=""
 [ "$(id -u)" -ne 0 ] && SUDO="sudo"
 
-# The bare root: debootstrap of the suite's own archive, unpacked into a temporary folder,
-# with a private apt state so that the host's apt lists and sources are not touched.
+# The bare root (scripts/lib/debootstrap.sh), with the updates and security archives a Debian 12
+# system has.
+source "$root/scripts/lib/debootstrap.sh"
 bootstrap() {
-  local tmp
-  tmp=$(mktemp -d)
-  trap 'rm -rf "$tmp"' RETURN
-  mkdir -p "$tmp/lists/partial" "$tmp/cache/archives/partial"
-  echo "deb $mirror $suite main" >"$tmp/sources.list"
-  local apt_opts=(-o "Dir::State::Lists=$tmp/lists" -o "Dir::Etc::SourceList=$tmp/sources.list"
-    -o "Dir::Etc::SourceParts=/dev/null" -o "Dir::Cache=$tmp/cache"
-    -o "Acquire::Check-Valid-Until=false" -o "APT::Sandbox::User=root")
-  echo "test-deb: fetching debootstrap ($suite)"
-  apt-get "${apt_opts[@]}" update -q >/dev/null
-  (cd "$tmp" && apt-get "${apt_opts[@]}" download debootstrap >/dev/null)
-  dpkg -x "$tmp"/debootstrap_*.deb "$tmp/debootstrap"
-  echo "test-deb: debootstrap --variant=minbase $suite into $bare"
-  $SUDO rm -rf "$bare.tmp"
-  $SUDO env DEBOOTSTRAP_DIR="$tmp/debootstrap/usr/share/debootstrap" \
-    "$tmp/debootstrap/usr/sbin/debootstrap" --variant=minbase \
-    --keyring=/usr/share/keyrings/debian-archive-keyring.gpg "$suite" "$bare.tmp" "$mirror" \
-    >"$tmp/debootstrap.log" || { tail -n 20 "$tmp/debootstrap.log" >&2; return 1; }
-  # A Debian 12 system has its updates and security archives too; sid's Release file can carry
-  # a Valid-Until earlier than the clock.
+  debootstrap_into "$suite" "$bare.tmp" test-deb || return 1
   if [ "$suite" = bookworm ]; then
     { echo "deb $mirror bookworm-updates main"
       echo "deb http://deb.debian.org/debian-security bookworm-security main"; } |
       $SUDO tee -a "$bare.tmp/etc/apt/sources.list" >/dev/null
   fi
-  echo 'Acquire::Check-Valid-Until "false";' |
-    $SUDO tee "$bare.tmp/etc/apt/apt.conf.d/99vtkbloom" >/dev/null
   $SUDO rm -rf "$bare.tmp/var/cache/apt/archives"/*.deb
   $SUDO mv "$bare.tmp" "$bare"
 }
