@@ -111,6 +111,10 @@ class PyVistaPlotter(unittest.TestCase):
         first, last = on_plane.min(), on_plane.max()
         span = last - first
         self.assertGreater(glow[rows, first + int(0.8 * span) : last].min(), 20)
+        # The plane's own left edge (columns first, first + 1) is left out: this emitter
+        # renders a second time, and with two renders the pass composites the resolved scene
+        # into every sample, so that edge is up to 67 levels off as the window presents it (the
+        # per-sample edge pass runs with one render only; docs/rendering.md).
         self.assertLessEqual(glow[rows, first + 2 : first + int(0.45 * span)].max(), 1)
         vtkbloom.remove_emitter(p, actor)  # the actor removes its range emitters
         self.assertEqual(vtkbloom.get_bloom(p).GetEmitters().GetNumberOfItems(), 0)
