@@ -135,6 +135,7 @@ public:
     this->Runner.CompositeOver = r->Transparent();
     self->LastAnnotationsOverBloom =
       !self->BloomAnnotations && this->Steps.DetachOverlay(self->DelegatePass) > 0;
+    this->Steps.RemoveHiddenLines(s, self->DelegatePass);
     const bool oit =
       this->Steps.WrapTranslucency(s, self->DelegatePass) == vtkBloomPassSteps::ORDER_INDEPENDENT;
     vtkRenderPass* processing = vtkBloomPassSteps::FindImageProcessing(self->DelegatePass);

@@ -67,7 +67,9 @@
  * directly, without bloom, so the ids reach the selector untouched. Translucent geometry is
  * drawn as the renderer draws it without a pass: a vtkRenderStepsPass's plain translucent step
  * is wrapped, while the scene renders, in depth peeling (the renderer's UseDepthPeeling, its
- * peels and occlusion ratio) or in order-independent transparency. VTK applies a renderer's
+ * peels and occlusion ratio) or in order-independent transparency; where the renderer removes
+ * hidden lines (UseHiddenLineRemoval), its plain opaque step draws as the renderer's own does,
+ * through a vtkHiddenLineRemovalPass. VTK applies a renderer's
  * FXAA (UseFXAA) only where the renderer has no pass: where this pass is the renderer's own, it
  * applies it as the renderer would, after the composite and before the annotations. It never
  * runs inside the scene render, where a delegate that renders through the renderer (ParaView's)

@@ -6,10 +6,12 @@
 #include "vtkCameraPass.h"
 #include "vtkDepthPeelingPass.h"
 #include "vtkDualDepthPeelingPass.h"
+#include "vtkHiddenLineRemovalPass.h"
 #include "vtkImageProcessingPass.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
+#include "vtkOpaquePass.h"
 #include "vtkOrderIndependentTranslucentPass.h"
 #include "vtkOverlayPass.h"
 #include "vtkProp.h"
@@ -197,6 +199,43 @@ vtkBloomPassSteps::Translucency vtkBloomPassSteps::WrapTranslucency(
 }
 
 //------------------------------------------------------------------------------
+bool vtkBloomPassSteps::RemoveHiddenLines(const vtkRenderState* s, vtkRenderPass* delegate)
+{
+  // As vtkOpenGLRenderer::DeviceRenderOpaqueGeometry: only where some actor is a wireframe.
+  if (!s->GetRenderer()->GetUseHiddenLineRemoval() ||
+    !vtkHiddenLineRemovalPass::WireframePropsExist(s->GetPropArray(), s->GetPropArrayCount()))
+  {
+    return false;
+  }
+  vtkRenderStepsPass* found = nullptr;
+  Walk(delegate, nullptr, -1, 0,
+    [&found](vtkRenderPass* pass, vtkSequencePass*, int)
+    {
+      auto* steps = vtkRenderStepsPass::SafeDownCast(pass);
+      vtkRenderPass* step = steps ? steps->GetOpaquePass() : nullptr;
+      // Only VTK's plain step: a user's own opaque step is theirs.
+      if (!found && step && std::strcmp(step->GetClassName(), "vtkOpaquePass") == 0)
+      {
+        found = steps;
+      }
+    });
+  if (!found)
+  {
+    return false;
+  }
+  if (!this->HiddenLines)
+  {
+    this->HiddenLines = vtkSmartPointer<vtkHiddenLineRemovalPass>::New();
+  }
+  Slot slot;
+  slot.Steps = found;
+  slot.Pass = found->GetOpaquePass();
+  this->Opaques.push_back(slot);
+  found->SetOpaquePass(this->HiddenLines);
+  return true;
+}
+
+//------------------------------------------------------------------------------
 vtkRenderPass* vtkBloomPassSteps::FindImageProcessing(vtkRenderPass* delegate)
 {
   vtkRenderPass* found = nullptr;
@@ -231,6 +270,11 @@ void vtkBloomPassSteps::Restore()
     slot.Steps->SetTranslucentPass(slot.Pass);
   }
   this->Translucents.clear();
+  for (Slot& slot : this->Opaques)
+  {
+    slot.Steps->SetOpaquePass(slot.Pass);
+  }
+  this->Opaques.clear();
 }
 
 //------------------------------------------------------------------------------

@@ -22,6 +22,11 @@
  * (with the renderer's peels and occlusion ratio), so that the bloomed frame's translucency is the
  * frame the renderer draws without a pass. A step the user set up otherwise is left as it is.
  *
+ * Hidden lines. vtkOpenGLRenderer removes the hidden lines of wireframe actors
+ * (UseHiddenLineRemoval) with a vtkHiddenLineRemovalPass in place of its opaque geometry; a
+ * vtkRenderStepsPass's plain vtkOpaquePass draws every line. RemoveHiddenLines() puts the
+ * renderer's step in its place while the scene renders.
+ *
  * FXAA. The renderer's own FXAA runs inside its geometry step; RendererFXAAOff keeps it out of
  * the scene render.
  */
@@ -33,6 +38,7 @@
 
 #include <vector>
 
+class vtkHiddenLineRemovalPass;
 class vtkRenderPass;
 class vtkRenderState;
 class vtkRenderer;
@@ -72,6 +78,13 @@ public:
     DEPTH_PEELING
   };
   Translucency WrapTranslucency(const vtkRenderState* s, vtkRenderPass* delegate);
+
+  /**
+   * Where the renderer removes hidden lines and `s` has a wireframe actor, draw the first plain
+   * opaque step of `delegate` as the renderer draws its own opaque geometry then (a
+   * vtkHiddenLineRemovalPass); true where it did.
+   */
+  bool RemoveHiddenLines(const vtkRenderState* s, vtkRenderPass* delegate);
 
   /**
    * The first image-processing pass among the delegate's steps (vtkSSAOPass, vtkToneMappingPass,
@@ -122,6 +135,8 @@ private:
   };
   std::vector<Slot> Overlays;
   std::vector<Slot> Translucents;
+  std::vector<Slot> Opaques;
+  vtkSmartPointer<vtkHiddenLineRemovalPass> HiddenLines; ///< the renderer's opaque step with HLR
   vtkSmartPointer<vtkSequencePass> Empty; ///< stands in for an overlay taken from a sequence
   /// The renderer's kind of translucency around the first plain translucent step, kept while
   /// the kind (Peeling: depth peeling, else OIT) and the step stay the same.

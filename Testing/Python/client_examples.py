@@ -131,6 +131,18 @@ def compare(plain, bloomed):
     return result
 
 
+def light_in(plotter):
+    """Whether the last bloomed frame had light: some pass of the plotter ran its chain. A pass
+    skips the chain exactly when no value of its scene exceeds the threshold (at the defaults,
+    1: display white), so a frame without light is left as the renderer drew it, and any change
+    there is the pass's fault."""
+    import vtkbloom
+
+    passes = vtkbloom.get_bloom(plotter)
+    passes = passes if isinstance(passes, list) else [passes]
+    return any(p is not None and not p.GetLastBloomSkipped() for p in passes)
+
+
 def save_images(folder, stem, plain, bloomed):
     import numpy as np
 
@@ -265,6 +277,8 @@ class Child:
             self.mark("bloom" if self.bloom else "plain")
             bloomed = self.grab(plotter)
             repeat = self.grab(plotter)
+            if self.bloom:
+                record["light"] = light_in(plotter)
             record["bloom_stable"] = bool(bloomed.shape == repeat.shape and (bloomed == repeat).all())
             if bloomed.shape != plain.shape:
                 record["error"] = "the bloomed frame is %s, the plain frame %s" % (bloomed.shape, plain.shape)
@@ -685,6 +699,9 @@ def judge(example, args, out, python, env):
         verdict["changed_fraction"] = worst.get("changed_fraction", 1.0)
         verdict["max_diff"] = max(s.get("max_diff", 255) for s in shows)
         verdict["within"] = all(s.get("changed_fraction", 1.0) <= CHANGED_LIMIT for s in shows)
+        # Light: some bloomed frame had a value above the threshold (a highlight above display
+        # white, which the 8-bit plain frame clips). Without it the frame must be the plain one.
+        verdict["light"] = any(s.get("light") for s in shows)
     example["verdict"] = verdict
     example["seconds"] = time.time() - started
     return example
@@ -756,6 +773,10 @@ def summarize(report):
     }
     within = [e for e in groups["deterministic"] if e["verdict"].get("within")]
     share = len(within) / len(groups["deterministic"]) if groups["deterministic"] else 0.0
+    # Where no frame had light, the bloomed frame is the plain one within a level.
+    dark = [e for e in groups["deterministic"] if not e["verdict"].get("light")]
+    dark_off = [e for e in dark if e["verdict"].get("max_diff", 255) > 1]
+    groups["dark_off"] = dark_off
     report["figures"] = {
         "found": len(report["population"]),
         "skipped_before_running": {k: len(v) for k, v in sorted(before.items())},
@@ -774,6 +795,9 @@ def summarize(report):
         "gl_errors_without_bloom": len(groups["gl_plain"]),
         "vtk_errors_with_bloom_only": len(groups["vtk"]),
         "differ": len(groups["differ"]),
+        "differ_with_light": sum(1 for e in groups["differ"] if e["verdict"].get("light")),
+        "without_light": len(dark),
+        "without_light_off_by_more_than_1_level": len(dark_off),
         "target_met": share >= TARGET and not groups["bloom_failures"] and not groups["gl"],
     }
     return before, at_run, groups
@@ -818,6 +842,10 @@ def markdown(report, out):
         "| GL errors without bloom (VTK's or the client's own; below) | %d |" % f["gl_errors_without_bloom"],
         "| other VTK errors and warnings with bloom and not without | %d |" % f["vtk_errors_with_bloom_only"],
         "| bloomed frame differs from the plain frame (some pixel > %d levels) | %d |" % (LEVELS, f["differ"]),
+        "| ... of which have light (a value above the threshold: the pass ran its chain) | %d |" % f["differ_with_light"],
+        "| deterministic, with no light in any frame | %d |" % f["without_light"],
+        "| ... **of which any pixel is more than 1 level off** (target: none) | **%d** |"
+        % f["without_light_off_by_more_than_1_level"],
         "",
         "## Skipped, and why",
         "",
@@ -832,18 +860,19 @@ def markdown(report, out):
               "(the worst show() of the example); brighter: the share of those brighter with bloom; "
               "thin: the share with no 3 x 3 block of changed pixels around them (edges of lines, "
               "text, anti-aliasing)." % LEVELS, "",
-              "| example | show | changed | max | brighter | thin | same frame twice | the pass warns | images |",
-              "|---|---:|---:|---:|---:|---:|---|---|---|"]
+              "| example | show | changed | max | brighter | thin | light | same frame twice | the pass warns | images |",
+              "|---|---:|---:|---:|---:|---:|---|---|---|---|"]
     for e in groups["differ"]:
         v = e["verdict"]
         worst = next(s for s in e["bloom"]["shows"] if s["show"] == v["worst_show"])
         images = worst.get("images") or next((s.get("images") for s in e["bloom"]["shows"] if s.get("images")), None)
         link = os.path.relpath(os.path.dirname(images["plain"]), out) if images else ""
-        lines.append("| `%s` | %d | %.3f %% | %d | %s | %s | %s | %s | %s |" % (
+        lines.append("| `%s` | %d | %.3f %% | %d | %s | %s | %s | %s | %s | %s |" % (
             e["name"], v["worst_show"], 100 * v["changed_fraction"], v["max_diff"],
             "%.0f %%" % (100 * worst["brighter_share"]) if worst.get("brighter_share") is not None else "",
             "%.0f %%" % (100 * worst["thin_share"]) if worst.get("thin_share") is not None else "",
-            "yes" if v.get("deterministic") else "no", "; ".join(v.get("pass_warnings", [])), link))
+            "yes" if v.get("light") else "no", "yes" if v.get("deterministic") else "no",
+            "; ".join(v.get("pass_warnings", [])), link))
     sections = (
         ("Errors with bloom only", groups["bloom_failures"],
          lambda e: "%s (log: %s)" % (e["verdict"]["bloom_failure"], os.path.relpath(e["bloom"]["log"], out))),
@@ -864,6 +893,10 @@ def markdown(report, out):
             lines += ["", "## Other VTK errors and warnings with bloom only", ""]
             lines += ["- %d examples: %s (%s)" % (len(listed_), message[:400], names(listed_, 4))
                       for message, listed_ in sorted(by_message.items(), key=lambda m: -len(m[1]))] or ["None."]
+    lines += ["", "## No light, yet more than 1 level off", "",
+              "\n".join("- `%s`: %d levels, %.3f %% of the pixels > %d" % (
+                  e["name"], e["verdict"]["max_diff"], 100 * e["verdict"]["changed_fraction"], LEVELS)
+                  for e in groups["dark_off"]) or "None."]
     lines += ["", "## Not the same frame twice without bloom", "", names(groups["nondeterministic"], 1000) or "None."]
     lines += ["", "## Ran, but reached no show()", "", names(groups["no_frame"], 1000) or "None."]
     return "\n".join(lines) + "\n"

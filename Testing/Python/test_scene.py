@@ -185,6 +185,25 @@ class AddBloom(unittest.TestCase):
         self.assertLessEqual(abs(bloomed.mean() - plain.mean()), 1.0)
         vtkbloom.remove_bloom(renderer)
 
+    def test_hidden_lines_stay_hidden(self):
+        # vtkOpenGLRenderer removes the hidden lines of wireframe actors itself, not through a
+        # pass: a wireframe sphere in front of nothing shows its front half only, with bloom too.
+        window, (actor,) = scene(size=(160, 120))
+        actor.GetProperty().SetRepresentationToWireframe()
+        actor.GetProperty().SetLineWidth(2)
+        renderer = window.GetRenderers().GetFirstRenderer()
+        visible = grab(window)
+        renderer.UseHiddenLineRemovalOn()
+        plain = grab(window)
+        # The check can fail: the hidden lines are a visible part of the frame.
+        self.assertGreater((np.abs(visible - plain).max(axis=-1) > 8).mean(), 0.02)
+        vtkbloom.add_bloom(renderer)
+        bloomed = grab(window)
+        self.assertLessEqual(np.abs(bloomed - plain).max(), 1)
+        renderer.UseHiddenLineRemovalOff()
+        self.assertLessEqual(np.abs(grab(window) - visible).max(), 1)
+        vtkbloom.remove_bloom(renderer)
+
     def test_remove_bloom_puts_fxaa_back(self):
         window, _ = scene()
         renderer = window.GetRenderers().GetFirstRenderer()
