@@ -9,6 +9,7 @@
 
 #include "vtkBloomPassBackground.h"
 #include "vtkBloomPassChainRunner.h"
+#include "vtkBloomPassDepth.h"
 #include "vtkBloomPassEmission.h"
 #include "vtkBloomPassFFT.h"
 #include "vtkBloomPassPSFSplit.h"
@@ -158,6 +159,7 @@ public:
     }
     this->FXAA->Execute(renderer);
   }
+  vtkBloomPassDepth Depth;       ///< the scene's depth, written where the frame is composited
   vtkBloomPassFFT FFT;           ///< PSF mode's convolution
   vtkBloomPassPSFSplit PSFSplit; ///< a split PSF's (PSFTailScale > 1, a tail left)
   bool UsePSFSplit = false;      ///< the current PSFs are split
@@ -280,6 +282,7 @@ public:
       this->FXAA->ReleaseGraphicsResources();
     }
     this->Steps.ReleaseGraphicsResources(w);
+    this->Depth.ReleaseGraphicsResources(w);
     this->FFT.ReleaseGraphicsResources(w);
     this->PSFSplit.ReleaseGraphicsResources(w);
     this->Runner.ReleaseGraphicsResources(w);
@@ -817,6 +820,9 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   {
     in.KeepFramebuffer(state, x, y, w, h);
   }
+  // The scene's depth under the composited frame, for what reads it next: the annotations (a
+  // label mapper hides the labels of points the scene covers), a pass around this one.
+  in.Depth.Write(window, res.Scene.Depth, x, y, w, h, tile.Inner);
   // The renderer's viewport again (the scene's render had the part's, a tile with its band),
   // for what follows and reads it: the FXAA, the annotations.
   state->vtkglViewport(x, y, w, h);

@@ -204,6 +204,43 @@ class AddBloom(unittest.TestCase):
         self.assertLessEqual(np.abs(grab(window) - visible).max(), 1)
         vtkbloom.remove_bloom(renderer)
 
+    def test_labels_of_visible_points_stay(self):
+        # A label mapper that hides the labels of occluded points reads the depth buffer while
+        # the annotations draw (PyVista's add_point_labels and add_point_scalar_labels): the
+        # pass writes the scene's depth under the composited frame, or every label is hidden.
+        from vtkmodules.vtkCommonCore import vtkStringArray
+        from vtkmodules.vtkRenderingCore import vtkActor2D
+        from vtkmodules.vtkRenderingLabel import vtkLabelPlacementMapper, vtkPointSetToLabelHierarchy
+        import vtkmodules.vtkRenderingFreeType  # noqa: F401  (the text renderer)
+
+        window, (actor,) = scene(size=(200, 160))
+        renderer = window.GetRenderers().GetFirstRenderer()
+        source = actor.GetMapper().GetInputConnection(0, 0).GetProducer()
+        source.Update()
+        points = source.GetOutput()
+        names = vtkStringArray()
+        names.SetName("names")
+        for i in range(points.GetNumberOfPoints()):
+            names.InsertNextValue("P%d" % i)
+        points.GetPointData().AddArray(names)
+        hierarchy = vtkPointSetToLabelHierarchy()
+        hierarchy.SetInputData(points)
+        hierarchy.SetLabelArrayName("names")
+        labels = vtkLabelPlacementMapper()
+        labels.SetInputConnection(hierarchy.GetOutputPort())
+        labels.UseDepthBufferOn()
+        labels.SetShapeToRect()
+        labelled = vtkActor2D()
+        labelled.SetMapper(labels)
+        without = grab(window)
+        renderer.AddActor(labelled)
+        plain = grab(window)
+        # The check can fail: the labels are a visible part of the frame.
+        self.assertGreater((np.abs(plain - without).max(axis=-1) > 8).mean(), 0.02)
+        vtkbloom.add_bloom(renderer)
+        self.assertLessEqual(np.abs(grab(window) - plain).max(), 1)
+        vtkbloom.remove_bloom(renderer)
+
     def test_remove_bloom_puts_fxaa_back(self):
         window, _ = scene()
         renderer = window.GetRenderers().GetFirstRenderer()
