@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The accuracy-versus-time study (issue 4): a plain harness, run by scripts/accuracy-study.sh.
 # vtkImageGaussianSmooth (VTK::ImagingGeneral) is its comparison row.
 find_package(VTK 9.1 QUIET COMPONENTS ImagingGeneral)

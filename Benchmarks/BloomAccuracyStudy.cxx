@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The accuracy-versus-time study of issue 4 (docs/numerics.md).
 //
 //   BloomAccuracyStudy OUT_DIR [--quick]

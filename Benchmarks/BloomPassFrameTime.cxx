@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Frame time of an example scene rendered with the plain render steps, into a float target
 // copied to the window (the least any HDR post-process does) and with vtkBloomPass,
 // interleaved frame by frame in one run so that machine noise hits them alike. Every frame is

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Frame time of an example scene with and without vtkBloomPass, by GPU timer and wall clock,
 # and the per-pass GPU profile of the bloom frame:
 #   BloomPassFrameTime [--profile] [SCENE [WIDTH HEIGHT [FRAMES [PRESET]]]]

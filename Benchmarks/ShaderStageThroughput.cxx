@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The same full-screen work as a fragment-shader pass and as a compute dispatch, timed by
 // the GPU (GL_TIME_ELAPSED, median of FRAMES runs): a 1-tap (a copy) and a 9-tap horizontal
 // filter of an RGBA16F image into another, the kind of pass vtkBloomPass's chain is made of;

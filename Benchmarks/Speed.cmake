@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The chain speed suite (issue 5): Google Benchmark, run by scripts/benchmark.sh. OpenCV (Debian's
 # libopencv-imgproc-dev) is optional and benchmark-only: without it the OpenCV rows are skipped.
 find_package(benchmark QUIET)

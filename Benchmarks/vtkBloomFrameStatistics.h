@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The statistics of a benchmark's samples, shared by the CPU and GPU benchmark executables: the
 // median (the mean of the middle two for an even count; 0 for none), and the mean, the 99th
 // percentile and the maximum beside it, since a median alone hides a stutter.

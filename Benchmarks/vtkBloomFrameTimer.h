@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Frame time of an example scene with the plain render steps, with vtkBloomPass, or with the
 // least any HDR post-process does: the scene into a float target, then one full-screen copy to
 // the window, either VTK's own vtkFramebufferPass (a glBlitFramebuffer, at the precision of the

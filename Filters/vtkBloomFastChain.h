@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file    vtkBloomFastChain.h
  * @brief   Internal: the fused, content-aware float32 bloom chain vtkImageBloom runs by default.

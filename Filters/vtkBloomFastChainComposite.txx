@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Included by vtkBloomFastChainPasses.txx, once per instruction set inside a namespace of its
 // own (so no include guard); see that file.
 //

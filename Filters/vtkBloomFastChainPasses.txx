@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The passes of the fast chain, included by vtkBloomFastChain.cxx once per instruction set,
 // each time inside a namespace of its own (so this file has no include guard). It uses the
 // helpers that file defines first (Op, Box, Plane, ...) and vtkBloomFastChain::Internals.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file    vtkBloomPSF.h
  * @brief   Internal: point-spread functions and their convolution, for vtkImageBloom's PSF mode.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // A PSF split into a full-resolution core and a coarse tail (see vtkBloomPSFSplit.h).
 #include "vtkBloomPSFSplit.h"
 

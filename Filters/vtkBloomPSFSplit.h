@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkBloomPSFSplit
  * @brief   A point-spread function split into a full-resolution core and a coarse tail

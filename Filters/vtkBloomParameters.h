@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkBloomParameters
  * @brief   The parameters of one HDR bloom, held once for the filter, the render pass, the

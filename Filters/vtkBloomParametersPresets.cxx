@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkBloomParameters' presets and copy: the four seed bloom systems as
 // ../shared/seeds/PRESETS.md pins them, with their known defects fixed (docs/presets.md lists
 // each deviation). A table of parameter values, apart from the accessors in vtkBloomParameters.cxx.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file    vtkBloomPieces.h
  * @brief   Internal: input requests that stay exact when the output is asked for by piece.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkImageBloom
  * @brief   HDR bloom in one filter: bright pass, pyramid, per-level blur, accumulate, composite.

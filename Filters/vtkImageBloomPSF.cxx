@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImageBloom's PSF mode (its parameters are vtkBloomParameters'): the point-spread function of
 // each colour channel and the execution (bright pass, convolution with the PSF, composite). The
 // convolution itself is vtkBloomPSF's; the pyramid chain is in vtkImageBloom.cxx and

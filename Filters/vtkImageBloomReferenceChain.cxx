@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImageBloom's REFERENCE chain: the steps RequestData runs in double precision when the
 // fused float32 chain does not (ExecutionMode REFERENCE, double input, Karis average, volumes):
 // the bright pass, the pyramid down, the blur of each level, the upsample-and-accumulate, and

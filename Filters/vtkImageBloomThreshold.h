@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkImageBloomThreshold
  * @brief   Bright-pass filter: keep what should glow, with a choice of knee.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkImagePyramidUp
  * @brief   Upsample a coarse pyramid level onto the geometry of a finer one, optionally adding it.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkOpenEXRCoreFile.h
  * @brief  (private to vtkOpenEXRReader) an OpenEXR core-library read context on a file that

@@ -1,3 +1,4 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 // SPDX-License-Identifier: BSD-3-Clause
 // VTK-HeaderTest-Exclude: vtkOpenEXRDWA.cxx
 #include "vtkOpenEXRDWA.h"

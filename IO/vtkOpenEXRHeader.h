@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkOpenEXRHeader.h
  * @brief  (private to vtkOpenEXRReader) header validation and the limits that bound what a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkOpenEXRReader
  * @brief   read one flat part of an OpenEXR (.exr) file into a vtkImageData

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkOpenEXRThreadPool.h
  * @brief  (private to the OpenEXR reader and writer) OpenEXR's C++ library runs its per-file

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkBloomPass's implementation: the render (scene, chain, composite, overlay) and its
 // internals, the kept frame of tiled screenshots (KeptFrameMode), the image entry points
 // (ApplyToImage, the read-backs) and the parameter plumbing.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkBloomPass
  * @brief   HDR bloom as a render pass: the vtkBloomParameters chain as GLSL passes on float

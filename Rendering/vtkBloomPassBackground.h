@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkBloomPassBackground.h
  * @brief  (private to vtkBloomPass) keeps the renderer's background out of the bloom: the scene

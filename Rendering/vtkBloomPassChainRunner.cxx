@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Runs vtkBloomPass's chain as GLSL passes (see vtkBloomPassChainRunner.h): the shader variants
 // and their programs, and one pass (Pass: its draws, textures and uniforms). The chain's steps,
 // the composite and the copy are in vtkBloomPassChainSteps.cxx.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkBloomPassChainRunner.h
  * @brief  (private to vtkBloomPass) runs a vtkBloomChain as full-screen GLSL passes on the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The steps of vtkBloomPass's chain (see vtkBloomPassChainRunner.h): Run() (the bright pass,
 // the pyramid, the blur of each level, the accumulation), the composite and the copy. Each step
 // describes its passes (PassSpec) and leaves drawing them to Pass(), in

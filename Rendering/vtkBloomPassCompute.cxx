@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkBloomPass's chain as compute shaders (OpenGL 4.3): the same vtkBloomPassFS.glsl compiled
 // with COMPUTE, one invocation per output sample, written with imageStore. On a GPU whose
 // fragment shading runs on part of the chip only (an NVIDIA H100: docs/gpu.md), a compute pass

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Selective bloom: what each prop emits and where the emission is written (see
 // vtkBloomPassEmission.h).
 #include "vtkBloomPassEmission.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkBloomPass's emitter API (selective bloom): the emitters, the scalar-range emitter and the
 // keys it records. How the emission is written is vtkBloomPassEmission's.
 #include "vtkBloomPass.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // PSF bloom's convolution on the GPU (see vtkBloomPassFFT.h): the buffers, the twiddle tables,
 // the kernels' spectra and the six dispatches of a convolution. The shaders are
 // glsl/vtkBloomPassFFTCS.glsl.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkBloomPassFFT.h
  * @brief  (private to vtkBloomPass) PSF bloom's convolution on the GPU: a float RGBA texture

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // A wide blur operator through an FFT in compute shaders (see vtkBloomPassFFTBlur.h): the
 // operator's tables from vtkBloomFFTConvolution, the cost model, the buffers and the two
 // dispatches of one axis. The shaders are glsl/vtkBloomPassFFTBlurCS.glsl, the convolution

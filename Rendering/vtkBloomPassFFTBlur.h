@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkBloomPassFFTBlur.h
  * @brief  (private to vtkBloomPass) a wide blur operator of the chain applied along the rows or

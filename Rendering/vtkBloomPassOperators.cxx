@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The GPU form of vtkBloomPass's operators (see vtkBloomPassChainRunner.h): the operator
 // tables uploaded as textures, the translation-invariant interiors evaluated from uniforms, the
 // fast mode's bilinear pairs of taps, and the segments a pass draws per axis.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The split PSF's convolution on the GPU (see vtkBloomPassPSFSplit.h); its shaders are
 // glsl/vtkBloomPassPSFSplitCS.glsl.
 #include "vtkBloomPassPSFSplit.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Content-aware evaluation of vtkBloomPass's chain (vtkBloomParameters::RestrictToBrightRegion):
 // the bright pass is reduced to the bounding box of its non-zero samples, and every later pass
 // computes only the box of output samples that read any sample of its input's box. Outside

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The OpenGL resources of vtkBloomPass: saved state, float targets, the scene target and the
 // chain's targets (see vtkBloomPassResources.h).
 #include "vtkBloomPassResources.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The delegate's steps the pass adjusts: its overlay and its translucency (see
 // vtkBloomPassSteps.h).
 #include "vtkBloomPassSteps.h"

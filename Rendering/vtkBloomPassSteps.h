@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkBloomPassSteps.h
  * @brief  (private to vtkBloomPass) the steps of the delegate that the pass adjusts while it

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkBloomPassTile
  * @brief   The part of a tiled frame that vtkBloomPass renders: the tile and its guard band.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkBloomVTKCompat.h
  * @brief  Where vtk-bloom's C++ meets the differences between the VTK versions it builds

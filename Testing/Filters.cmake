@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # GoogleTest suites of the FiltersBloom module; included by Testing/CMakeLists.txt.
 # Every gtest suite here is named Filters*, so `ctest -R ^Filters` runs them all.
 

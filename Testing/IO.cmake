@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # GoogleTest suites of VTKBloom::IOOpenEXR. The tests use the OpenEXR C++ library directly to
 # write small inputs and to decode reference pixels independently of the reader.
 find_package(OpenEXR 3 REQUIRED CONFIG)

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Numerical hard cases and accuracy bounds (issue 4); included by Testing/CMakeLists.txt.
 # Every suite here is named Numerics*, so `ctest -R ^Numerics` runs them all.
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # GoogleTest suites of the fast chain and its content-aware work; included by
 # Testing/CMakeLists.txt. Every suite is named Performance*, so `ctest -R ^Performance` runs them.
 # They assert agreement and exactness only, never timings (the timings are in Benchmarks/).

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The vtkbloom Python package: a unittest suite and the script examples, run from the build
 # tree. Not in sanitizer builds: a plain python3 cannot load ASan-instrumented extensions.
 if (NOT VTKBLOOM_WRAP_PYTHON OR VTKBLOOM_ENABLE_SANITIZERS)
@@ -72,5 +74,37 @@ if (VTKBLOOM_ENABLE_RENDERING)
       COMMAND "${Python3_EXECUTABLE}" "${recipe}" "${vtkbloom_python_out}/recipe-${client}.png")
     set_tests_properties(Python.Recipe.${client} PROPERTIES
       ENVIRONMENT "${vtkbloom_python_env}" TIMEOUT 120)
+    # A sample of the client's own examples through add_bloom at the defaults, as its users
+    # run them (Testing/Python/client_examples.py; docs/python.md has the large sweeps): each
+    # renders, runs with no error and no GL error its plain frame lacks, and stays within 1 %
+    # of its pixels. Lines, text, axes, grids, labels, hidden lines and chart marks.
+    if (client STREQUAL "pyvista")
+      set(examples
+        pyvista.plotting.plotter.BasePlotter.enable_hidden_line_removal
+        pyvista.plotting.plotter.BasePlotter.add_point_scalar_labels
+        pyvista.plotting.renderer.Renderer.show_grid
+        pyvista.plotting.renderer.Renderer.show_bounds
+        pyvista.plotting.cube_axes_actor.CubeAxesActor
+        pyvista.core.utilities.geometric_objects.Line
+        pyvista.core.filters.poly_data.PolyDataFilters.plot_boundaries
+        pyvista.core.filters.data_set.DataSetFilters.delaunay_3d
+        pyvista.plotting.plotter.BasePlotter.add_points
+        pyvista.plotting.charts.Chart2D.plot
+        pyvista.plotting.charts.ChartPie
+        pyvista.plotting.charts.BarPlot.pen
+        pyvista.plotting.charts.Axis.tick_labels)
+    else ()
+      set(examples
+        pyplot/markers.py pyplot/plot_errband.py pyplot/scatter1.py pyplot/quiver.py
+        pyplot/lines_intersect.py pyplot/histo_1d_a.py pyplot/fit_polynomial1.py
+        pyplot/custom_axes2.py basic/legendbox.py basic/colorlines.py basic/delaunay2d.py
+        basic/color_mesh_cells1.py)
+    endif ()
+    add_test(NAME Python.ClientExamples.${client}
+      COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/client_examples.py"
+        --client ${client} --check --out "${vtkbloom_python_out}/client-examples-${client}"
+        --only ${examples})
+    set_tests_properties(Python.ClientExamples.${client} PROPERTIES
+      ENVIRONMENT "${vtkbloom_python_env}" TIMEOUT 900)
   endforeach ()
 endif ()

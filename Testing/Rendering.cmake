@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Tests of the render pass (VTKBloom::RenderingBloom); included by Testing/CMakeLists.txt.
 # They need an OpenGL context: with the OSMesa VTK they run anywhere; with an X11 VTK they need
 # a display (scripts/test.sh runs CTest under xvfb-run there). Every test is named Rendering*.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # End-to-end tests of the vtk-bloom command-line tool, run exactly as users call it.
 find_package(OpenEXR 3 REQUIRED)
 vtkbloom_add_gtest(TestCommandLine OPENGL

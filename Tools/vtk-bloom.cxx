@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtk-bloom: HDR bloom and Gaussian blur of OpenEXR images from the command line.
 //
 //   vtk-bloom image [--preset NAME] [options] IN.exr OUT.exr|OUT.png

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtk-bloom command-line tool: which output each input goes to (one file, or a batch into a
 // directory), what happened to each file, and the --stats JSON report.
 #ifndef vtkBloomToolBatch_h

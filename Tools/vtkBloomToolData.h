@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtk-bloom command-line tool: the user's own datasets. Which files a path names (one dataset,
 // a .pvd time series or a numbered file pattern) and reading them with VTK's own readers
 // (vtkBloomToolDataFiles.cxx), and the scene that shows them: colouring, representation,

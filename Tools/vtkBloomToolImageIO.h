@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtk-bloom command-line tool: reading an EXR input and writing the EXR or PNG output.
 #ifndef vtkBloomToolImageIO_h
 #define vtkBloomToolImageIO_h

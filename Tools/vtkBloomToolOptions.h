@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The bloom options of `vtk-bloom image` (and render and view): their names, parsed and checked
 // once into edits of a vtkBloomParameters, PSF mode included.
 #ifndef vtkBloomToolOptions_h

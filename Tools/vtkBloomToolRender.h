@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtk-bloom command-line tool: `render` (an example scene or the user's dataset, headless, to
 // EXR or PNG, every step of a time series) and `view` (the same in an interactive X window).
 #ifndef vtkBloomToolRender_h

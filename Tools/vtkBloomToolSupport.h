@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtk-bloom command-line tool: errors, argument parsing, error collection from VTK objects and
 // the progress bar. Nothing here knows about bloom or files.
 #ifndef vtkBloomToolSupport_h

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtk-bloom view: a dataset or example scene in an interactive X window, with the bloom's
 // parameters on sliders and keys. Built only where VTK has widgets and text (the X build).
 #include "vtkBloomExampleScenes.h"

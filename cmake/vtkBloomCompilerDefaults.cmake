@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # C++17 without compiler extensions, and Release when no build type is given: included right
 # after project() by the top-level project and by the ParaView plugin, which build the same
 # modules.

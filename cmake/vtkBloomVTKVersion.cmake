@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Where vtk-bloom's CMake meets the differences between the VTK versions it builds against
 # (9.1 to 9.6); the C++ side is Rendering/vtkBloomVTKCompat.h. Included once, after
 # find_package(VTK), by the top-level project and by the ParaView plugin.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The accuracy-versus-time study of issue 4, in one command:
 #   bash scripts/accuracy-study.sh [BUILD_DIR]      (default build/)
 # Configures BUILD_DIR (Release) and builds only Benchmarks/BloomAccuracyStudy, runs it on a

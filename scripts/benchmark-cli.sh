@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The command-line tool against its I/O, side by side with OpenImageIO's oiiotool, in one run:
 #   bash scripts/benchmark-cli.sh [REPETITIONS]        default 9
 # Installs openimageio-tools (benchmark-only), builds Release into build-bench/ (shared with

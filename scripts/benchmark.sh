@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The chain speed suite of issue 5 in one command:
 #   bash scripts/benchmark.sh [extra Google Benchmark arguments, e.g. --benchmark_repetitions=9]
 # Installs OpenCV's imgproc (benchmark-only; the build and the tests never need it), builds

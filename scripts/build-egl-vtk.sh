@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Build Debian's own VTK 9.1 source with EGL (vtkEGLRenderWindow; no X, no OSMesa) into a cached
 # prefix.
 #

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Build the vtk-bloom ParaView plugin (ParaView/) against the ParaView of this system: Debian
 # 12's ParaView 5.11 and the VTK 9.2 it carries, beside the project's own VTK 9.1 build; or,
 # inside the sid root (scripts/sid-root.sh), ParaView 6.1 on the system VTK 9.6:

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The clients' own examples through vtkbloom.add_bloom at the defaults (issue 48, part 4):
 #
 #   bash scripts/client-examples.sh [OPTIONS]        vedo 2023.4 on Debian 12 (VTK 9.1, Xvfb)

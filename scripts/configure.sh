@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Configure and build vtk-bloom into a build directory.
 #   bash scripts/configure.sh BUILD_DIR [extra cmake arguments...]
 set -euo pipefail

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Fuzz vtkOpenEXRReader with libFuzzer (clang from Debian's toolchain) under AddressSanitizer
 # and UBSan for a bounded time.
 #   bash scripts/fuzz.sh [SECONDS]      default 120

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The gallery of users' configurations (issue 35), in one command:
 #   bash scripts/gallery.sh [BUILD_DIR]      (default build/, configured and built already)
 # Runs TestBloomPassGallery under a private Xvfb with its CSV and picture outputs on, writes

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Build and pack what a GPU machine needs to run vtk-bloom's rendering tests, the frame-time
 # benchmark and the vtk-bloom tool, from the EGL VTK (scripts/build-egl-vtk.sh). The GPU machine
 # then needs no compiler and no VTK, only the GL loaders (glvnd) and its own driver's EGL vendor;

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Run vtk-bloom's rendering tests, the frame-time benchmark and the vtk-bloom tool on a GPU
 # machine, from the pack of scripts/gpu-pack.sh. Run it as root from a directory that holds
 # .gl/ (the glvnd loader packages: libglvnd0 libopengl0 libegl1 libgl1 libglx0 libgles2, from

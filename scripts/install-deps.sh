@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Install every Debian 12 package vtk-bloom needs to build, test and run.
 #
 #   bash scripts/install-deps.sh

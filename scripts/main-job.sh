@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The main job: install what is needed, build vtk-bloom, render the example emissive scenes
 # headless through OSMesa with the GPU bloom pass, and bloom an HDR photograph on the CPU.
 # Writes output/*.png (before, after and side by side) and prints their paths.

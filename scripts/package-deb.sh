@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Debian packages of vtk-bloom for the Debian release this runs in:
 #
 #   bash scripts/package-deb.sh          this machine's release (Debian 12): build-deb/*.deb

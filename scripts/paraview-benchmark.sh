@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The bloom view under pvbatch at scale: time per frame for 1, 2 and 4 ranks at 1920x1080 and
 # 3840x2160, bloom off, over IceT's 8-bit composite and over its float composite
 # (ParaView/Benchmarks/bloom_view_timing.py), as a Markdown table on stdout.

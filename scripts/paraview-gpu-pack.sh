@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Pack ParaView 6.1, VTK 9.6 and the vtk-bloom plugin from the Debian sid root
 # (scripts/sid-root.sh) for a GPU machine that renders through EGL and has nothing else:
 # scripts/paraview-gpu-run.sh runs the plugin's checks and the benchmark there.

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Run the ParaView plugin's checks and the bloom view's benchmark on a GPU node through EGL, from
 # the pack of scripts/paraview-gpu-pack.sh (ParaView 6.1, VTK 9.6, Python 3.14, Open MPI and the
 # plugin, as Debian sid builds them). Run it as root from the checkout's root, which holds

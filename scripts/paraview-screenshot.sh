@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The README's ParaView screenshot: the GUI under a private Xvfb, with the plugin loaded and
 # ParaView/Examples/gui_scene.py run at start-up, captured as a PNG:
 #

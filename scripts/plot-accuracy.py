@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Plot the accuracy-versus-time study with VTK's own charts (vtkChartXY), headless.
 
     /usr/bin/python3 scripts/plot-accuracy.py accuracy.csv out.png

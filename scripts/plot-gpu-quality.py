@@ -1,4 +1,6 @@
 #!/usr/bin/env python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Plot vtkBloomPass's exact pass and fast mode, per preset, on a GPU: error against time.
 
     /usr/bin/python3 scripts/plot-gpu-quality.py quality.csv out.png [CARD]

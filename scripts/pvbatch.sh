@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Run a Python script in ParaView's pvbatch with the vtk-bloom plugin loaded:
 #
 #   bash scripts/pvbatch.sh [-n N] SCRIPT.py [ARGS...]

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Run a pvpython client script against a pvserver of N ranks with the vtk-bloom plugin loaded,
 # on this machine only:
 #

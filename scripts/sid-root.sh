@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # A Debian sid root with VTK 9.6 and ParaView 6.1, made once and cached, and a command run in it.
 #
 #   bash scripts/sid-root.sh                    make the root if needed; print its path

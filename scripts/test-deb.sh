@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Install the Debian packages of scripts/package-deb.sh in a clean root of the same release and
 # test them there, as a user would have them after `apt install`:
 #

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Install what vtk-bloom needs, build it, and run the whole test suite.
 #   bash scripts/test.sh           both backends and the ParaView plugin: the system VTK 9.1 (X11)
 #                                  in build/, run under a private Xvfb; the ParaView plugin in
@@ -65,7 +67,7 @@ rendering_tests=('RenderingBloomPass[.]' 'RenderingBloomPassLight[.]' 'Rendering
 # And where the package is wrapped for Python (not in the sanitizer build, not in the cached
 # prefixes' builds, whose VTK has no Python).
 python_tests=('Python[.]vtkbloom' 'Python[.]arrays' 'Python[.]scene' 'Python[.]ParaViewXML'
-  'Python[.]Recipe[.]' 'Docs[.]NamedPathsExist')
+  'Python[.]Recipe[.]' 'Python[.]ClientExamples[.]vedo' 'Docs[.]NamedPathsExist')
 
 run_x11() {
   local build=$1
@@ -114,7 +116,8 @@ run_in_sid_root() {
     -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
   # sid has PyVista 0.49 and vedo 2026: their tests and recipes are built there.
   require_tests "$root/build-sid" "${rendering_tests[@]}" "${python_tests[@]}" \
-    'Python[.]pyvista' 'Python[.]Recipe[.]pyvista' 'Python[.]Recipe[.]vedo'
+    'Python[.]pyvista' 'Python[.]Recipe[.]pyvista' 'Python[.]Recipe[.]vedo' \
+    'Python[.]ClientExamples[.]pyvista'
   echo "test: running the suite against VTK 9.6 (no DISPLAY: VTK chooses EGL)"
   env -u DISPLAY -u WAYLAND_DISPLAY ctest --test-dir "$root/build-sid" --output-on-failure \
     --no-tests=error -j"$(nproc)"

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # The hostile-file tests under valgrind's memcheck, which reports reads of uninitialised memory
 # (AddressSanitizer does not): the OpenEXR reader's suites on the damaged corpus, the generated
 # hostile headers and the crafted files, then the vtk-bloom tool on every one of those files,

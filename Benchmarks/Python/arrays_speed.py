@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 """vtkbloom.bloom on a numpy frame against vtkImageBloom on the same frame as a vtkImageData
 (what a VTK user would otherwise run), and the cheapest float copy of it, interleaved:

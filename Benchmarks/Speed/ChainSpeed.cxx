@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // BloomChainSpeed: vtkImageBloom against the same chain in OpenCV and in stock VTK filters, the
 // memory-bandwidth bound, peak extra memory and sparse scenes, in one run (issue 5).
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The GPU rows of BloomChainSpeed (issue 5): frame time of the example scenes at 1920x1080 with
 // the plain render steps and with vtkBloomPass, interleaved frame by frame in one benchmark so
 // that machine noise hits both alike. Linked into BloomChainSpeed by Benchmarks/Speed.cmake;

@@ -1,4 +1,6 @@
 #version 430
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The compute-shader side of ShaderStageThroughput: the same work as StageThroughputFS.glsl,
 // one invocation per sample, written with imageStore.
 layout(local_size_x = 16, local_size_y = 16) in;

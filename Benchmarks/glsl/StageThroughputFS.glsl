@@ -1,4 +1,6 @@
 #version 430
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The fragment-shader side of ShaderStageThroughput: TAPS horizontal texel fetches of the
 // source (TAPS 1: a scaled copy), one sample per fragment.
 uniform sampler2D source;

@@ -1,4 +1,6 @@
 #version 430
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // A full-screen triangle from gl_VertexID (no vertex buffer).
 void main()
 {

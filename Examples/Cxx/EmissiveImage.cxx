@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Build a small emissive HDR scene directly as vtkImageData, bloom it with vtkImageBloom and
 // write the before and after images as OpenEXR. Shows the filter API without any file input:
 //

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Write a small simulation-like dataset for `vtk-bloom render FILE`: a heated plate (a 200x200
 // grid warped by its temperature) with a few hot spots on a cooler rippled field, as a VTK XML
 // PolyData file with the point arrays Temperature (about 20 to 100) and Gradient (a vector).

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Bloom every OpenEXR file of a folder into another folder, with progress.
 
     batch_bloom.py [--preset NAME] [--strength S] [--threshold T] [--png] [--exposure E]

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Bloom a slice of a simulation and save it as OpenEXR (linear) and PNG (tone-mapped).
 
     bloom_simulation_slice.py [--source wavelet|numpy] [--size N] [--preset NAME]

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Compare the bloom presets side by side in one PNG.
 
     compare_presets.py [--input IN.exr] [--presets A,B,...] [--exposure E] [--gap G] OUTPUT.png

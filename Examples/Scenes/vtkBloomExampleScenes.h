@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file    vtkBloomExampleScenes.h
  * @brief   The emissive example scenes that `vtk-bloom render`, the tests and the README use.

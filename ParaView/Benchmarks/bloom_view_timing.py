@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch script: the bloom view's time per frame, the composite's cost, under MPI.
 
     scripts/pvbatch.sh [-n N] ParaView/Benchmarks/bloom_view_timing.py WIDTH HEIGHT FRAMES

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Run in ParaView's GUI (paraview --script=...): the README's screenshot scene.
 
 Left, "Render View (Bloom)": a dim sphere and three small bright ones, unlit, bloomed by the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkPVBloomCompositeScenePass
  * @brief   The render pass IceT runs on every rank when the bloom view composites float colour.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkPVBloomRenderView's screenshots in tiles under IceT: the whole frame rendered first, at the
 // window resized to it, and the tiles served from it (see the class documentation and Render).
 #include "vtkPVBloomRenderView.h"

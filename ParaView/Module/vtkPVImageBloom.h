@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @class   vtkPVImageBloom
  * @brief   vtkImageBloom for ParaView: a preset name over a set of hand-set parameters.

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # script-version: 2
 """Catalyst script: the wavelet mini-app's field in the bloom view, a PNG per time step.
 

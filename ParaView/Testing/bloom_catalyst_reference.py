@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch script: the time steps of bloom_catalyst.py, rendered from the mini-app's own data.
 
     scripts/pvbatch.sh ParaView/Testing/bloom_catalyst_reference.py OUT_DIR STEPS

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch script: bad parameters and bad input give clear errors, and nothing crashes.
 
     scripts/pvbatch.sh ParaView/Testing/bloom_errors.py OUTDIR

@@ -1,3 +1,4 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 """Tables and checks from the GPU runs of scripts/paraview-gpu-run.sh (Markdown on stdout).
 

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch script: apply the plugin's filters to a distributed HDR image and save the results.
 
     scripts/pvbatch.sh [-n N] ParaView/Testing/bloom_pieces.py OUTDIR

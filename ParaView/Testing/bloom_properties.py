@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Every property of the plugin's filters that changes the image does what its documentation says.
 
     scripts/pvbatch.sh ParaView/Testing/bloom_properties.py OUTDIR     (the ParaView half)

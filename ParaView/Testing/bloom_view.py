@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch script: render a distributed scene in the bloom render view and save a screenshot.
 
     scripts/pvbatch.sh [-n N] ParaView/Testing/bloom_view.py OUT.png [PRESET [USE_BLOOM]]

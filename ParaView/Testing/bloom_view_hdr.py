@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch script: an HDR scene in the bloom render view, saved as a screenshot.
 
     scripts/pvbatch.sh [-n N] ParaView/Testing/bloom_view_hdr.py OUT.png [FLOAT_COMPOSITE [BLOOM]]

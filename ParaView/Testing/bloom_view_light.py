@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch script: a figure as users make it in the bloom render view, saved as screenshots.
 
     scripts/pvbatch.sh ParaView/Testing/bloom_view_light.py OUTDIR

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch script: the HDR view's interactive render with an image reduction factor.
 
     scripts/pvbatch.sh -n 3 ParaView/Testing/bloom_view_reduced.py OUT_PREFIX [FLOAT_COMPOSITE]

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """pvbatch script: the bloom view saved at its size, resized, and in tiles.
 
     scripts/pvbatch.sh ParaView/Testing/bloom_view_scale.py OUT_PREFIX REFERENCE_HEIGHT [TILED]

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The in situ scene of bloom_catalyst.py and its pvbatch reference (imported, not run).
 
 The wavelet mini-app's field (paraview.demos.wavelet_miniapp: vtkRTAnalyticSource, RTData) in

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Run a pvpython client script against a pvserver of N ranks, on this machine, loopback only.
 
     python3 client_server.py RANKS SCRIPT [ARGS...]      (run by scripts/pvserver.sh)

@@ -1,3 +1,4 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 """What a render window's OpenGL context runs on, asked of EGL and OpenGL themselves (imported by
 the GPU scripts bloom_gpu_devices.py and bloom_gpu_timing.py, not run).

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The ParaView plugin's tests: pvbatch runs with 1 to 4 ranks, checked here.
 
     /usr/bin/python3 ParaView/Testing/run_tests.py BUILD OUTDIR

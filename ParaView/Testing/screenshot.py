@@ -1,3 +1,4 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 """SaveScreenshot that fails: a test's screenshot that was not written stops the script with
 a non-zero exit, instead of leaving the check that reads it to be skipped."""

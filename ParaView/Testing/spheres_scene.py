@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The scene of bloom_view.py and bloom_view_hdr.py, shown in a view (imported, not run).
 
 A large sphere split into pieces over the ranks (each rank renders its own) in a dim colour,

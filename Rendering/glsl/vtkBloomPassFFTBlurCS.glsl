@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /*=========================================================================
   vtkBloomPassFFTBlurCS.glsl: vtkBloomPassFFTBlur's compute shaders (OpenGL 4.3), a wide
   same-size operator M = T + D (vtkBloomFFTConvolution) applied along every line (a row,

@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /*=========================================================================
   vtkBloomPassFFTCS.glsl: vtkBloomPassFFT's compute shaders (OpenGL 4.3), the linear
   convolution of a float RGBA image with one PSF per colour channel through a 2-D FFT of the

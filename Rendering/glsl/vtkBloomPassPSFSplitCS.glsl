@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /*=========================================================================
   vtkBloomPassPSFSplitCS.glsl: the split PSF's compute shaders (vtkBloomPassPSFSplit; the
   split itself is vtkBloomPSFSplit's, in FiltersBloom). One stage per program, chosen by a

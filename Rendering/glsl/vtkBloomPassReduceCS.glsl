@@ -1,4 +1,6 @@
 #version 430
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /*=========================================================================
   vtkBloomPassReduceCS.glsl: vtkBloomPass's bright-region reduction as one compute dispatch
   (OpenGL 4.3), where the context has compute shaders; vtkBloomPassReduceFS.glsl otherwise.

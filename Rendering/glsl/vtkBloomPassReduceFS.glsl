@@ -1,4 +1,6 @@
 //VTK::System::Dec
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 
 /*=========================================================================
   vtkBloomPassReduceFS.glsl: one step of vtkBloomPass's bright-region reduction.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Blooms a constant image with an installed vtk-bloom and checks the documented result:
 // webgpu-market turns a constant 0.5 into 0.607421875 (PRESETS.md).
 #include <vtkImageBloom.h>

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Install the build tree into a scratch prefix, then configure, build and run a downstream
 # project against it with find_package(VTKBloom).
 #   run-consumer.sh BUILD_DIR WORK_DIR

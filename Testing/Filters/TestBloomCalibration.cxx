@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The shipped calibration example (../shared/data/presets): each preset and the two `blur`
 // settings against the float64 expected outputs, to a relative L2 error of 1e-4 over all four
 // channels as the data README states. The reference of this test suite is checked against the

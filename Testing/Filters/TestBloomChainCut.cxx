@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkBloomChain::Cut and GetInputRange, the chain of a tile with its guard band (issue 36,
 // part 2): the frame's chain cut to a part of the frame, evaluated on that part of the input,
 // gives the frame's bloom on the tile to double rounding wherever the part holds every sample

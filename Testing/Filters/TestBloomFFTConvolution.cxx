@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkBloomFFTConvolution against independent float64 references: a Gaussian convolved directly
 // over an explicitly extended line (clamp, reflect, zero), and the ping-pong preset's 32
 // clamped passes of its 13-tap kernel iterated one pass at a time. Also: exact zeros where

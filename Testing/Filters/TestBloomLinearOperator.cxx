@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkBloomLinearOperator::FindInvariantRange, which the fused CPU chain and vtkBloomPass use to
 // run an operator's interior with one set of weights: every row of the range repeats its
 // predecessor one period back (moved by Stride inputs, same float32 weights), the range cannot

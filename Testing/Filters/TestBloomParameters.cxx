@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkBloomParameters: one parameter set for the filter and the render pass. A filter given
 // another's parameters shares them (an edit through either re-executes both), a copy changes
 // nothing when the values are equal, the filter's shortcuts and its enum names are the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Sanity checks of the float64 reference itself (vtkBloomReference), against closed forms
 // stated in ../shared/seeds/PRESETS.md and against independent evaluations. If the reference
 // were wrong, every comparison of a filter against it would be meaningless.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Streaming and threading: for every filter, a requested sub-extent (through UpdateExtent, and
 // through vtkImageDataStreamer pieces) equals the same region of the whole-image result bit
 // for bit, with an upstream vtkImageClip (ClipData on) that hands the filter no more input than

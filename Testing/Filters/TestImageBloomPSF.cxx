@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImageBloom's PSF mode: every PSF is normalized (sums to 1, non-negative; Airy and Gaussians
 // point-symmetric, Airy wider for longer wavelengths); with reflect borders the bloom's energy
 // is the bright pass's energy times the strength, per channel; the result agrees with an

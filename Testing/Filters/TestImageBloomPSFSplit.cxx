@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImageBloom's split PSF (PSFTailScale > 1: a full-resolution core and a coarse tail): against
 // the exact convolution its bloom's error is small and falls as the core widens; with reflect
 // borders it keeps the bright pass's energy; a core as wide as the PSF is the exact

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImageBloom presets against the independent float64 reference of PRESETS.md, on synthetic
 // HDR images of many sizes (1x1 up to 161x91), float and double, 1 to 4 components.
 #include "vtkBloomReference.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImageBloomThreshold: every mode against the formulas of its class documentation, on value
 // sweeps that cross the threshold, and the documented edge cases (knee 0, value equal to the
 // threshold, negative and non-finite input, alpha, the luminance clamp).

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImagePyramidDown: the three kernels (and the Karis average) against the float64 reference
 // on every size from 1x1 to 67x67 (box) or a dense subset (the others), with a non-zero extent,
 // origin and spacing; output geometry; constants; mean preservation; 3-D input.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImagePyramidUp: tent and bilinear upsampling against the float64 reference, the FineWeight
 // term, constants, and the output geometry (that of input 1).
 #include "vtkBloomReference.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImageSeparableGaussian: against direct 2-D and 3-D convolutions of the float64 reference,
 // and its documented properties (normalization, variance, identities, symmetry, borders).
 #include "vtkBloomReference.h"

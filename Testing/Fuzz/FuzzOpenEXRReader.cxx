@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // libFuzzer target for vtkOpenEXRReader: each input is written to a file (the reader opens
 // files, as users' scripts do) and read through the whole pipeline, every part of it, plus
 // CanReadFile. Built and run by scripts/fuzz.sh under AddressSanitizer and UBSan; a crash, a

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Write the generated hostile OpenEXR files (Testing/Support/vtkBloomHostileEXR.cxx) into a
 // directory: seeds for the fuzz target, and inputs for scripts that try the tool on them.
 //   MakeHostileEXR DIRECTORY

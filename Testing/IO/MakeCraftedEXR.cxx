@@ -1,3 +1,4 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 // SPDX-License-Identifier: BSD-3-Clause
 // Write the crafted OpenEXR files (Testing/Support/vtkBloomCraftedEXR.h) into a directory, with
 // a README that says what is wrong with each. The committed set in Testing/Data/EXR/Crafted was

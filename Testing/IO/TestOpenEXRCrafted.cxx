@@ -1,3 +1,4 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 // SPDX-License-Identifier: BSD-3-Clause
 // vtkOpenEXRReader on crafted files (Support/vtkBloomCraftedEXR.h): chunks whose streams
 // decode short of what the header and channel list require, in every layout the reader

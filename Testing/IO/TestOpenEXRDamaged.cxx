@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkOpenEXRReader on broken input: every file of ../shared/data/exr/Damaged (fuzzer cases
 // that crashed, hung or leaked in older OpenEXR releases) plus missing, empty, truncated and
 // otherwise unusable files. Each must produce exactly one error event, an error code and an

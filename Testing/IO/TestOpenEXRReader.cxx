@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkOpenEXRReader on the real files of ../shared/data/exr and on small files written here
 // with the OpenEXR C++ library. Expectations come from the file headers (read with the C++
 // library) and pixels are compared with the C++ library's own decoder, which shares no

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkOpenEXRWriter: write -> read round trips (bit-exact), the file's header as the OpenEXR
 // C++ library sees it, the documented half rounding, and clean failures.
 #include "vtkBloomTestSupport.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkBloomExactSum, the exact summation behind vtkImageBloom's energies: the fast row path
 // (fixed point in a window below each block's largest exponent) against the one-by-one
 // superaccumulator, and both against sums whose exact value is known.

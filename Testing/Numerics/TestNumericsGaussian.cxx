@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkImageSeparableGaussian, every method: error against the float64 continuous Gaussian within
 // the documented bound, the exact method within 1e-6 of its float64 definition, the box cascade
 // equal to its own kernel, the recursive borders equal to the recursion on an explicitly

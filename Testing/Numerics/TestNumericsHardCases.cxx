@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The hard cases of issue 4 on the CPU filters: NaN/Inf input, fireflies, every half value,
 // wide dynamic range, every size at every pyramid depth, the threshold at its edge, and the
 // clamp of half-float output. Inputs and expectations come from vtkBloomHardCases, which the

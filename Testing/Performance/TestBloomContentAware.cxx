@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Content-aware work is exact: the output is bit-identical with every switch on, with all off
 // and with each one off, in both execution modes, over empty, sparse, full and non-finite
 // scenes, odd sizes and every preset.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The level blurs through the FFT (vtkImageBloom::ConvolutionMode): they agree with the direct
 // blurs for every preset, the ping-pong preset through them still matches its independent
 // float64 reference, the content-aware work stays bit-exact through them, and AUTOMATIC picks

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The fast chain (vtkImageBloom's default ExecutionMode) against the double-precision reference
 // (ExecutionMode REFERENCE): every preset, odd and even sizes, 1 to 4 components.
 #include "vtkBloomPerformanceScenes.h"

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Scenes shared by the Performance suites: random HDR images, sparse bright blobs, empty frames.
 #ifndef vtkBloomPerformanceScenes_h
 #define vtkBloomPerformanceScenes_h

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 """The clients' own examples through vtkbloom.add_bloom at the defaults (issue 48, part 4).
 
@@ -926,7 +927,10 @@ def parent(args):
         example["skip"] = static_skip(example["source"])
     runnable = [e for e in population if not e["skip"]]
     if args.only:
-        chosen = [e for e in runnable if any(o in e["name"] for o in args.only)]
+        # A name given whole picks that example alone; a part of names, every example it is in.
+        names = {e["name"] for e in runnable}
+        chosen = [e for e in runnable
+                  if any(o == e["name"] or (o not in names and o in e["name"]) for o in args.only)]
         selection = "only those named %s" % ", ".join(args.only)
         # A name that matches nothing (gone from this version of the client, or skipped before
         # running) would make a check pass on fewer examples than it names.
@@ -1009,7 +1013,8 @@ def main():
     parser.add_argument("--seed", type=int, default=48, help="the sample's and the examples' seed")
     parser.add_argument("--out", help="output folder (default ./client-examples/CLIENT-VERSION)")
     parser.add_argument("--examples", help="vedo's examples folder (default %s)" % VEDO_EXAMPLES)
-    parser.add_argument("--only", nargs="+", help="run the examples whose names contain one of these")
+    parser.add_argument("--only", nargs="+",
+                        help="run the examples named (a whole name), or whose names contain one of these")
     parser.add_argument("--timeout", type=int, default=60, help="seconds per example and run (60)")
     parser.add_argument("--shows", type=int, default=3, help="show() calls compared per example (3)")
     parser.add_argument("--no-mesa-debug", dest="mesa_debug", action="store_false",

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # run-with-shared-data.sh DIR COMMAND...: run COMMAND when the shared data DIR exists;
 # otherwise skip (exit 77), or fail under CI=true.
 dir=$1

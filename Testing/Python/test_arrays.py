@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 """Tests of vtkbloom's numpy functions (bloom, blur, read_exr, write_exr): the same pixels as
 the filters they wrap, no copies of contiguous arrays, and a Python exception with one line

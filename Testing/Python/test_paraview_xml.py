@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 """ParaView's server-manager XML (ParaView/Plugin/VTKBloom.xml) against the C++ classes it
 configures: every property's default is the C++ default, every enumeration's entry is the value

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 """vtkbloom.add_bloom and add_emitter on a pyvista.Plotter, as a PyVista user calls them:
 through show() and screenshot(), off screen, with PyVista's own effects switched on and off in

@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 """Tests of vtkbloom.add_bloom and add_emitter on raw VTK renderers and windows: one pass per
 renderer however often it is called, its place in a chain of passes (above the scene, below

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Tests of the vtkbloom Python package: parameters, presets, errors, numpy round trips and
 the bloom statistics, checked against independent numpy computations."""
 

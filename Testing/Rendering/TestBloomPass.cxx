@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkBloomPass: GPU/CPU agreement per preset on the float render, shared parameters,
 // selective bloom, chaining with tone mapping, GL errors and resource stability over many frames
 // with resizes, the profile, regression images, non-finite input. What live scenes need

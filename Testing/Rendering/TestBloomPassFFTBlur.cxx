@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkBloomPass's wide blurs through an FFT in compute shaders (vtkBloomPassFFTBlur):
 // with ConvolutionMode FFT, the ping-pong preset (32 clamped passes folded into one operator,
 // whose border corrections are not zero) and a wide Gaussian at level 0 agree with

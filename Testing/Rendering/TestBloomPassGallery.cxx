@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The gallery: vtkBloomPass at its defaults on the scenes users build (white, gradient and
 // textured backgrounds, lit and colour-mapped surfaces, text, scalar bars, corner annotations,
 // legends, a slider widget, several viewports, layers, an orientation marker, depth peeling and

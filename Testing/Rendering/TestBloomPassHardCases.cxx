@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The numerical hard cases of issue 4 on the GPU: vtkBloomPass::ApplyToImage on NaN/Inf input,
 // fireflies, every half value, wide dynamic range, tiny and odd sizes, the threshold at its edge
 // and negative input. Inputs come from vtkBloomHardCases, as for the CPU suite

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkBloomPass blooms light, not the frame (issue 35): at its defaults a frame with nothing above
 // 1 is the renderer's own, the background never blooms and the glow goes over it
 // (premultiplied), the annotations are drawn over the bloom, and an emitter glows whatever its

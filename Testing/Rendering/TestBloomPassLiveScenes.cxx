@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // vtkBloomPass on live scenes: multisampling kept, the glow's alpha over a transparent
 // background, the same look at every resolution (ReferenceHeight), and the field-lines scene's
 // tracer. Each test asserts what the issue asked of it (issue 30) and fails without the feature.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Temporal stability of the bloom on thin, moving geometry. The camera turns by sub-pixel steps
 // across a thin-line scene (the field lines) and a points scene; for every frame the scene's
 // energy (the sum of its luminance) and the bloom's added energy (the sum of the luminance of

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkBloomPass's PSF mode (vtkBloomParameters::BLOOM_PSF; the FFT of
 // vtkBloomPassFFT): the GPU against vtkImageBloom's PSF mode on the same float render for each
 // kind of PSF, both borders, an odd and an even size and a PSF as wide as the frame; the energy

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkBloomPass's content-aware chain (RestrictToBrightRegion: every pass after the
 // bright pass covers only the box its output can be non-zero in) against the full chain, bit
 // for bit, and of its fast mode (QUALITY_FAST) against the exact pass.

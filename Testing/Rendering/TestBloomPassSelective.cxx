@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Selective bloom in one render (issue 30, part 7): the emission written by the scene's own
 // shaders into a second attachment gives the image the emitters' second render gives, a scalar
 // range glows exactly where its scalar lies, and the pass falls back to the second render where

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Tiled frames bloom as one frame (issue 36, part 2): vtkWindowToImageFilter with a scale renders
 // a screenshot larger than the window in tiles, and ParaView's screenshots do the same. Each
 // tile renders with a guard band and the frame's chain cut to it (vtkBloomPassTile), so the

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // A sphere as users add one to a scene, lit or a lamp, for the rendering suites
 // (TestBloomPassLight.cxx, TestBloomPassTiles.cxx).
 #ifndef vtkBloomPassTestSphere_h

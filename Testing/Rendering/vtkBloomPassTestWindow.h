@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // The offscreen window the vtkBloomPass suites render in (TestBloomPass.cxx,
 // TestBloomPassLiveScenes.cxx).
 #ifndef vtkBloomPassTestWindow_h

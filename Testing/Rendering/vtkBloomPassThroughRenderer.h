@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // A delegate that renders the scene through the renderer (ClearLights, UpdateLights,
 // UpdateGeometry: the renderer's own culled props), as ParaView's vtkPVDefaultPass does under
 // its camera pass; for the rendering suites that must behave as in ParaView

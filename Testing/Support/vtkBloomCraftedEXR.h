@@ -1,3 +1,4 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 // SPDX-License-Identifier: BSD-3-Clause
 // Crafted OpenEXR files: valid files written by OpenEXR's C++ library, then one chunk's
 // streams rewritten so that they decode to fewer bytes or values than the header and channel

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkBloomGallery.h
  * @brief  The scenes of TestBloomPassGallery.cxx, built the way users build them, and the 8-bit

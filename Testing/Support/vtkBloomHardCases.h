@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file    vtkBloomHardCases.h
  * @brief   The numerical hard cases of issue 4: inputs, float64 references and expectations.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Hostile OpenEXR files, written byte by byte: valid-looking headers that claim what their
 // bytes cannot hold (huge data windows backed by a few hundred bytes, chunk tables that point
 // outside the file, impossible tile and level layouts, deep and multi-part variants), one set

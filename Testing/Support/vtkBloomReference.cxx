@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // An independent float64 reference of the vtk-bloom filters; see vtkBloomReference.h.
 // Deliberately written as GPU-style passes and direct convolutions, not as separable operators,
 // so that it shares no structure (and no code) with the library it checks.

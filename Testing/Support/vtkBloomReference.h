@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file    vtkBloomReference.h
  * @brief   An independent float64 reference of the vtk-bloom filters, for the test suites.

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // End-to-end tests of `vtk-bloom`: the acceptance commands, exit codes, and that nothing is
 // ever overwritten or left half-written.
 #include "vtkBloomParameters.h"

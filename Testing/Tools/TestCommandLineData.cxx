@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // End-to-end tests of `vtk-bloom render FILE` and `vtk-bloom view` on datasets that the test
 // writes itself with VTK's writers, in every format the tool reads: each renders; selective
 // bloom lands where the hot data is; a time series gives one differing frame per step; bad

@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // End-to-end tests of `vtk-bloom` on many files: hostile inputs refused fast with bounded
 // memory and nothing written, the FAST default against --exact, frames with nothing to bloom,
 // batch mode (-o OUTDIR) with failing files among good ones, --stats and --max-pixels.

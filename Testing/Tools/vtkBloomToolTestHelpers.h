@@ -1,3 +1,5 @@
+// SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+// SPDX-License-Identifier: BSD-3-Clause
 // Helpers of the vtk-bloom end-to-end tests: running the tool, measuring a run, and reading its
 // EXR output with OpenEXR directly (independently of vtkOpenEXRReader).
 #ifndef vtkBloomToolTestHelpers_h

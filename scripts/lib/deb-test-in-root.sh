@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Run by scripts/test-deb.sh inside a clean Debian root: install vtk-bloom's packages from
 # DEBDIR with apt and check that each works as installed, with no PYTHONPATH and no
 # LD_LIBRARY_PATH.

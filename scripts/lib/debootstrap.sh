@@ -1,3 +1,4 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 # Sourced by scripts/sid-root.sh and scripts/test-deb.sh: a minimal Debian root made without
 # touching the host's packages.

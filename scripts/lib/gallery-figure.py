@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """The gallery's table and figure (run by scripts/gallery.sh; not by hand).
 
     /usr/bin/python3 scripts/lib/gallery-figure.py OUT FIGURE.png DOC.md

@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # CMakeLists.txt for ThirdParty/glew/vtkglew in Debian's VTK 9.1 source, which strips the bundled
 # glew. scripts/lib/build-debian-vtk.sh (the OSMesa and the EGL builds) copies glew 2.2's src/glew.c
 # and include/GL/*.h beside it. GLEW_OSMESA makes glew resolve entry points with

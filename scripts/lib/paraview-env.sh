@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Make ParaView usable beside the system VTK, then run a command in that environment:
 #
 #   bash scripts/lib/paraview-env.sh [COMMAND [ARGS...]]

@@ -1,4 +1,6 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Join PNG images left to right into one PNG, optionally scaled:
 
     side-by-side.py [--scale F] OUT.png IN1.png IN2.png ...

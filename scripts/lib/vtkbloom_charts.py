@@ -1,3 +1,5 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 """Shared by the plot scripts: log-log charts drawn with VTK's own vtkChartXY, saved as PNG.
 
 Needs an X display (xvfb-run) with Debian's VTK. Not a script: imported by

@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
 # Run a command with DISPLAY set to a private Xvfb server, started here and stopped afterwards.
 #   scripts/lib/with-xvfb.sh COMMAND [ARGS...]
 # The system VTK 9.1 renders through X (GLX) only; the OSMesa build needs no display at all.

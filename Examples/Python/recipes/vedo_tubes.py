@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 """Recipe: a vedo scene with bloom: glowing field lines around a dark body (vedo 2023 and
 later).

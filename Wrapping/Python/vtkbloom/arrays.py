@@ -1,3 +1,4 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 """numpy in, numpy out: bloom, blur, read and write HDR frames without building a pipeline.
 

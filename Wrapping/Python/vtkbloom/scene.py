@@ -1,3 +1,4 @@
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 # SPDX-License-Identifier: BSD-3-Clause
 """Bloom for a scene in one call: a vtkRenderer, a vtkRenderWindow (every renderer), a
 pyvista.Plotter (every subplot) or a vedo.Plotter.
