@@ -332,10 +332,17 @@ inline double PixelDifference(vtkDataArray* a, vtkDataArray* b, vtkIdType p)
   return d;
 }
 
-vtkIdType Pixels(vtkImageData* a, vtkImageData* b)
+bool SameSize(vtkImageData* a, vtkImageData* b)
 {
-  return a->GetNumberOfPoints() == b->GetNumberOfPoints() ? a->GetNumberOfPoints() : 0;
+  int da[3], db[3];
+  a->GetDimensions(da);
+  b->GetDimensions(db);
+  return da[0] == db[0] && da[1] == db[1] && da[2] == db[2];
 }
+
+// Frames of different sizes are as far apart as frames can be: every pixel differs, by more
+// than any level.
+constexpr double NotComparable = 256.0;
 }
 
 double Difference(vtkImageData* a, vtkImageData* b, vtkIdType p)
@@ -345,7 +352,7 @@ double Difference(vtkImageData* a, vtkImageData* b, vtkIdType p)
 
 double MaxLevels(vtkImageData* a, vtkImageData* b)
 {
-  return MaxOver(a, b, std::vector<char>(Pixels(a, b), 1));
+  return MaxOver(a, b, std::vector<char>(a->GetNumberOfPoints(), 1));
 }
 
 double PercentOver(vtkImageData* a, vtkImageData* b, double levels)
@@ -358,8 +365,8 @@ std::vector<char> DifferenceMask(vtkImageData* a, vtkImageData* b, double levels
 {
   vtkDataArray* sa = a->GetPointData()->GetScalars();
   vtkDataArray* sb = b->GetPointData()->GetScalars();
-  std::vector<char> mask(Pixels(a, b), 0);
-  for (vtkIdType p = 0; p < static_cast<vtkIdType>(mask.size()); ++p)
+  std::vector<char> mask(a->GetNumberOfPoints(), SameSize(a, b) ? 0 : 1);
+  for (vtkIdType p = 0; p < static_cast<vtkIdType>(mask.size()) && SameSize(a, b); ++p)
   {
     mask[p] = PixelDifference(sa, sb, p) > levels ? 1 : 0;
   }
@@ -413,11 +420,15 @@ std::vector<char> Ring(
 //------------------------------------------------------------------------------
 double MeanOver(vtkImageData* a, vtkImageData* b, const std::vector<char>& mask)
 {
+  if (!SameSize(a, b))
+  {
+    return NotComparable;
+  }
   vtkDataArray* sa = a->GetPointData()->GetScalars();
   vtkDataArray* sb = b->GetPointData()->GetScalars();
   double sum = 0.0;
   long n = 0;
-  for (vtkIdType p = 0; p < static_cast<vtkIdType>(mask.size()) && p < Pixels(a, b); ++p)
+  for (vtkIdType p = 0; p < static_cast<vtkIdType>(mask.size()) && p < a->GetNumberOfPoints(); ++p)
   {
     if (mask[p])
     {
@@ -430,10 +441,14 @@ double MeanOver(vtkImageData* a, vtkImageData* b, const std::vector<char>& mask)
 
 double MaxOver(vtkImageData* a, vtkImageData* b, const std::vector<char>& mask)
 {
+  if (!SameSize(a, b))
+  {
+    return NotComparable;
+  }
   vtkDataArray* sa = a->GetPointData()->GetScalars();
   vtkDataArray* sb = b->GetPointData()->GetScalars();
   double most = 0.0;
-  for (vtkIdType p = 0; p < static_cast<vtkIdType>(mask.size()) && p < Pixels(a, b); ++p)
+  for (vtkIdType p = 0; p < static_cast<vtkIdType>(mask.size()) && p < a->GetNumberOfPoints(); ++p)
   {
     most = mask[p] ? std::max(most, PixelDifference(sa, sb, p)) : most;
   }
@@ -566,7 +581,8 @@ std::vector<double> AnnotationCoverage(Scene& scene)
   }
   vtkDataArray* b = black->GetPointData()->GetScalars();
   vtkDataArray* w = white->GetPointData()->GetScalars();
-  std::vector<double> coverage(Pixels(black, white), 0.0);
+  // Annotations over black and over white are one window's frames: the same size.
+  std::vector<double> coverage(SameSize(black, white) ? black->GetNumberOfPoints() : 0, 0.0);
   double backdrop = 0.0;
   for (size_t p = 0; p < coverage.size(); ++p)
   {

@@ -125,11 +125,14 @@ Frame GrabFloatPlain(Scene& scene);
 Frame Grab(vtkRenderWindow* window, int* errors = nullptr, Frame* presented = nullptr);
 /// The largest channel difference |a - b| of pixel `p`, in levels.
 double Difference(vtkImageData* a, vtkImageData* b, vtkIdType p);
-/// max over pixels and channels of |a - b|, in levels.
+/// max over pixels and channels of |a - b|, in levels. Frames of different sizes differ
+/// everywhere, by 256 levels (MaxOver and MeanOver too).
 double MaxLevels(vtkImageData* a, vtkImageData* b);
-/// The percentage of pixels whose largest channel difference exceeds `levels`.
+/// The percentage of pixels whose largest channel difference exceeds `levels` (100 for frames
+/// of different sizes).
 double PercentOver(vtkImageData* a, vtkImageData* b, double levels);
-/// Pixels whose largest channel difference exceeds `levels`.
+/// Pixels (of `a`) whose largest channel difference exceeds `levels`: all of them where the
+/// frames' sizes differ.
 std::vector<char> DifferenceMask(vtkImageData* a, vtkImageData* b, double levels);
 /// Pixels at a distance in (inner, outer] from the nearest pixel of `footprint`.
 std::vector<char> Ring(
@@ -141,7 +144,8 @@ double MaxOver(vtkImageData* a, vtkImageData* b, const std::vector<char>& mask);
 std::vector<char> OutsideViewport(vtkImageData* frame, vtkRenderer* renderer);
 /// The number of set pixels of a mask.
 long Count(const std::vector<char>& mask);
-/// The largest colour value of `pass`'s last float scene (its context must be current).
+/// The largest colour value of `pass`'s last float scene (its context must be current), or -1
+/// where the pass gives none back.
 double SceneMaximum(vtkBloomPass* pass);
 /**
  * The annotations' coverage per pixel (0 to 1): the plain frame of the annotations alone
