@@ -127,8 +127,9 @@ public:
 
   /**
    * Only light blooms: the emitters whatever their colour (`selective`), not the background,
-   * not the annotations (the delegate's overlay, drawn after the composite); translucency as
-   * the renderer draws it. A layer blooms over the layers below it.
+   * not the annotations (the delegate's overlay, drawn after the composite); translucency and
+   * hidden lines as the frame without the pass has them. A layer blooms over the layers below
+   * it.
    */
   void PlanWhatBlooms(vtkBloomPass* self, const vtkRenderState* s, bool selective)
   {
@@ -138,9 +139,17 @@ public:
     this->Runner.CompositeOver = r->Transparent();
     self->LastAnnotationsOverBloom =
       !self->BloomAnnotations && this->Steps.DetachOverlay(self->DelegatePass) > 0;
-    this->Steps.RemoveHiddenLines(s, self->DelegatePass);
-    const bool oit =
-      this->Steps.WrapTranslucency(s, self->DelegatePass) == vtkBloomPassSteps::ORDER_INDEPENDENT;
+    // The renderer removes hidden lines and draws translucency through depth peeling or OIT
+    // only where it has no pass: where this pass is its own, the pass does it in its place.
+    // Inside other passes (PyVista's SSAA, SSAO, ...) the frame without bloom draws them with
+    // the plain steps, and so does the scene here.
+    bool oit = false;
+    if (r->GetPass() == self)
+    {
+      this->Steps.RemoveHiddenLines(s, self->DelegatePass);
+      oit = this->Steps.WrapTranslucency(s, self->DelegatePass) ==
+        vtkBloomPassSteps::ORDER_INDEPENDENT;
+    }
     vtkRenderPass* processing = vtkBloomPassSteps::FindImageProcessing(self->DelegatePass);
     if (!self->BloomBackground && !r->Transparent())
     {

@@ -66,16 +66,16 @@
  * then the renderer's own frame to float rounding. Renderers on higher layers (an orientation
  * marker) render after this one and stay on top; a layered renderer with this pass blooms over
  * the layers below it. While a vtkHardwareSelector renders (picking), the delegate renders
- * directly, without bloom, so the ids reach the selector untouched. Translucent geometry is
- * drawn as the renderer draws it without a pass: a vtkRenderStepsPass's plain translucent step
- * is wrapped, while the scene renders, in depth peeling (the renderer's UseDepthPeeling, its
- * peels and occlusion ratio) or in order-independent transparency; where the renderer removes
- * hidden lines (UseHiddenLineRemoval), its plain opaque step draws as the renderer's own does,
- * through a vtkHiddenLineRemovalPass. VTK applies a renderer's
- * FXAA (UseFXAA) only where the renderer has no pass: where this pass is the renderer's own, it
- * applies it as the renderer would, after the composite and before the annotations. It never
- * runs inside the scene render, where a delegate that renders through the renderer (ParaView's)
- * would apply it to the float scene in 8 bits.
+ * directly, without bloom, so the ids reach the selector untouched. VTK draws translucency
+ * through depth peeling or order-independent transparency, removes hidden lines
+ * (UseHiddenLineRemoval) and applies FXAA (UseFXAA) only where a renderer has no pass. Where
+ * this pass is the renderer's own, it does each as the renderer would: a vtkRenderStepsPass's
+ * plain translucent step is wrapped, while the scene renders, in depth peeling (the renderer's
+ * UseDepthPeeling, its peels and occlusion ratio) or order-independent transparency, its plain
+ * opaque step draws through a vtkHiddenLineRemovalPass, and FXAA runs after the composite and
+ * before the annotations. Inside other passes the plain steps stay, as in the frame without
+ * bloom. FXAA never runs inside the scene render, where a delegate that renders through the
+ * renderer (ParaView's) would apply it to the float scene in 8 bits.
  *
  * Tiled frames. A screenshot larger than the window (vtkWindowToImageFilter with a scale, a
  * ParaView screenshot larger than its view) renders in tiles. Each tile renders with a guard

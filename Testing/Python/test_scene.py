@@ -12,7 +12,7 @@ import unittest
 
 import numpy as np
 from vtkmodules.util import numpy_support
-from vtkmodules.vtkFiltersSources import vtkSphereSource
+from vtkmodules.vtkFiltersSources import vtkCubeSource, vtkSphereSource
 from vtkmodules.vtkRenderingCore import (
     vtkActor,
     vtkPolyDataMapper,
@@ -238,6 +238,30 @@ class AddBloom(unittest.TestCase):
         plain = grab(window)
         # The check can fail: the labels are a visible part of the frame.
         self.assertGreater((np.abs(plain - without).max(axis=-1) > 8).mean(), 0.02)
+        vtkbloom.add_bloom(renderer)
+        self.assertLessEqual(np.abs(grab(window) - plain).max(), 1)
+        vtkbloom.remove_bloom(renderer)
+
+    def test_translucency_inside_ssaa_as_without_bloom(self):
+        # Inside other passes (PyVista's SSAA here) the frame without bloom draws translucency
+        # with the plain translucent step, not the renderer's order-independent transparency:
+        # the pass leaves that step as it is (PyVista's plot_cell examples were 12 to 17 levels
+        # off where it wrapped it).
+        window, (actor,) = scene(colour=(0.7, 0.85, 0.9), size=(160, 120))
+        actor.GetProperty().SetOpacity(0.5)
+        renderer = window.GetRenderers().GetFirstRenderer()
+        renderer.SetBackground(1, 1, 1)
+        cube = vtkCubeSource()
+        mapper = vtkPolyDataMapper()
+        mapper.SetInputConnection(cube.GetOutputPort())
+        box = vtkActor()
+        box.SetMapper(mapper)
+        box.GetProperty().SetColor(0.8, 0.7, 0.5)
+        box.SetPosition(0.3, 0, -1)
+        renderer.AddActor(box)
+        renderer.ResetCamera()
+        pyvista_like(renderer, vtkSSAAPass())
+        plain = grab(window)
         vtkbloom.add_bloom(renderer)
         self.assertLessEqual(np.abs(grab(window) - plain).max(), 1)
         vtkbloom.remove_bloom(renderer)
