@@ -147,8 +147,8 @@ public:
     if (r->GetPass() == self)
     {
       this->Steps.RemoveHiddenLines(s, self->DelegatePass);
-      oit = this->Steps.WrapTranslucency(s, self->DelegatePass) ==
-        vtkBloomPassSteps::ORDER_INDEPENDENT;
+      oit =
+        this->Steps.WrapTranslucency(s, self->DelegatePass) == vtkBloomPassSteps::ORDER_INDEPENDENT;
     }
     vtkRenderPass* processing = vtkBloomPassSteps::FindImageProcessing(self->DelegatePass);
     if (!self->BloomBackground && !r->Transparent())
