@@ -241,6 +241,14 @@ public:
   void EndProfiledSpan(const std::string& name, int width, int height, double bytes);
   void ResolveProfile();
 
+  /**
+   * Whether the current context runs compute shaders as the pass writes them: OpenGL 4.3, or
+   * an older context that lists GL_ARB_compute_shader, GL_ARB_shader_image_load_store and
+   * GL_ARB_shader_storage_buffer_object; their entry points loaded. `version`: major * 10 +
+   * minor.
+   */
+  static bool ContextRunsCompute(int* version = nullptr);
+
 private:
   // Values shared with vtkBloomPassFS.glsl, emitted into the shader as #defines.
   enum

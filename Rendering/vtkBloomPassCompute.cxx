@@ -162,15 +162,45 @@ void vtkBloomPassChainRunner::Uniforms::Floats(const char* name, int count, cons
 }
 
 //------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::ContextRunsCompute(int* version)
+{
+  GLint major = 0, minor = 0;
+  glGetIntegerv(GL_MAJOR_VERSION, &major);
+  glGetIntegerv(GL_MINOR_VERSION, &minor);
+  if (version)
+  {
+    *version = major * 10 + minor;
+  }
+  // An older context may list what OpenGL 4.3 made core: VTK 9.6's EGL window asks for 3.2,
+  // and NVIDIA's driver gives exactly 3.2, with every extension of the card.
+  bool extensions = true;
+  if (major * 10 + minor < 43)
+  {
+    int found = 0;
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i)
+    {
+      const GLubyte* name = glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i));
+      const std::string extension = name ? reinterpret_cast<const char*>(name) : "";
+      found += extension == "GL_ARB_compute_shader" ||
+          extension == "GL_ARB_shader_image_load_store" ||
+          extension == "GL_ARB_shader_storage_buffer_object"
+        ? 1
+        : 0;
+    }
+    extensions = found == 3;
+  }
+  return extensions && glDispatchCompute && glBindImageTexture && glMemoryBarrier &&
+    glBindBufferBase;
+}
+
+//------------------------------------------------------------------------------
 bool vtkBloomPassChainRunner::ComputeSupported()
 {
   if (this->ComputeSupport == 0)
   {
-    GLint major = 0, minor = 0;
-    glGetIntegerv(GL_MAJOR_VERSION, &major);
-    glGetIntegerv(GL_MINOR_VERSION, &minor);
-    this->GLVersion = major * 10 + minor;
-    this->ComputeSupport = this->GLVersion >= 43 && glDispatchCompute ? 1 : -1;
+    this->ComputeSupport = ContextRunsCompute(&this->GLVersion) ? 1 : -1;
   }
   return this->ComputeSupport > 0;
 }

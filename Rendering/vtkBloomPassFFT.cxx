@@ -263,13 +263,11 @@ bool vtkBloomPassFFT::Prepare(
     this->ReleaseGraphicsResources(this->Context);
   }
   this->Context = context;
-  GLint major = 0, minor = 0;
-  glGetIntegerv(GL_MAJOR_VERSION, &major);
-  glGetIntegerv(GL_MINOR_VERSION, &minor);
-  if (major * 10 + minor < 43 || !glDispatchCompute)
+  int version = 0;
+  if (!vtkBloomPassChainRunner::ContextRunsCompute(&version))
   {
     why = "PSF bloom needs OpenGL 4.3 compute shaders; this context has OpenGL " +
-      std::to_string(major) + "." + std::to_string(minor) + ".";
+      std::to_string(version / 10) + "." + std::to_string(version % 10) + ".";
     return false;
   }
   int grid[2];

@@ -35,6 +35,15 @@ vtkbloom_add_gtest(TestBloomPassRegion OPENGL
   LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom
     VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonDataModel VTK::CommonCore)
 vtk_module_autoinit(TARGETS TestBloomPassRegion MODULES VTK::RenderingOpenGL2)
+# The compute passes in an older context that lists their extensions (NVIDIA's 3.2 under VTK
+# 9.6's EGL window): Mesa reports OpenGL 3.3 here.
+if (VTKBLOOM_ENABLE_RENDERING)
+  add_test(NAME RenderingBloomPassCompute.InAnOpenGL33Context
+    COMMAND TestBloomPassRegion
+      --gtest_filter=RenderingBloomPassCompute.OlderContextWithTheExtensions)
+  set_tests_properties(RenderingBloomPassCompute.InAnOpenGL33Context PROPERTIES
+    ENVIRONMENT "MESA_GL_VERSION_OVERRIDE=3.3;VTKBLOOM_EXPECT_OLDER_CONTEXT=1")
+endif ()
 
 # Light, not the frame (issue 35): the defaults, the background, the annotations, emitters.
 # Text needs VTK's FreeType module (every VTK the scripts build or install has it).

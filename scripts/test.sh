@@ -63,7 +63,8 @@ require_tests() {
 # The groups every rendering build has (VTK with FreeType, annotations and widgets: Debian's,
 # sid's and the cached OSMesa and EGL prefixes alike).
 rendering_tests=('RenderingBloomPass[.]' 'RenderingBloomPassLight[.]' 'RenderingGallery[.]'
-  'RenderingBloomPassTiles[.]' 'RenderingBloomPassMotion[.]' 'CommandLine[.]')
+  'RenderingBloomPassTiles[.]' 'RenderingBloomPassMotion[.]' 'CommandLine[.]'
+  'RenderingBloomPassCompute[.]InAnOpenGL33Context')
 # And where the package is wrapped for Python (not in the sanitizer build, not in the cached
 # prefixes' builds, whose VTK has no Python).
 python_tests=('Python[.]vtkbloom' 'Python[.]arrays' 'Python[.]scene' 'Python[.]ParaViewXML'
