@@ -67,6 +67,25 @@ void vtkBloomPassSteps::Walk(
 }
 
 //------------------------------------------------------------------------------
+vtkRenderStepsPass* vtkBloomPassSteps::FindPlainStep(
+  vtkRenderPass* delegate, vtkRenderPass* (vtkRenderStepsPass::*get)(), const char* className)
+{
+  vtkRenderStepsPass* found = nullptr;
+  Walk(delegate, nullptr, -1, 0,
+    [&](vtkRenderPass* pass, vtkSequencePass*, int)
+    {
+      auto* steps = vtkRenderStepsPass::SafeDownCast(pass);
+      vtkRenderPass* step = steps ? (steps->*get)() : nullptr;
+      // Only VTK's plain step, by its exact class: a user's own step is theirs.
+      if (!found && step && std::strcmp(step->GetClassName(), className) == 0)
+      {
+        found = steps;
+      }
+    });
+  return found;
+}
+
+//------------------------------------------------------------------------------
 int vtkBloomPassSteps::DetachOverlay(vtkRenderPass* delegate)
 {
   Walk(delegate, nullptr, -1, 0,
@@ -140,18 +159,8 @@ vtkBloomPassSteps::Translucency vtkBloomPassSteps::WrapTranslucency(
   {
     translucent = s->GetPropArray()[i]->HasTranslucentPolygonalGeometry() != 0;
   }
-  vtkRenderStepsPass* found = nullptr;
-  Walk(delegate, nullptr, -1, 0,
-    [&found](vtkRenderPass* pass, vtkSequencePass*, int)
-    {
-      auto* steps = vtkRenderStepsPass::SafeDownCast(pass);
-      vtkRenderPass* step = steps ? steps->GetTranslucentPass() : nullptr;
-      // Only VTK's plain step: a user's own translucency is theirs.
-      if (!found && step && std::strcmp(step->GetClassName(), "vtkTranslucentPass") == 0)
-      {
-        found = steps;
-      }
-    });
+  vtkRenderStepsPass* found =
+    FindPlainStep(delegate, &vtkRenderStepsPass::GetTranslucentPass, "vtkTranslucentPass");
   if (!translucent || !found)
   {
     return NO_TRANSLUCENCY;
@@ -209,18 +218,8 @@ bool vtkBloomPassSteps::RemoveHiddenLines(const vtkRenderState* s, vtkRenderPass
   {
     return false;
   }
-  vtkRenderStepsPass* found = nullptr;
-  Walk(delegate, nullptr, -1, 0,
-    [&found](vtkRenderPass* pass, vtkSequencePass*, int)
-    {
-      auto* steps = vtkRenderStepsPass::SafeDownCast(pass);
-      vtkRenderPass* step = steps ? steps->GetOpaquePass() : nullptr;
-      // Only VTK's plain step: a user's own opaque step is theirs.
-      if (!found && step && std::strcmp(step->GetClassName(), "vtkOpaquePass") == 0)
-      {
-        found = steps;
-      }
-    });
+  vtkRenderStepsPass* found =
+    FindPlainStep(delegate, &vtkRenderStepsPass::GetOpaquePass, "vtkOpaquePass");
   if (!found)
   {
     return false;

@@ -128,6 +128,11 @@ private:
   static void Walk(
     vtkRenderPass* pass, vtkSequencePass* sequence, int index, int depth, const Visit& visit);
 
+  /// The first vtkRenderStepsPass reachable from `delegate` whose step `get` is of the class
+  /// `className` exactly (VTK's plain step), or null.
+  static vtkRenderStepsPass* FindPlainStep(
+    vtkRenderPass* delegate, vtkRenderPass* (vtkRenderStepsPass::*get)(), const char* className);
+
   struct Slot
   {
     vtkRenderStepsPass* Steps = nullptr; ///< its OverlayPass or TranslucentPass, or

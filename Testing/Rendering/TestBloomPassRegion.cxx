@@ -634,6 +634,46 @@ public:
 }
 
 //------------------------------------------------------------------------------
+/// lit-spheres in a 160 x 90 window without samples, the pass the renderer's own and its result
+/// captured; Result() reads it and frees the pass's resources.
+struct LitSpheres
+{
+  vtkNew<vtkRenderWindow> Window;
+  vtkNew<vtkRenderer> Renderer;
+  vtkNew<vtkBloomPass> Bloom;
+  vtkNew<vtkRenderStepsPass> Steps;
+
+  bool Build()
+  {
+    this->Window->SetOffScreenRendering(1);
+    this->Window->SetMultiSamples(0);
+    this->Window->SetSize(160, 90);
+    this->Bloom->SetDelegatePass(this->Steps);
+    if (!vtkBloomBuildExampleScene("lit-spheres", this->Renderer, this->Bloom))
+    {
+      return false;
+    }
+    this->Bloom->CaptureResultOn();
+    this->Renderer->SetPass(this->Bloom);
+    this->Window->AddRenderer(this->Renderer);
+    return true;
+  }
+
+  std::vector<float> Result()
+  {
+    vtkNew<vtkImageData> result;
+    std::vector<float> values;
+    if (this->Bloom->ReadResultImage(result))
+    {
+      const float* first = static_cast<const float*>(result->GetScalarPointer());
+      values.assign(first, first + 4 * result->GetNumberOfPoints());
+    }
+    this->Bloom->ReleaseGraphicsResources(this->Window);
+    return values;
+  }
+};
+
+//------------------------------------------------------------------------------
 // A compute variant that does not build falls back to the fragment pass: one warning over
 // several frames, no OpenGL error, no more compute passes than with compute shaders off (the
 // bright region's reduction has its own program and fallback), and the same result, bit for bit
@@ -644,36 +684,23 @@ TEST(RenderingBloomPassCompute, FailedComputeProgramFallsBackToFragments)
   int computePasses[2] = { 0, 0 };
   for (const bool simulate : { false, true })
   {
-    vtkNew<vtkRenderWindow> window;
-    window->SetOffScreenRendering(1);
-    window->SetMultiSamples(0);
-    window->SetSize(160, 90);
-    vtkNew<vtkRenderer> renderer;
-    vtkNew<vtkBloomPass> bloom;
-    vtkNew<vtkRenderStepsPass> steps;
-    bloom->SetDelegatePass(steps);
-    ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", renderer, bloom));
-    bloom->CaptureResultOn();
-    bloom->SetUseComputeShaders(simulate); // off: the reference fragment passes
-    bloom->SetSimulateComputeShaderFailure(simulate);
-    renderer->SetPass(bloom);
-    window->AddRenderer(renderer);
+    LitSpheres run;
+    ASSERT_TRUE(run.Build());
+    run.Bloom->SetUseComputeShaders(simulate); // off: the reference fragment passes
+    run.Bloom->SetSimulateComputeShaderFailure(simulate);
     vtkNew<WarningLog> warnings;
-    bloom->AddObserver(vtkCommand::WarningEvent, warnings);
-    bloom->AddObserver(vtkCommand::ErrorEvent, warnings);
+    run.Bloom->AddObserver(vtkCommand::WarningEvent, warnings);
+    run.Bloom->AddObserver(vtkCommand::ErrorEvent, warnings);
     for (int frame = 0; frame < 3; ++frame)
     {
-      window->Render();
+      run.Window->Render();
       EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-      computePasses[simulate ? 1 : 0] = bloom->GetLastComputePasses();
+      computePasses[simulate ? 1 : 0] = run.Bloom->GetLastComputePasses();
     }
     EXPECT_EQ(warnings->Count, simulate && ComposesByCompute() ? 1 : 0);
-    vtkNew<vtkImageData> result;
-    ASSERT_TRUE(bloom->ReadResultImage(result));
-    const float* values = static_cast<const float*>(result->GetScalarPointer());
-    results[simulate ? 1 : 0].assign(values, values + 4 * result->GetNumberOfPoints());
-    bloom->ReleaseGraphicsResources(window);
+    results[simulate ? 1 : 0] = run.Result();
   }
+  ASSERT_FALSE(results[0].empty());
   EXPECT_TRUE(results[0] == results[1]);
   EXPECT_EQ(computePasses[1], computePasses[0]);
 }
@@ -691,30 +718,16 @@ TEST(RenderingBloomPassCompute, OlderContextWithTheExtensions)
   int version = 0;
   for (const bool compute : { false, true })
   {
-    vtkNew<vtkRenderWindow> window;
-    window->SetOffScreenRendering(1);
-    window->SetMultiSamples(0);
-    window->SetSize(160, 90);
-    vtkNew<vtkRenderer> renderer;
-    vtkNew<vtkBloomPass> bloom;
-    vtkNew<vtkRenderStepsPass> steps;
-    bloom->SetDelegatePass(steps);
-    ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", renderer, bloom));
-    bloom->CaptureResultOn();
-    bloom->SetUseComputeShaders(compute);
-    renderer->SetPass(bloom);
-    window->AddRenderer(renderer);
-    window->Render();
+    LitSpheres run;
+    ASSERT_TRUE(run.Build());
+    run.Bloom->SetUseComputeShaders(compute);
+    run.Window->Render();
     GLint major = 0, minor = 0;
     glGetIntegerv(GL_MAJOR_VERSION, &major);
     glGetIntegerv(GL_MINOR_VERSION, &minor);
     version = major * 10 + minor;
-    computePasses[compute ? 1 : 0] = bloom->GetLastComputePasses();
-    vtkNew<vtkImageData> result;
-    ASSERT_TRUE(bloom->ReadResultImage(result));
-    const float* values = static_cast<const float*>(result->GetScalarPointer());
-    results[compute ? 1 : 0].assign(values, values + 4 * result->GetNumberOfPoints());
-    bloom->ReleaseGraphicsResources(window);
+    computePasses[compute ? 1 : 0] = run.Bloom->GetLastComputePasses();
+    results[compute ? 1 : 0] = run.Result();
   }
   if (version >= 43)
   {
@@ -731,6 +744,7 @@ TEST(RenderingBloomPassCompute, OlderContextWithTheExtensions)
     difference += (results[1][i] - results[0][i]) * (results[1][i] - results[0][i]);
     norm += results[0][i] * results[0][i];
   }
+  ASSERT_FALSE(results[0].empty());
   ASSERT_EQ(results[0].size(), results[1].size());
   EXPECT_LE(std::sqrt(difference / std::max(norm, 1e-30)), 1e-6);
 }
