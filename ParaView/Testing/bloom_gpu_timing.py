@@ -23,7 +23,8 @@ every frame renders. A frame is the wall time of a still render on rank 0 up to 
   libvtkRenderingBloom.so, the pass found on the renderer's pass chain.
 
 Prints one line per mode, `timing-json {...}`: mean, median, p99 (the 99th of 100 sorted) and
-max of each series in milliseconds (bytes: mean), and IceT's strategy.
+max of each series in milliseconds (bytes: mean), IceT's strategy, and with bloom how many of
+the chain's passes the last frame ran, and how many of those as compute shaders.
 """
 import ctypes
 import glob
@@ -76,6 +77,11 @@ chain_ms = None
 if bloom_library is not None:
     chain_ms = bloom_library._ZN12vtkBloomPass24GetLastChainMillisecondsEv
     chain_ms.restype, chain_ms.argtypes = ctypes.c_double, [ctypes.c_void_p]
+    # How many of the chain's passes ran as compute shaders, of how many (the last frame's).
+    compute_passes = bloom_library._ZN12vtkBloomPass20GetLastComputePassesEv
+    all_passes = bloom_library._ZN12vtkBloomPass17GetNumberOfPassesEv
+    for getter in (compute_passes, all_passes):
+        getter.restype, getter.argtypes = ctypes.c_int, [ctypes.c_void_p]
 icet = loaded('libvtkIceTCore-pv*.so*') if ranks > 1 else None
 if icet is not None:
     icet.icetGetDoublev.argtypes = [ctypes.c_uint, ctypes.POINTER(ctypes.c_double)]
@@ -133,4 +139,7 @@ for mode, use_bloom, float_composite in (('plain', 0, 1), ('bloom-8bit', 1, 0),
               'single_image_strategy':
                   icet.icetGetSingleImageStrategyName().decode() if icet else None}
     record.update({k: stats(v) for k, v in series.items()})
+    if use_bloom and chain_ms is not None and address:
+        record['passes'] = all_passes(address)
+        record['compute_passes'] = compute_passes(address)
     print('timing-json ' + json.dumps(record, sort_keys=True), flush=True)
