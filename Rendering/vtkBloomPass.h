@@ -5,146 +5,36 @@
  * @brief   HDR bloom as a render pass: the vtkBloomParameters chain as GLSL passes on float
  *          targets.
  *
- * The delegate pass renders the scene into a floating-point framebuffer (RGBA16F by default,
- * RGBA32F with SetFloatPrecisionTo32Bit()), so nothing above 1 is clipped before the bloom:
- * VTK's vtkImageProcessingPass::RenderDelegate renders into 8-bit targets, which is why
- * vtkGaussianBlurPass cannot bloom HDR content. The pass then evaluates the chain its
- * vtkBloomParameters describe (GetParameters(); the same parameters and presets as
- * vtkImageBloom's, and a pass and a filter can share one) as full-screen GLSL passes, and
- * composites the result into the framebuffer that was bound when the pass started, at the
- * renderer's viewport:
+ * The delegate renders the scene into a floating-point target (RGBA16F by default, RGBA32F
+ * with SetFloatPrecisionTo32Bit()), so nothing above 1 is clipped before the bloom. The pass
+ * then evaluates the chain its vtkBloomParameters describe (GetParameters(): the parameters
+ * and presets of vtkImageBloom, which a pass and a filter can share) and composites the result
+ * into the framebuffer bound when it started, at the renderer's viewport:
  *
  *   threshold -> pyramid down -> per-level separable blur -> upsample-accumulate -> composite.
  *
- * The operators of every step come from vtkBloomChain, which builds them with the same C++ code
- * as the CPU filters; they are uploaded as small float textures (one row per output sample:
- * first input index and band weights) and applied with exact texel fetches. Hardware bilinear
- * filtering is never used, so odd sizes, clamped borders and composed blur iterations match the
- * CPU chain, and the GPU result agrees with vtkImageBloom applied to the same float render to
- * within float rounding (tested per preset).
+ * The operators come from vtkBloomChain, the CPU filters' own code, applied with exact texel
+ * fetches: the result is vtkImageBloom's on the same float render to float rounding.
  *
- * Multisampling. Where the framebuffer the pass is called with is multisampled (VTK's render
- * window asks for samples by default), the delegate renders into a multisampled float target
- * with as many samples, resolved once (in float) before the bright pass, so thin lines keep
- * their anti-aliasing. The composite into such a framebuffer is a fragment pass (a compute
- * shader cannot write a multisampled image); elsewhere it is a compute pass where it can be.
+ * Only light blooms: what the bright pass lets through (at the defaults, colour above 1, by
+ * its excess) and, with SetEmissionSourceToEmitters(), the props given to AddEmitter() or
+ * AddScalarRangeEmitter(). The background, the annotations (the delegate's overlay, drawn over
+ * the bloom) and everything at or below display white are not light, so a frame with nothing
+ * above 1 is the renderer's own frame to float rounding: multisampled edges, translucency,
+ * hidden lines, FXAA, layers and picking as the renderer draws them, and the scene's depth
+ * under the result for what reads it next.
  *
- * Alpha. Where the scene is opaque the output alpha is 1, as the scene's. Over a transparent
- * background (a renderer background alpha below 1 in a window with alpha planes) the glow
- * carries alpha: the colour stays premultiplied (scene + glow) and the alpha becomes
- * a + (1 - a) min(1, max(glow's channels)), so a figure saved with alpha and composited over
- * black or white shows its halo on both. ApplyToImage, like vtkImageBloom, keeps the image's
- * alpha.
+ * Chain it before vtkToneMappingPass to bloom in linear HDR and tone-map afterwards. The pass
+ * needs OpenGL 3.2 and works with any vtkOpenGLRenderWindow (X, OSMesa or EGL); where the
+ * context runs compute shaders (OpenGL 4.3, or the ARB extensions that brought them) its passes
+ * run as compute shaders. Resources are made on first use and remade when the size, the
+ * precision or the parameters change; ReleaseGraphicsResources frees them and forwards to the
+ * delegate.
  *
- * Selective bloom. By default every pixel of the scene can bloom (EMISSION_SCENE). With
- * SetEmissionSourceToEmitters() only the props given with AddEmitter() bloom, and occluded
- * emitters do not shine through. Where it can, the pass writes the emission in the scene's own
- * render: its shader replacement (vtkOpenGLRenderPass's, as vtkSSAOPass extends the mappers'
- * shaders) makes every polydata mapper's fragment shader add its emission weight (1 for an
- * emitter, 0 for any other prop) to the alpha of its opaque fragment, and the bright pass reads
- * the scene's colour where that alpha is above 1. A copy of an actor made by
- * CreateScalarRangeEmitter makes only a scalar range of that actor glow, for example the hot
- * spots of a temperature field; where the actor colours through a texture
- * (InterpolateScalarsBeforeMapping), the weight is 1 where the actor's interpolated scalar lies
- * in the range, in the same render. Where a prop of the scene cannot carry the weight (2D
- * actors, volumes, translucent geometry, glyph mappers), or an emitter is not drawn by the
- * scene, or EmitInSceneRender is off, the emitters are rendered a second time, alone, into an
- * emission buffer, and a sample counts only where the emitter is the visible surface (its depth
- * is not behind the scene's). Both ways give the same image to float rounding without
- * multisampling (tested); GetLastEmissionInSceneRender() says which ran.
- *
- * Light, not the frame. Only light blooms: what the bright pass lets through (at the defaults of
- * vtkBloomParameters, colour above 1, by its excess) and the emitters. The renderer's background
- * is not light: by default (BloomBackground off) the scene renders over transparent black, only
- * it enters the bright pass, and the composite puts the scene and its glow over the background
- * as the renderer draws it (solid, gradient or textured): out = keep scene + glow +
- * (1 - a)(1 - g) background, with a the scene's coverage and g the glow's largest channel, so
- * that a glow shows as colour over a light background instead of saturating it (Mol*'s
- * premultiplied-over). Annotations are not light either: by default (BloomAnnotations off) the
- * delegate's overlay step (text, scalar bars, corner annotations, legends, 2D widgets) is drawn
- * after the composite, over the bloom, crisp. A frame with nothing above 1 and no emitter is
- * then the renderer's own frame to float rounding. Renderers on higher layers (an orientation
- * marker) render after this one and stay on top; a layered renderer with this pass blooms over
- * the layers below it. While a vtkHardwareSelector renders (picking), the delegate renders
- * directly, without bloom, so the ids reach the selector untouched. VTK draws translucency
- * through depth peeling or order-independent transparency, removes hidden lines
- * (UseHiddenLineRemoval) and applies FXAA (UseFXAA) only where a renderer has no pass. Where
- * this pass is the renderer's own, it does each as the renderer would: a vtkRenderStepsPass's
- * plain translucent step is wrapped, while the scene renders, in depth peeling (the renderer's
- * UseDepthPeeling, its peels and occlusion ratio) or order-independent transparency, its plain
- * opaque step draws through a vtkHiddenLineRemovalPass, and FXAA runs after the composite and
- * before the annotations. Inside other passes the plain steps stay, as in the frame without
- * bloom. FXAA never runs inside the scene render, where a delegate that renders through the
- * renderer (ParaView's) would apply it to the float scene in 8 bits.
- *
- * Tiled frames. A screenshot larger than the window (vtkWindowToImageFilter with a scale, a
- * ParaView screenshot larger than its view) renders in tiles. Each tile renders with a guard
- * band, the samples of the frame its glow reads, and the frame's chain cut to it, so the tiled
- * frame is the larger window's frame to float rounding, with no seams (SeamlessTiles,
- * vtkBloomPassTile).
- *
- * Chain it before vtkToneMappingPass (tone mapping's delegate is this pass) to bloom in linear
- * HDR and tone-map afterwards. Resources are made on first use and remade when the viewport
- * size, the precision or the parameters change; ReleaseGraphicsResources frees them and
- * forwards to the delegate. The pass needs OpenGL 3.2 and works with any vtkOpenGLRenderWindow
- * (X, OSMesa or EGL).
- *
- * Content-aware work. With the parameters' RestrictToBrightRegion on (vtkImageBloom's default),
- * the bright pass is reduced on the GPU to the bounding box of its non-zero samples (two or
- * three small passes and a read-back of a few kilobytes, which also replaces SkipEmptyBloom's
- * occlusion query), and every later pass covers only the box of samples its output can be
- * non-zero in, found from its operators' bands; the composite adds no bloom outside the last
- * box. The output is the same bit for bit as with it off (tested): when few pixels are bright,
- * most of the chain is not computed. The read-back makes the CPU wait for the GPU; while the
- * region covers a quarter of the chain or more, it is measured only every 8th render, and the
- * renders in between run the full chain with no read-back (and no occlusion query).
- * GetLastBrightRegion() and GetLastChainCoverage() report what the last render computed.
- *
- * Quality. QUALITY_EXACT (the default) is the chain above, to float rounding. QUALITY_FAST is
- * an opt-in approximation for interactive use: the chain's levels are half floats read through
- * bilinear filtering, and the translation-invariant interior of every operator after the
- * bright pass is evaluated by pairs of taps, each pair one hardware bilinear fetch (the
- * 13-tap downsample's 4 x 4 band as 2 x 2 fetches, a 1:2 tent as one fetch per axis), with the
- * two-dimensional steps fused into one pass where that is cheaper. Its error against the exact
- * pass is measured per preset in docs/gpu.md (vtkImageBloom's ExecutionMode FAST, by contrast,
- * is exact to float rounding: the two names share only their intent).
- *
- * Compute shaders. Where the context has OpenGL 4.3, the chain's passes into its own targets
- * run as compute shaders compiled from the same shader file (UseComputeShaders, default on).
- * So does the composite into the framebuffer the pass was called with, where that
- * framebuffer's colour buffer is a single-sample RGBA8, RGBA16F or RGBA32F texture (VTK's own
- * render framebuffer without multisampling, vtkToneMappingPass's and vtkFramebufferPass's
- * targets) and the context has OpenGL 4.5; else it is a fragment pass.
- *
- * Wide blurs. A level's blur whose operator is wide (the ping-pong preset's 32 clamped passes
- * folded into 385 taps, a large BlurStandardDeviation) runs through an FFT in compute shaders
- * where the parameters' ConvolutionMode asks for it (FFT) or, in AUTOMATIC, where its modeled
- * cost is below the direct pass's (vtkBloomPassFFTBlur): the line extended by the clamped
- * border and zero padded, one transform, the product with the kernel's spectrum, one more
- * transform, and vtkBloomFFTConvolution's low-rank border corrections, the same operator to
- * float rounding. Without compute shaders the direct passes run. The profile names these
- * passes "blur-x-fft", "blur-x-fft-finish", "blur-y-fft" and "blur-y-fft-finish".
- *
- * PSF mode. With the parameters' BloomMode BLOOM_PSF the pass runs vtkImageBloom's PSF mode:
- * the bright pass at full resolution (the chain's threshold, no resample), its convolution
- * with one PSF per colour channel (built by vtkImageBloom::ComputePSF, the filter's own code)
- * through a 2-D FFT in compute shaders (vtkBloomPassFFT: zero padded so nothing wraps, then
- * folded back by REFLECT or dropped by ZERO borders), and the same composite. It needs OpenGL
- * 4.3 compute shaders whatever UseComputeShaders says. A grid line longer than 4096 samples
- * (the image plus twice the PSF radius) is transformed in four steps, up to 65536 samples
- * (3840 x 2160 with a PSF as wide as the frame: a 7680 x 6000 grid, 1.3 GB of buffers).
- * Without compute shaders, or for a longer line or buffers over vtkBloomPassFFT's limits
- * (2 GiB a buffer, the context's largest shader storage block), the pass reports an error
- * once and renders the scene without bloom. The PSFs' spectra are made again only when
- * the parameters or the size change. No chain is built in PSF mode. A split PSF (PSFTailScale
- * > 1, vtkBloomPSFSplit) runs as the filter runs it: the tail's FFT on a grid PSFTailScale times
- * coarser, the core (up to radius 256) summed directly in one dispatch with the tail added
- * (vtkBloomPassPSFSplit).
- *
- * With CaptureResult on, the bloomed image is also kept in a float texture after each render,
- * and ReadSceneImage() / ReadResultImage() return the un-bloomed float render and the bloomed
- * result as float RGBA vtkImageData (origin 0, spacing 1, row 0 at the bottom) for tests,
- * EXR output and statistics.
+ * docs/rendering.md ("The pass in detail") describes the rest: multisampling, alpha, selective
+ * bloom in one or two renders, tiled frames, content-aware work, QUALITY_FAST, compute
+ * shaders, wide blurs through an FFT, PSF mode, and CaptureResult with ReadSceneImage() and
+ * ReadResultImage().
  */
 
 #ifndef vtkBloomPass_h
@@ -229,7 +119,7 @@ public:
   /**
    * QUALITY_EXACT (default): the chain of the parameters to float rounding (GPU/CPU agreement
    * <= 1e-3 relative L2 for every preset). QUALITY_FAST: half-float levels and bilinear pairs
-   * of taps (see the class description); an approximation.
+   * of taps (docs/rendering.md, "Quality"); an approximation.
    */
   enum
   {
@@ -245,12 +135,12 @@ public:
   ///@{
   /**
    * Run the chain's passes into its own targets, and the bright region's reduction, as compute
-   * shaders where the context has OpenGL 4.3 (default on); off, or without OpenGL 4.3, they are
+   * shaders where the context runs them (default on; OpenGL 4.3 or its extensions); else they are
    * fragment passes. The composite into the framebuffer is a compute pass too where that
-   * framebuffer's colour buffer is a texture it can write (see the class description). Both
-   * compute the same sums: the results agree to float rounding (tested). On an NVIDIA H100, which
-   * shades fragments on a few of its multiprocessors only, the compute passes are many times faster
-   * (docs/gpu.md).
+   * framebuffer's colour buffer is a texture it can write (docs/rendering.md, "Compute shaders").
+   * Both compute the same sums: the results agree to float rounding (tested). On an NVIDIA H100,
+   * which shades fragments on a few of its multiprocessors only, the compute passes are many times
+   * faster (docs/gpu.md).
    */
   vtkSetMacro(UseComputeShaders, bool);
   vtkGetMacro(UseComputeShaders, bool);
@@ -383,8 +273,8 @@ public:
   ///@{
   /**
    * With EMISSION_EMITTERS, write the emission in the scene's own render where the scene
-   * allows it (see the class comment; default on). Off, the emitters are always rendered a
-   * second time, alone.
+   * allows it (docs/rendering.md, "Selective bloom"; default on). Off, the emitters are always
+   * rendered a second time, alone.
    */
   vtkSetMacro(EmitInSceneRender, bool);
   vtkGetMacro(EmitInSceneRender, bool);
@@ -409,8 +299,8 @@ public:
   /**
    * Whether the renderer's background enters the bright pass like a surface of the scene (the
    * behaviour of earlier versions). Off (the default): the background never blooms and the
-   * glow goes over it (see the class description). A layered renderer, which clears nothing,
-   * has no background of its own either way.
+   * glow goes over it (see the class description and docs/rendering.md). A layered renderer, which
+   * clears nothing, has no background of its own either way.
    */
   vtkSetMacro(BloomBackground, bool);
   vtkGetMacro(BloomBackground, bool);

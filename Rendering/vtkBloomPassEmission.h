@@ -26,8 +26,8 @@
  * texture coordinate, and zero elsewhere.
  *
  * Where the emission cannot be written in the scene's render, the emitters are rendered a
- * second time, alone, as before (vtkBloomPass's class comment): when a visible prop is not an
- * opaque vtkActor drawn by a vtkOpenGLPolyDataMapper (its shader would not write the second
+ * second time, alone, as before (docs/rendering.md, "Selective bloom"): when a visible prop is not
+ * an opaque vtkActor drawn by a vtkOpenGLPolyDataMapper (its shader would not write the second
  * output: 2D actors, volumes, translucent geometry, glyph mappers), when an emitter is neither
  * in the scene nor made from an actor that is, when the delegate is not a vtkRenderStepsPass or
  * vtkCameraPass, or when vtkBloomPass::EmitInSceneRender is off. The emitters' own render uses
