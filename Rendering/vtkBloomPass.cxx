@@ -230,15 +230,20 @@ public:
   }
 
   /**
-   * Steps 2 and 3 of Render(): the chain, then the composite into the framebuffer the pass was
-   * called with (at x, y), through the result with CaptureResult. Pops the framebuffer
-   * bindings the scene's render pushed.
+   * Step 2 of Render(), while the pass's own targets are bound: the chain (or PSF mode's
+   * convolution), and with CaptureResult the composite into the result target. Returns whether
+   * it bloomed (false where the bloom was skipped).
    */
-  void Compose(
-    vtkBloomPass* self, vtkOpenGLState* state, int x, int y, bool inScene, bool twoRenders);
-  /// KEPT_FRAME_SERVE: the tile's part of the kept frame into the framebuffer instead (popping
-  /// the bindings), and true; false, with nothing done, where it cannot.
-  bool ServeTile(vtkBloomPass* self, vtkOpenGLState* state, int x, int y, int w, int h);
+  bool RunChain(vtkBloomPass* self, bool inScene, bool twoRenders);
+  /**
+   * Step 3, into the framebuffer the pass was called with (at x, y): the composite of the scene
+   * and `bloom`, or with CaptureResult the result's copy; then the edge samples.
+   */
+  void Composite(vtkBloomPass* self, int x, int y, bool bloom);
+  /// KEPT_FRAME_SERVE: the tile's part of the kept frame uploaded to the staging target, and
+  /// true; false, with nothing done, where it cannot. ServeTile() then copies it to (x, y).
+  bool StageServedTile(vtkBloomPass* self, int w, int h);
+  void ServeTile(vtkBloomPass* self, int x, int y);
 
   /**
    * The renderer culled its props against the tile's frustum, before the pass could widen it:
@@ -818,14 +823,21 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     }
   }
 
-  // 2. The chain, then 3. the composite into the framebuffer the pass was called with; for a
-  // tile of a kept frame (KeptFrameMode), that frame's part instead.
+  // 2. The chain into the pass's own targets; for a tile of a kept frame (KeptFrameMode), that
+  // frame's part staged instead. 3. Then into the framebuffer the pass was called with.
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  this->LastTileFromKeptFrame = in.ServeTile(this, state, x, y, w, h);
-  if (!this->LastTileFromKeptFrame)
+  const bool twoRenders = selective && !inScene;
+  this->LastTileFromKeptFrame = in.StageServedTile(this, w, h);
+  const bool bloom = !this->LastTileFromKeptFrame && in.RunChain(this, inScene, twoRenders);
+  state->PopFramebufferBindings();
+  if (this->LastTileFromKeptFrame)
   {
-    in.Compose(this, state, x, y, inScene, selective && !inScene);
+    in.ServeTile(this, x, y);
+  }
+  else
+  {
+    in.Composite(this, x, y, bloom);
   }
   if (this->KeptFrameMode == KEPT_FRAME_KEEP)
   {
@@ -857,8 +869,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPass::vtkInternals::Compose(
-  vtkBloomPass* self, vtkOpenGLState* state, int x, int y, bool inScene, bool twoRenders)
+bool vtkBloomPass::vtkInternals::RunChain(vtkBloomPass* self, bool inScene, bool twoRenders)
 {
   vtkBloomPassResources& res = this->Resources;
   // In one render the emission is the scene's colour where its alpha says so.
@@ -866,11 +877,6 @@ void vtkBloomPass::vtkInternals::Compose(
   const bool bloom =
     this->RunBloom(self, twoRenders ? res.Emitter.Color : res.Scene.Color, twoRenders);
   self->LastBloomSkipped = !bloom;
-  // The composite writes the tile only (Runner.CompositeWindow): its first sample lands at the
-  // viewport's corner.
-  const int zero[2] = { -this->Tile.Inner[0], -this->Tile.Inner[1] };
-  const int origin[2] = { x, y };
-  const int shifted[2] = { x - this->Tile.Inner[0], y - this->Tile.Inner[1] };
   // Into a multisampled framebuffer, the samples at anti-aliased edges are then composited from
   // the scene's own samples, as the renderer would have drawn them
   // (vtkBloomPassChainRunner::SceneSamples). With two renders the multisampled target last
@@ -880,21 +886,33 @@ void vtkBloomPass::vtkInternals::Compose(
   this->Runner.SceneSampleCount = res.Samples;
   if (self->CaptureResult)
   {
+    // The result's first sample is the tile's.
+    const int zero[2] = { -this->Tile.Inner[0], -this->Tile.Inner[1] };
     this->Runner.Composite(&res.Result, zero, bloom);
-    state->PopFramebufferBindings();
-    this->Runner.Copy(nullptr, origin, res.Result);
+  }
+  return bloom;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::vtkInternals::Composite(vtkBloomPass* self, int x, int y, bool bloom)
+{
+  // The composite writes the tile only (Runner.CompositeWindow): its first sample lands at the
+  // viewport's corner.
+  const int shifted[2] = { x - this->Tile.Inner[0], y - this->Tile.Inner[1] };
+  if (self->CaptureResult)
+  {
+    const int origin[2] = { x, y };
+    this->Runner.Copy(nullptr, origin, this->Resources.Result);
     this->Runner.CompositeEdges(shifted, bloom);
   }
   else
   {
-    state->PopFramebufferBindings();
     this->Runner.Composite(nullptr, shifted, bloom);
   }
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPass::vtkInternals::ServeTile(
-  vtkBloomPass* self, vtkOpenGLState* state, int x, int y, int w, int h)
+bool vtkBloomPass::vtkInternals::StageServedTile(vtkBloomPass* self, int w, int h)
 {
   if (!this->Serving)
   {
@@ -924,13 +942,17 @@ bool vtkBloomPass::vtkInternals::ServeTile(
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, first);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
   staging.Color->Deactivate();
-  // ... then over the tile's pixels, replacing them (the kept pixels hold what lay below).
-  state->PopFramebufferBindings();
-  this->Runner.CompositeOver = false;
-  const int origin[2] = { x, y };
-  this->Runner.Copy(nullptr, origin, staging);
   self->LastBloomSkipped = false;
   return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPass::vtkInternals::ServeTile(vtkBloomPass*, int x, int y)
+{
+  // ... then over the tile's pixels, replacing them (the kept pixels hold what lay below).
+  this->Runner.CompositeOver = false;
+  const int origin[2] = { x, y };
+  this->Runner.Copy(nullptr, origin, this->Resources.Kept);
 }
 
 //------------------------------------------------------------------------------
