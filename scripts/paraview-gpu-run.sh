@@ -9,7 +9,8 @@
 #   OUT=DIR bash scripts/paraview-gpu-run.sh [STEP...]
 #
 # STEP (default: info tests devices bench; a list in $STEPS works too):
-#   unpack    unpack the archives in .pvgpack/ that are not unpacked yet and stop; with two
+#   unpack    unpack the archives in .pvgpack/ that are not unpacked yet (and apply
+#             .pvgpack-overlay/*.tar.xz, below) and stop; with two
 #             parts over two calls: the first call carries part 1 and runs `unpack`, the next
 #             (while the machine is warm) carries part 2 and runs the steps
 #   info      gpu.txt: nvidia-smi's cards, driver and topology (nvidia-smi topo -m), EGL's
@@ -169,6 +170,12 @@ for part in $VTKBLOOM_PV_PARTS; do
     [ "$steps" = unpack ] && exit 0
     exit 3
   fi
+done
+# A rebuilt plugin and project libraries over the pack (.pvgpack-overlay/*.tar.xz, paths
+# relative to /, as the pack's): applied on every call, so the pack need not be made again.
+for overlay in .pvgpack-overlay/*.tar.xz; do
+  [ -f "$overlay" ] || continue
+  tar -C "$root" -xJf "$overlay" && echo "paraview-gpu-run: applied $overlay"
 done
 [ "$steps" = unpack ] && exit 0
 
