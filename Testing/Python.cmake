@@ -96,7 +96,7 @@ if (VTKBLOOM_ENABLE_RENDERING)
     else ()
       set(examples
         pyplot/markers.py pyplot/plot_errband.py pyplot/scatter1.py pyplot/quiver.py
-        pyplot/lines_intersect.py pyplot/histo_1d_a.py pyplot/fit_polynomial1.py
+        pyplot/intersect2d.py pyplot/histo_1d_a.py pyplot/fit_polynomial1.py
         pyplot/custom_axes2.py basic/legendbox.py basic/colorlines.py basic/delaunay2d.py
         basic/color_mesh_cells1.py)
     endif ()
