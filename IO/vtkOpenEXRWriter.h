@@ -6,8 +6,8 @@
  *
  * vtkOpenEXRWriter writes the point scalars of its vtkImageData input to a flat, single-part
  * OpenEXR file, scanline or tiled: the point array chosen with SetInputArrayToProcess(0, ...)
- * when one was chosen (ParaView's "Scalars"), else the active scalars. The channels follow the number of components: 1 -> Y,
- * 2 -> Y, A, 3 -> R, G, B and 4 -> R, G, B, A.
+ * when one was chosen (ParaView's "Scalars"), else the active scalars. The channels follow the
+ * number of components: 1 -> Y, 2 -> Y, A, 3 -> R, G, B and 4 -> R, G, B, A.
  *
  * Scalar types. float and double scalars are written as HALF or FLOAT channels (PixelType,
  * default float); double is first rounded to float. Float output of float input is bit-exact,
