@@ -243,7 +243,7 @@ public:
   /// KEPT_FRAME_SERVE: the tile's part of the kept frame uploaded to the staging target, and
   /// true; false, with nothing done, where it cannot. ServeTile() then copies it to (x, y).
   bool StageServedTile(vtkBloomPass* self, int w, int h);
-  void ServeTile(vtkBloomPass* self, int x, int y);
+  void ServeTile(int x, int y);
 
   /**
    * The renderer culled its props against the tile's frustum, before the pass could widen it:
@@ -833,7 +833,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   state->PopFramebufferBindings();
   if (this->LastTileFromKeptFrame)
   {
-    in.ServeTile(this, x, y);
+    in.ServeTile(x, y);
   }
   else
   {
@@ -947,7 +947,7 @@ bool vtkBloomPass::vtkInternals::StageServedTile(vtkBloomPass* self, int w, int 
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPass::vtkInternals::ServeTile(vtkBloomPass*, int x, int y)
+void vtkBloomPass::vtkInternals::ServeTile(int x, int y)
 {
   // ... then over the tile's pixels, replacing them (the kept pixels hold what lay below).
   this->Runner.CompositeOver = false;

@@ -248,6 +248,8 @@ public:
    * minor.
    */
   static bool ContextRunsCompute(int* version = nullptr);
+  /// Whether the current context lists the extension `name` (glGetStringi).
+  static bool HasExtension(const char* name);
 
 private:
   // Values shared with vtkBloomPassFS.glsl, emitted into the shader as #defines.

@@ -18,6 +18,7 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
+#include <cstring>
 #include <string>
 
 //------------------------------------------------------------------------------
@@ -162,6 +163,22 @@ void vtkBloomPassChainRunner::Uniforms::Floats(const char* name, int count, cons
 }
 
 //------------------------------------------------------------------------------
+bool vtkBloomPassChainRunner::HasExtension(const char* wanted)
+{
+  GLint count = 0;
+  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+  for (GLint i = 0; i < count; ++i)
+  {
+    const GLubyte* name = glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i));
+    if (name && std::strcmp(reinterpret_cast<const char*>(name), wanted) == 0)
+    {
+      return true;
+    }
+  }
+  return false;
+}
+
+//------------------------------------------------------------------------------
 bool vtkBloomPassChainRunner::ContextRunsCompute(int* version)
 {
   GLint major = 0, minor = 0;
@@ -173,24 +190,9 @@ bool vtkBloomPassChainRunner::ContextRunsCompute(int* version)
   }
   // An older context may list what OpenGL 4.3 made core: VTK 9.6's EGL window asks for 3.2,
   // and NVIDIA's driver gives exactly 3.2, with every extension of the card.
-  bool extensions = true;
-  if (major * 10 + minor < 43)
-  {
-    int found = 0;
-    GLint count = 0;
-    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
-    for (GLint i = 0; i < count; ++i)
-    {
-      const GLubyte* name = glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i));
-      const std::string extension = name ? reinterpret_cast<const char*>(name) : "";
-      found += extension == "GL_ARB_compute_shader" ||
-          extension == "GL_ARB_shader_image_load_store" ||
-          extension == "GL_ARB_shader_storage_buffer_object"
-        ? 1
-        : 0;
-    }
-    extensions = found == 3;
-  }
+  const bool extensions = major * 10 + minor >= 43 ||
+    (HasExtension("GL_ARB_compute_shader") && HasExtension("GL_ARB_shader_image_load_store") &&
+      HasExtension("GL_ARB_shader_storage_buffer_object"));
   return extensions && glDispatchCompute && glBindImageTexture && glMemoryBarrier &&
     glBindBufferBase;
 }
@@ -212,16 +214,7 @@ bool vtkBloomPassChainRunner::SampleShadingSupported()
   {
     // The extension, also where OpenGL 4.0 has it in its core: VTK's shaders are GLSL 1.50,
     // which reach gl_SampleID through it.
-    bool supported = false;
-    GLint count = 0;
-    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
-    for (GLint i = 0; !supported && i < count; ++i)
-    {
-      const GLubyte* name = glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i));
-      supported =
-        name && std::string(reinterpret_cast<const char*>(name)) == "GL_ARB_sample_shading";
-    }
-    this->SampleShading = supported ? 1 : -1;
+    this->SampleShading = HasExtension("GL_ARB_sample_shading") ? 1 : -1;
   }
   return this->SampleShading > 0;
 }
