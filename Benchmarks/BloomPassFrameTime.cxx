@@ -10,9 +10,8 @@
 //   BloomPassFrameTime [SCENE [WIDTH HEIGHT [FRAMES [PRESET]]]]
 //   BloomPassFrameTime --profile [SCENE [WIDTH HEIGHT [FRAMES [PRESET]]]]
 //   BloomPassFrameTime --info      the window class and the OpenGL vendor, renderer and version
-//   BloomPassFrameTime --fast ...  as above, with vtkBloomPass::QUALITY_FAST
 //   BloomPassFrameTime --fragment ...  as above, every pass a fragment pass
-//                                  (vtkBloomPass::UseComputeShadersOff; with --fast or alone)
+//                                  (vtkBloomPass::UseComputeShadersOff)
 //   BloomPassFrameTime --single-draw N ...  as above, vtkBloomPass::SingleDrawSamples N
 //   BloomPassFrameTime --pairs ...  as above, vtkBloomPass::FuseSeparablePassesOff (the
 //                                  separable pairs as two passes, as before issue 37's fusion)
@@ -27,7 +26,7 @@
 //                                  through the FFT (vtkBloomParameters::ConvolutionMode; the
 //                                  default is AUTOMATIC; with the options above)
 //   BloomPassFrameTime --quality SCENE WIDTH HEIGHT FRAMES [CSV]
-//   BloomPassFrameTime --sparse WIDTH HEIGHT FRAMES [fast]
+//   BloomPassFrameTime --sparse WIDTH HEIGHT FRAMES
 //   BloomPassFrameTime --sync SCENE WIDTH HEIGHT FRAMES
 //   BloomPassFrameTime --orbit SCENE WIDTH HEIGHT FRAMES
 //   BloomPassFrameTime --renderers SCENE WIDTH HEIGHT FRAMES
@@ -41,12 +40,13 @@
 // preset, the bloom frame's passes (vtkBloomPass::ProfilePasses: GPU time from timestamp
 // queries, size and compulsory memory traffic of each, medians over FRAMES frames).
 //
-// --quality: for vtkImageBloom's defaults and every preset, the exact pass and the fast mode
-// (QUALITY_FAST) frame by frame, their GPU time over the floor, and their error on one frame:
-// against each other and against vtkImageBloom REFERENCE (double) on the same float render
-// (relative L2 of the colour, and the largest absolute error over the reference's peak; a split
-// PSF's rows against the unsplit PSF's REFERENCE). CSV
-// also writes the rows to a file, for scripts/plot-gpu-quality.py.
+// --quality: for vtkImageBloom's defaults, every preset, blurs by their taps and PSF bloom
+// (exact and split), the pass's GPU time over the floor and its error on one frame against
+// vtkImageBloom REFERENCE (double) on the same float render (relative L2 of the colour, and the
+// largest absolute error over the reference's peak; a split PSF's rows against the unsplit
+// PSF's REFERENCE). CSV also writes the rows to a file, for scripts/plot-gpu-quality.py.
+// (The fast mode that these rows once compared, half floats and bilinear pairs of taps, was
+// slower than the exact pass on an NVIDIA H200 and is gone: docs/gpu.md.)
 //
 // --sparse: the sparse scenes of vtkBloomFrameTimer::SetupSparse (one HDR disk over 0 %, 0.1 %,
 // 1 % and 10 % of the window), vtkImageBloom's defaults, the full chain
@@ -103,7 +103,6 @@
 
 namespace
 {
-bool Fast = false;         // --fast
 bool Fragment = false;     // --fragment
 int Convolution = -1;      // --direct, --fft: vtkBloomParameters::ConvolutionMode
 int SingleDraw = -1;       // --single-draw N: vtkBloomPass::SingleDrawSamples
@@ -113,7 +112,7 @@ bool NoReadBack = false;   // --no-read-back: SkipEmptyBloomOff too (the CPU nev
 int Samples = 0;           // --samples N: a multisampled window
 bool Resolved = false;     // --resolved: vtkBloomPass::ThresholdSamplesOff
 
-// The timer on `scene` with `preset`, in the quality and shader stage the options ask for; false,
+// The timer on `scene` with `preset`, in the shader stage the options ask for; false,
 // with a message, for an unknown scene or preset.
 bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::string& preset,
   int width, int height)
@@ -124,7 +123,6 @@ bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::strin
     std::fprintf(stderr, "unknown scene %s or preset %s\n", scene.c_str(), preset.c_str());
     return false;
   }
-  timer.Bloom->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
   timer.Bloom->SetUseComputeShaders(!Fragment);
   if (SingleDraw >= 0)
   {
@@ -245,10 +243,10 @@ bool ProfilePasses(
     }
   }
   vtkBloomPass* bloom = timer.Bloom;
-  std::printf("\n%s, preset %s%s%s, %dx%d, %s precision: %d GPU passes of the chain and the "
+  std::printf("\n%s, preset %s%s, %dx%d, %s precision: %d GPU passes of the chain and the "
               "composite (the profile also lists the scene render)\n\n",
-    scene.c_str(), preset.c_str(), Fast ? " (fast mode)" : "", Fragment ? " (fragment passes)" : "",
-    width, height, bloom->GetFloatPrecision() == vtkBloomPass::FLOAT32 ? "float32" : "float16",
+    scene.c_str(), preset.c_str(), Fragment ? " (fragment passes)" : "", width, height,
+    bloom->GetFloatPrecision() == vtkBloomPass::FLOAT32 ? "float32" : "float16",
     bloom->GetNumberOfPasses());
   std::printf("| # | pass | size | GPU time | MB | GB/s |\n|---|---|---|---|---|---|\n");
   double total = 0.0, chain = 0.0, bytes = 0.0, chainBytes = 0.0;
@@ -301,15 +299,16 @@ void Errors(vtkImageData* a, vtkImageData* reference, double& relativeL2, double
   maxOverPeak = worst / std::max(peak, 1e-300);
 }
 
-// Medians of the GPU time of the floor, the bloom pass and the alternative pass, interleaved.
-void TimeTwo(vtkBloomFrameTimer& timer, int frames, double ms[3])
+// Medians of the GPU time of the floor, the bloom pass and (the first `count` of the three) the
+// alternative pass, interleaved.
+void TimeTwo(vtkBloomFrameTimer& timer, int frames, double ms[3], int count = 3)
 {
   const vtkBloomFrameTimer::Kind kinds[] = { vtkBloomFrameTimer::FLOAT_COPY,
     vtkBloomFrameTimer::BLOOM, vtkBloomFrameTimer::ALTERNATIVE };
   std::vector<double> gpu[3];
   for (int f = -2; f < frames; ++f)
   {
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < count; ++k)
     {
       timer.Frame(kinds[k]);
       if (f >= 0)
@@ -320,7 +319,7 @@ void TimeTwo(vtkBloomFrameTimer& timer, int frames, double ms[3])
   }
   for (int k = 0; k < 3; ++k)
   {
-    ms[k] = vtkBloomMedian(gpu[k]);
+    ms[k] = k < count ? vtkBloomMedian(gpu[k]) : 0.0;
   }
 }
 
@@ -340,12 +339,10 @@ void Capture(vtkBloomFrameTimer& timer, vtkImageData* scene, vtkImageData* a, vt
   timer.Alternative->CaptureResultOff();
 }
 
-// The quality rows of one setting on `timer`: the exact pass (named `label`) and, with
-// `withFast`, the fast mode; GPU time over the floor and error against vtkImageBloom REFERENCE.
-void QualityRows(vtkBloomFrameTimer& timer, const std::string& label, bool withFast, int frames,
-  std::ofstream& out)
+// The quality row of one setting on `timer`: the pass's GPU time over the floor and its error
+// against vtkImageBloom REFERENCE.
+void QualityRow(vtkBloomFrameTimer& timer, const std::string& label, int frames, std::ofstream& out)
 {
-  timer.Alternative->SetQualityToFast();
   // Over black: over a coloured background the pass puts the background behind the glow
   // (docs/rendering.md) where vtkImageBloom adds the glow to every pixel, a difference of the
   // composite's design (1.8e-3 relative L2 on lit-spheres), not of the chain's numerics.
@@ -353,8 +350,13 @@ void QualityRows(vtkBloomFrameTimer& timer, const std::string& label, bool withF
   timer.Renderer->GradientBackgroundOff();
   timer.Renderer->TexturedBackgroundOff();
   timer.Frame(vtkBloomFrameTimer::PLAIN); // a context for the GPU timer
-  vtkNew<vtkImageData> sceneImage, exact, fast;
-  Capture(timer, sceneImage, exact, fast);
+  vtkNew<vtkImageData> sceneImage, result;
+  timer.Bloom->CaptureResultOn();
+  timer.Renderer->SetPass(timer.Bloom);
+  timer.Window->Render();
+  timer.Bloom->ReadSceneImage(sceneImage);
+  timer.Bloom->ReadResultImage(result);
+  timer.Bloom->CaptureResultOff();
   // The reference runs the exact operators: a split PSF's row is measured against the whole
   // PSF's convolution (what the split costs in accuracy).
   vtkNew<vtkBloomParameters> reference;
@@ -365,24 +367,17 @@ void QualityRows(vtkBloomFrameTimer& timer, const std::string& label, bool withF
   cpu->SetExecutionModeToReference();
   cpu->SetInputData(sceneImage);
   cpu->Update();
-  double l2[3], peak[3];
-  Errors(exact, cpu->GetOutput(), l2[0], peak[0]);
-  Errors(fast, cpu->GetOutput(), l2[1], peak[1]);
-  Errors(fast, exact, l2[2], peak[2]);
+  double l2 = 0.0, peak = 0.0;
+  Errors(result, cpu->GetOutput(), l2, peak);
   double ms[3];
-  TimeTwo(timer, frames, ms);
-  const int passes[2] = { timer.Bloom->GetNumberOfPasses(),
-    timer.Alternative->GetNumberOfPasses() };
-  for (int q = 0; q < (withFast ? 2 : 1); ++q)
+  TimeTwo(timer, frames, ms, 2);
+  const int passes = timer.Bloom->GetNumberOfPasses();
+  std::printf(
+    "| %s | %+.3f ms | %d | %.2e | %.2e |\n", label.c_str(), ms[1] - ms[0], passes, l2, peak);
+  if (out.is_open())
   {
-    const char* name = q ? "fast" : "exact";
-    std::printf("| %s | %s | %+.3f ms | %d | %s | %.2e | %.2e |\n", label.c_str(), name,
-      ms[1 + q] - ms[0], passes[q], q ? std::to_string(l2[2]).c_str() : "0", l2[q], peak[q]);
-    if (out.is_open())
-    {
-      out << "\"" << label << "\"," << name << "," << ms[1 + q] - ms[0] << "," << passes[q] << ","
-          << (q ? l2[2] : 0.0) << "," << l2[q] << "," << peak[q] << "\n";
-    }
+    out << "\"" << label << "\"," << ms[1] - ms[0] << "," << passes << "," << l2 << "," << peak
+        << "\n";
   }
   std::fflush(stdout);
 }
@@ -395,14 +390,12 @@ bool QualityTable(const std::string& scene, int width, int height, int frames, c
   if (csv)
   {
     out.open(csv);
-    out << "preset,quality,gpu_ms_over_floor,passes,rel_l2_vs_exact,rel_l2_vs_reference,"
-           "max_abs_over_peak_vs_reference\n";
+    out << "preset,gpu_ms_over_floor,passes,rel_l2_vs_reference,max_abs_over_peak_vs_reference\n";
   }
   std::printf(
     "%s over black, %dx%d, vtkImageBloom REFERENCE (double) on the same float render "
-    "as the reference\n\n| preset | quality | bloom over the floor GPU | passes | relative L2 "
-    "against the exact pass | relative L2 against REFERENCE | max abs / peak against "
-    "REFERENCE |\n|---|---|---|---|---|---|---|\n",
+    "as the reference\n\n| preset | bloom over the floor GPU | passes | relative L2 against "
+    "REFERENCE | max abs / peak against REFERENCE |\n|---|---|---|---|---|\n",
     scene.c_str(), width, height);
   for (const std::string& preset : presets)
   {
@@ -411,7 +404,7 @@ bool QualityTable(const std::string& scene, int width, int height, int frames, c
     {
       return false;
     }
-    QualityRows(timer, preset, true, frames, out);
+    QualityRow(timer, preset, frames, out);
   }
   // The compute FFT's rows: ping-pong's blurs summed tap by tap (through the FFT is its
   // default, above), and PSF bloom with the filter's default Airy pattern and Gaussians, exact
@@ -442,7 +435,7 @@ bool QualityTable(const std::string& scene, int width, int height, int frames, c
       parameters->SetPSFTailScale(
         tail == std::string::npos ? 1 : std::stoi(extra.substr(tail + 7)));
     }
-    QualityRows(timer, extra, false, frames, out);
+    QualityRow(timer, extra, frames, out);
   }
   return true;
 }
@@ -505,22 +498,18 @@ bool SyncTable(const std::string& scene, int width, int height, int frames)
   return true;
 }
 
-bool SparseTable(int width, int height, int frames, bool fast)
+bool SparseTable(int width, int height, int frames)
 {
-  std::printf("sparse scenes, vtkImageBloom defaults%s, %dx%d: the full chain "
+  std::printf("sparse scenes, vtkImageBloom defaults, %dx%d: the full chain "
               "(RestrictToBrightRegion off) against the content-aware chain (on)\n\n| bright "
               "| float target + copy GPU | full: bloom over the floor | content-aware: bloom "
               "over the floor | saving | bright region (level 0) | chain coverage | passes | "
               "same bits |\n|---|---|---|---|---|---|---|---|---|\n",
-    fast ? " in the fast mode" : "", width, height);
+    width, height);
   for (const double fraction : { 0.0, 0.001, 0.01, 0.1 })
   {
     vtkBloomFrameTimer timer;
     timer.SetupSparse(fraction, width, height);
-    for (vtkBloomPass* pass : { timer.Bloom.Get(), timer.Alternative.Get() })
-    {
-      pass->SetQuality(fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
-    }
     timer.Bloom->GetParameters()->SetRestrictToBrightRegion(false);
     timer.Alternative->GetParameters()->SetRestrictToBrightRegion(true);
     timer.Frame(vtkBloomFrameTimer::PLAIN);
@@ -899,7 +888,6 @@ bool RenderersTable(const std::string& scene, int width, int height, int frames)
     defaults->SetSkipEmptyBloom(!NoReadBack);
     pass->SetParameters(defaults);
     pass->SetDelegatePass(steps);
-    pass->SetQuality(Fast ? vtkBloomPass::QUALITY_FAST : vtkBloomPass::QUALITY_EXACT);
     pass->SetUseComputeShaders(!Fragment);
     pass->SetFuseSeparablePasses(!Pairs);
     if (SingleDraw >= 0)
@@ -953,10 +941,10 @@ int main(int argc, char* argv[])
 {
   // Options first; they apply to every table that renders the bloom view.
   while (argc > 1 &&
-    (std::strcmp(argv[1], "--fast") == 0 || std::strcmp(argv[1], "--fragment") == 0 ||
-      std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0 ||
-      std::strcmp(argv[1], "--pairs") == 0 || std::strcmp(argv[1], "--resolved") == 0 ||
-      std::strcmp(argv[1], "--unrestricted") == 0 || std::strcmp(argv[1], "--no-read-back") == 0 ||
+    (std::strcmp(argv[1], "--fragment") == 0 || std::strcmp(argv[1], "--direct") == 0 ||
+      std::strcmp(argv[1], "--fft") == 0 || std::strcmp(argv[1], "--pairs") == 0 ||
+      std::strcmp(argv[1], "--resolved") == 0 || std::strcmp(argv[1], "--unrestricted") == 0 ||
+      std::strcmp(argv[1], "--no-read-back") == 0 ||
       (argc > 2 && std::strcmp(argv[1], "--single-draw") == 0) ||
       (argc > 2 && std::strcmp(argv[1], "--samples") == 0)))
   {
@@ -989,7 +977,7 @@ int main(int argc, char* argv[])
     }
     else
     {
-      (std::strcmp(argv[1], "--fast") == 0 ? Fast : Fragment) = true;
+      Fragment = true;
     }
     --argc;
     ++argv;
@@ -1025,10 +1013,7 @@ int main(int argc, char* argv[])
   }
   if (argc > 4 && std::strcmp(argv[1], "--sparse") == 0)
   {
-    return SparseTable(std::atoi(argv[2]), std::atoi(argv[3]), std::atoi(argv[4]),
-             argc > 5 && std::strcmp(argv[5], "fast") == 0)
-      ? 0
-      : 1;
+    return SparseTable(std::atoi(argv[2]), std::atoi(argv[3]), std::atoi(argv[4])) ? 0 : 1;
   }
   if (argc > 1 && std::strcmp(argv[1], "--info") == 0)
   {

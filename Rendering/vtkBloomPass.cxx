@@ -96,6 +96,8 @@ public:
 
   vtkBloomPassResources Resources;
   vtkBloomPassChainRunner Runner;
+  vtkBloomPassChainRunner::Light Light;   ///< what the runner blooms
+  vtkBloomPassChainRunner::Output Output; ///< how the runner writes the frame
   vtkBloomPassEmission Emission;
   vtkBloomPassSteps Steps;       ///< the delegate's overlay (over the bloom) and translucency
   std::string BackgroundWarning; ///< why the background blooms, said once
@@ -134,9 +136,9 @@ public:
   void PlanWhatBlooms(vtkBloomPass* self, const vtkRenderState* s, bool selective)
   {
     vtkRenderer* r = s->GetRenderer();
-    this->Runner.GlowAlpha = true;
-    this->Runner.ThresholdEmission = !selective || self->ThresholdEmitters;
-    this->Runner.CompositeOver = r->Transparent();
+    this->Output.GlowAlpha = true;
+    this->Light.Threshold = !selective || self->ThresholdEmitters;
+    this->Output.Over = r->Transparent();
     self->LastAnnotationsOverBloom =
       !self->BloomAnnotations && this->Steps.DetachOverlay(self->DelegatePass) > 0;
     // The renderer removes hidden lines and draws translucency through depth peeling or OIT
@@ -178,7 +180,7 @@ public:
   /// The bloom term of `source` (masked by the emitters' depth with `mask`): the chain, or in
   /// PSF mode the bright pass and its convolution; false when the bloom is skipped.
   bool RunBloom(vtkBloomPass* self, vtkTextureObject* source, bool mask);
-  bool RunPSF(vtkBloomPass* self, vtkTextureObject* source, bool mask);
+  bool RunPSF(vtkBloomPass* self);
   /// PSF mode: the PSFs of the parameters, made again only when they changed.
   bool UpdateKernels(vtkBloomParameters* parameters);
   std::vector<double> KernelsSignature; ///< what the current PSFs were made from
@@ -286,9 +288,10 @@ public:
   // The last evaluation's content-aware figures.
   void Report(vtkBloomPass* self)
   {
-    std::copy(this->Runner.BrightRegion, this->Runner.BrightRegion + 4, self->LastBrightRegion);
-    self->LastChainCoverage = this->Runner.Coverage;
-    self->LastComputePasses = this->Runner.ComputePasses;
+    const int* region = this->Runner.GetBrightRegion();
+    std::copy(region, region + 4, self->LastBrightRegion);
+    self->LastChainCoverage = this->Runner.GetCoverage();
+    self->LastComputePasses = this->Runner.GetComputePasses();
   }
 
   void ReleaseAll(vtkWindow* w)
@@ -324,24 +327,23 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
     res.Context = window;
     res.Format = format;
   }
-  this->Runner.Passes = 0;
-  this->Runner.Fast = self->Quality == QUALITY_FAST;
-  this->Runner.UseCompute = self->UseComputeShaders;
-  this->Runner.SimulateComputeFailure = self->SimulateComputeShaderFailure;
-  this->Runner.SingleDrawSamples = self->SingleDrawSamples;
-  this->Runner.FuseSeparablePasses = self->FuseSeparablePasses;
-  this->Runner.ComputePasses = 0;
-  this->Runner.Parameters = self->Parameters;
-  this->Runner.Restrict = self->Parameters->GetRestrictToBrightRegion();
-  this->Runner.Profiling = self->ProfilePasses;
-  this->Runner.Profile.clear();
-  this->Runner.EmissionInAlpha = false;
+  vtkBloomPassChainRunner::Settings settings;
+  settings.Parameters = self->Parameters;
+  settings.Restrict = self->Parameters->GetRestrictToBrightRegion();
+  settings.UseCompute = self->UseComputeShaders;
+  settings.SimulateComputeFailure = self->SimulateComputeShaderFailure;
+  settings.SingleDrawSamples = self->SingleDrawSamples;
+  settings.FuseSeparablePasses = self->FuseSeparablePasses;
+  settings.Profiling = self->ProfilePasses;
+  this->Runner.BeginFrame(settings);
   // An image (ApplyToImage): thresholded whole, its own background, into its own target.
-  this->Runner.ThresholdEmission = true;
-  this->Runner.CompositeOver = false;
+  this->Light.InAlpha = false;
+  this->Light.Threshold = true;
+  this->Output.EmissionInAlpha = false;
+  this->Output.Over = false;
   res.BackgroundMode = vtkBloomPassResources::BACKGROUND_IN_SCENE;
   res.AllocateScene(w, h, emitters, samples);
-  this->Runner.PSFBloom = nullptr;
+  this->Output.PSFBloom = nullptr;
   if (self->Parameters->GetBloomMode() == vtkBloomParameters::BLOOM_PSF)
   {
     // PSF mode builds no chain: its bright pass and bloom are full-size targets.
@@ -352,12 +354,11 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
     }
     res.PSFBright.Allocate(window, w, h, GL_RGBA32F);
     res.PSFBloom.Allocate(window, w, h, GL_RGBA32F);
-    this->Runner.PSFBloom = &res.PSFBloom;
+    this->Output.PSFBloom = &res.PSFBloom;
     return true;
   }
   res.PSFBright.Release(window);
   res.PSFBloom.Release(window);
-  const bool fast = self->Quality == QUALITY_FAST;
   // A tile of a tiled frame: the frame's chain cut to the part rendered.
   int part[4] = { 0, 0, 0, 0 };
   const bool tiled = this->Tile.Tiled;
@@ -365,11 +366,11 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   {
     this->Tile.GetPart(part);
   }
-  if (res.ChainIsStale(self->Parameters, w, h, part, fast))
+  if (res.ChainIsStale(self->Parameters, w, h, part))
   {
     // The runner's operator textures belong to the chain about to be rebuilt.
     this->Runner.ReleaseOperators(window);
-    res.BuildChain(self->Parameters, w, h, tiled ? &this->TileFrame.Chain : nullptr, part, fast);
+    res.BuildChain(self->Parameters, w, h, tiled ? &this->TileFrame.Chain : nullptr, part);
   }
   return true;
 }
@@ -380,7 +381,7 @@ void vtkBloomPass::vtkInternals::PlanTile(
 {
   vtkBloomPassTile& tile = this->Tile;
   tile.Locate(r, w, h);
-  std::fill(this->Runner.CompositeWindow, this->Runner.CompositeWindow + 4, 0);
+  std::fill(this->Output.Window, this->Output.Window + 4, 0);
   std::fill(self->LastTileGuardBand, self->LastTileGuardBand + 2, 0);
   this->Serving = tile.Tiled && self->KeptFrameMode == KEPT_FRAME_SERVE;
   if (this->Serving)
@@ -432,7 +433,7 @@ void vtkBloomPass::vtkInternals::PlanTile(
                                     << "): the glow may show seams at tile edges.");
     this->TileWarned = true;
   }
-  int* window = this->Runner.CompositeWindow;
+  int* window = this->Output.Window;
   window[0] = tile.Inner[0];
   window[1] = tile.Inner[0] + tile.TileSize[0];
   window[2] = tile.Inner[1];
@@ -449,14 +450,16 @@ bool vtkBloomPass::vtkInternals::RunBloom(vtkBloomPass* self, vtkTextureObject* 
   // A multisampled scene's samples, for a bright pass that thresholds each (the runner's bright
   // pass says where it applies: whole-scene bloom, with a threshold).
   const vtkBloomPassResources& res = this->Resources;
-  this->Runner.SourceSamples =
+  this->Light.Emission = source;
+  this->Light.Mask = mask;
+  this->Light.Samples =
     self->ThresholdSamples && res.Samples > 1 ? res.Multisample.Color.Get() : nullptr;
-  this->Runner.SourceSampleCount = res.Samples;
+  this->Light.SampleCount = res.Samples;
   if (self->Parameters->GetBloomMode() == vtkBloomParameters::BLOOM_PSF)
   {
-    return this->RunPSF(self, source, mask);
+    return this->RunPSF(self);
   }
-  return this->Runner.Run(source, mask);
+  return this->Runner.Run(this->Light);
 }
 
 //------------------------------------------------------------------------------
@@ -521,7 +524,7 @@ bool vtkBloomPass::vtkInternals::UpdateKernels(vtkBloomParameters* parameters)
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self, vtkTextureObject* source, bool mask)
+bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self)
 {
   // Where PSF mode cannot run (no compute shaders, a grid too large, invalid PSFs) the scene
   // renders without bloom, and the reason is reported once.
@@ -559,7 +562,7 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self, vtkTextureObject* so
   this->PSFError.clear();
   const int* grid = this->UsePSFSplit ? this->PSFSplit.GetGridSize() : this->FFT.GetGridSize();
   std::copy(grid, grid + 2, self->LastPSFGrid);
-  if (!this->Runner.BrightPassPSF(source, mask, res.PSFBright))
+  if (!this->Runner.BrightPassPSF(this->Light, res.PSFBright))
   {
     return false;
   }
@@ -650,7 +653,6 @@ vtkBloomPass::vtkBloomPass()
   , Emitters(vtkPropCollection::New())
   , FloatPrecision(FLOAT_AUTOMATIC)
   , EmissionSource(EMISSION_SCENE)
-  , Quality(QUALITY_EXACT)
   , UseComputeShaders(true)
   , LastComputePasses(0)
   , CaptureResult(false)
@@ -860,7 +862,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // 5. The annotations, over the bloom; the delegate's steps as they were.
   this->NumberOfRenderedProps += in.Steps.RenderOverlay(s, x, y, w, h);
   in.Report(this);
-  this->NumberOfPasses = in.Runner.Passes;
+  this->NumberOfPasses = in.Runner.GetPasses();
   if (this->ProfilePasses)
   {
     in.Runner.ResolveProfile();
@@ -873,22 +875,23 @@ bool vtkBloomPass::vtkInternals::RunChain(vtkBloomPass* self, bool inScene, bool
 {
   vtkBloomPassResources& res = this->Resources;
   // In one render the emission is the scene's colour where its alpha says so.
-  this->Runner.EmissionInAlpha = inScene;
+  this->Light.InAlpha = inScene;
+  this->Output.EmissionInAlpha = inScene;
   const bool bloom =
     this->RunBloom(self, twoRenders ? res.Emitter.Color : res.Scene.Color, twoRenders);
   self->LastBloomSkipped = !bloom;
   // Into a multisampled framebuffer, the samples at anti-aliased edges are then composited from
   // the scene's own samples, as the renderer would have drawn them
-  // (vtkBloomPassChainRunner::SceneSamples). With two renders the multisampled target last
-  // held the emitters: the resolved scene only.
-  this->Runner.SceneSamples =
+  // (vtkBloomPassChainRunner::Output::SceneSamples). With two renders the multisampled target
+  // last held the emitters: the resolved scene only.
+  this->Output.SceneSamples =
     res.Samples > 1 && !twoRenders ? res.Multisample.Color.Get() : nullptr;
-  this->Runner.SceneSampleCount = res.Samples;
+  this->Output.SceneSampleCount = res.Samples;
   if (self->CaptureResult)
   {
     // The result's first sample is the tile's.
     const int zero[2] = { -this->Tile.Inner[0], -this->Tile.Inner[1] };
-    this->Runner.Composite(&res.Result, zero, bloom);
+    this->Runner.Composite(this->Output, &res.Result, zero, bloom);
   }
   return bloom;
 }
@@ -896,18 +899,18 @@ bool vtkBloomPass::vtkInternals::RunChain(vtkBloomPass* self, bool inScene, bool
 //------------------------------------------------------------------------------
 void vtkBloomPass::vtkInternals::Composite(vtkBloomPass* self, int x, int y, bool bloom)
 {
-  // The composite writes the tile only (Runner.CompositeWindow): its first sample lands at the
+  // The composite writes the tile only (Output.Window): its first sample lands at the
   // viewport's corner.
   const int shifted[2] = { x - this->Tile.Inner[0], y - this->Tile.Inner[1] };
   if (self->CaptureResult)
   {
     const int origin[2] = { x, y };
-    this->Runner.Copy(nullptr, origin, this->Resources.Result);
-    this->Runner.CompositeEdges(shifted, bloom);
+    this->Runner.Copy(this->Output, nullptr, origin, this->Resources.Result);
+    this->Runner.CompositeEdges(this->Output, shifted, bloom);
   }
   else
   {
-    this->Runner.Composite(nullptr, shifted, bloom);
+    this->Runner.Composite(this->Output, nullptr, shifted, bloom);
   }
 }
 
@@ -950,9 +953,10 @@ bool vtkBloomPass::vtkInternals::StageServedTile(vtkBloomPass* self, int w, int 
 void vtkBloomPass::vtkInternals::ServeTile(int x, int y)
 {
   // ... then over the tile's pixels, replacing them (the kept pixels hold what lay below).
-  this->Runner.CompositeOver = false;
+  vtkBloomPassChainRunner::Output replace = this->Output;
+  replace.Over = false;
   const int origin[2] = { x, y };
-  this->Runner.Copy(nullptr, origin, this->Resources.Kept);
+  this->Runner.Copy(replace, nullptr, origin, this->Resources.Kept);
 }
 
 //------------------------------------------------------------------------------
@@ -1021,13 +1025,13 @@ bool vtkBloomPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMap
 //------------------------------------------------------------------------------
 double vtkBloomPass::GetRegionCost() const
 {
-  return this->Internals->Runner.RegionCost;
+  return this->Internals->Runner.GetRegionCost();
 }
 
 //------------------------------------------------------------------------------
 double vtkBloomPass::GetFullCost() const
 {
-  return this->Internals->Runner.FullCost;
+  return this->Internals->Runner.GetFullCost();
 }
 
 //------------------------------------------------------------------------------
@@ -1076,13 +1080,13 @@ bool vtkBloomPass::ApplyToImage(
   // An image is not processed further: automatic precision is the half floats'. It is its
   // own frame, whatever the window's tiling.
   in.Tile = vtkBloomPassTile();
-  std::fill(in.Runner.CompositeWindow, in.Runner.CompositeWindow + 4, 0);
+  std::fill(in.Output.Window, in.Output.Window + 4, 0);
   if (!in.Prepare(this, window, w, h, 0, false,
         this->FloatPrecision == FLOAT_AUTOMATIC ? FLOAT16 : this->FloatPrecision))
   {
     return false;
   }
-  in.Runner.GlowAlpha = false; // an image keeps its alpha, as vtkImageBloom's output does
+  in.Output.GlowAlpha = false; // an image keeps its alpha, as vtkImageBloom's output does
   res.Result.Allocate(window, w, h, GL_RGBA32F);
 
   // Upload the image as the scene, in float RGBA (alpha 1 when there is none).
@@ -1105,10 +1109,10 @@ bool vtkBloomPass::ApplyToImage(
   const bool bloom = in.RunBloom(this, res.Scene.Color, false);
   this->LastBloomSkipped = !bloom;
   const int zero[2] = { 0, 0 };
-  in.Runner.Composite(&res.Result, zero, bloom);
+  in.Runner.Composite(in.Output, &res.Result, zero, bloom);
   in.Report(this);
   state->PopFramebufferBindings();
-  this->NumberOfPasses = in.Runner.Passes;
+  this->NumberOfPasses = in.Runner.GetPasses();
   if (this->ProfilePasses)
   {
     in.Runner.ResolveProfile();
@@ -1140,7 +1144,7 @@ bool vtkBloomPass::ReadSceneImage(vtkImageData* image)
   {
     return false;
   }
-  if (this->Internals->Runner.EmissionInAlpha)
+  if (this->Internals->Light.InAlpha)
   {
     // The emission rode on the alpha (1 + weight); the scene's own alpha is at most 1.
     vtkBloomPassDecodeEmission(image, false);
@@ -1163,7 +1167,7 @@ void vtkBloomPass::SetSceneBackground(const double rgba[4])
 bool vtkBloomPass::ReadEmissionImage(vtkImageData* image)
 {
   vtkBloomPassResources& res = this->Internals->Resources;
-  const bool inScene = this->Internals->Runner.EmissionInAlpha;
+  const bool inScene = this->Internals->Light.InAlpha;
   if (!image || !res.Context || !(inScene || res.Emitter.FBO))
   {
     vtkErrorMacro(<< "There is no emission to read; render with EMISSION_EMITTERS first.");
@@ -1203,20 +1207,20 @@ void vtkBloomPass::ReleaseGraphicsResources(vtkWindow* w)
 //------------------------------------------------------------------------------
 int vtkBloomPass::GetNumberOfProfiledPasses()
 {
-  return static_cast<int>(this->Internals->Runner.Profile.size());
+  return static_cast<int>(this->Internals->Runner.GetProfile().size());
 }
 
 //------------------------------------------------------------------------------
 std::string vtkBloomPass::GetProfiledPassName(int i)
 {
-  const auto& profile = this->Internals->Runner.Profile;
+  const auto& profile = this->Internals->Runner.GetProfile();
   return i >= 0 && i < static_cast<int>(profile.size()) ? profile[i].Name : std::string();
 }
 
 //------------------------------------------------------------------------------
 void vtkBloomPass::GetProfiledPassSize(int i, int size[2])
 {
-  const auto& profile = this->Internals->Runner.Profile;
+  const auto& profile = this->Internals->Runner.GetProfile();
   const bool in = i >= 0 && i < static_cast<int>(profile.size());
   size[0] = in ? profile[i].Size[0] : 0;
   size[1] = in ? profile[i].Size[1] : 0;
@@ -1225,14 +1229,14 @@ void vtkBloomPass::GetProfiledPassSize(int i, int size[2])
 //------------------------------------------------------------------------------
 double vtkBloomPass::GetProfiledPassMilliseconds(int i)
 {
-  const auto& profile = this->Internals->Runner.Profile;
+  const auto& profile = this->Internals->Runner.GetProfile();
   return i >= 0 && i < static_cast<int>(profile.size()) ? profile[i].Milliseconds : 0.0;
 }
 
 //------------------------------------------------------------------------------
 double vtkBloomPass::GetProfiledPassBytes(int i)
 {
-  const auto& profile = this->Internals->Runner.Profile;
+  const auto& profile = this->Internals->Runner.GetProfile();
   return i >= 0 && i < static_cast<int>(profile.size()) ? profile[i].Bytes : 0.0;
 }
 
@@ -1256,7 +1260,6 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
      << "\n";
   os << indent << "LastEmissionInSceneRender: " << (this->LastEmissionInSceneRender ? "On" : "Off")
      << "\n";
-  os << indent << "Quality: " << (this->Quality == QUALITY_FAST ? "Fast" : "Exact") << "\n";
   os << indent << "UseComputeShaders: " << (this->UseComputeShaders ? "On" : "Off") << "\n";
   os << indent
      << "SimulateComputeShaderFailure: " << (this->SimulateComputeShaderFailure ? "On" : "Off")

@@ -32,9 +32,8 @@
  * delegate.
  *
  * docs/rendering.md ("The pass in detail") describes the rest: multisampling, alpha, selective
- * bloom in one or two renders, tiled frames, content-aware work, QUALITY_FAST, compute
- * shaders, wide blurs through an FFT, PSF mode, and CaptureResult with ReadSceneImage() and
- * ReadResultImage().
+ * bloom in one or two renders, tiled frames, content-aware work, compute shaders, wide blurs
+ * through an FFT, PSF mode, and CaptureResult with ReadSceneImage() and ReadResultImage().
  */
 
 #ifndef vtkBloomPass_h
@@ -117,23 +116,6 @@ public:
 
   ///@{
   /**
-   * QUALITY_EXACT (default): the chain of the parameters to float rounding (GPU/CPU agreement
-   * <= 1e-3 relative L2 for every preset). QUALITY_FAST: half-float levels and bilinear pairs
-   * of taps (docs/rendering.md, "Quality"); an approximation.
-   */
-  enum
-  {
-    QUALITY_EXACT = 0,
-    QUALITY_FAST = 1
-  };
-  vtkSetClampMacro(Quality, int, QUALITY_EXACT, QUALITY_FAST);
-  vtkGetMacro(Quality, int);
-  void SetQualityToExact() { this->SetQuality(QUALITY_EXACT); }
-  void SetQualityToFast() { this->SetQuality(QUALITY_FAST); }
-  ///@}
-
-  ///@{
-  /**
    * Run the chain's passes into its own targets, and the bright region's reduction, as compute
    * shaders where the context runs them (default on; OpenGL 4.3 or its extensions); else they are
    * fragment passes. The composite into the framebuffer is a compute pass too where that
@@ -155,13 +137,11 @@ public:
    * same weights, taps and order: the result is the same bits (tested). One draw saves the
    * small levels' fixed costs (on an NVIDIA H100 a dependent dispatch costs several
    * microseconds however small, and each draw its uniforms on the CPU: docs/gpu.md); the
-   * interior's uniform weights are cheaper per sample on large passes, and the fast mode's
-   * bilinear pairs need them. On a CPU rasterizer (Mesa's llvmpipe) a draw costs little and a
-   * table fetch per tap much: there one draw made the default chain 15-30 % slower at 480 x 270.
-   * Default -1, automatic: 2097152 (2^21: every pass of a 1920 x 1080 frame, all but the
-   * composite at 3840 x 2160) on a GPU, 0 in the fast mode (QUALITY_FAST: its bilinear pairs
-   * are the interiors') and on a CPU rasterizer (llvmpipe, softpipe, SwiftShader); 0: every
-   * pass drawn in pieces. On an NVIDIA H200 the default chain on
+   * interior's uniform weights are cheaper per sample on large passes. On a CPU rasterizer (Mesa's
+   * llvmpipe) a draw costs little and a table fetch per tap much: there one draw made the default
+   * chain 15-30 % slower at 480 x 270. Default -1, automatic: 2097152 (2^21: every pass of a 1920 x
+   * 1080 frame, all but the composite at 3840 x 2160) on a GPU, 0 on a CPU rasterizer (llvmpipe,
+   * softpipe, SwiftShader); 0: every pass drawn in pieces. On an NVIDIA H200 the default chain on
    * lit-spheres then adds 0.31 ms (1080p) and 0.36 ms (4K) over a compute copy, against 0.39
    * and 0.50 in pieces (docs/gpu.md).
    */
@@ -545,7 +525,6 @@ protected:
   int LastTileGuardBand[2] = { 0, 0 };
   int KeptFrameMode = KEPT_FRAME_OFF;
   bool LastTileFromKeptFrame = false;
-  int Quality;
   bool UseComputeShaders;
   bool SimulateComputeShaderFailure = false;
   int SingleDrawSamples = -1;

@@ -81,6 +81,15 @@ void vtkBloomPassChainRunner::ReleaseGraphicsResources(vtkWindow* w)
 }
 
 //------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::BeginFrame(const Settings& settings)
+{
+  this->Frame = settings;
+  this->Passes = 0;
+  this->ComputePasses = 0;
+  this->Profile.clear();
+}
+
+//------------------------------------------------------------------------------
 std::string vtkBloomPassChainRunner::ShaderConstants()
 {
   std::ostringstream os;
@@ -152,23 +161,23 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
   }
   if (xMode == OP_PERIODIC)
   {
-    os << this->InteriorOf(*spec.X).Defines("X", this->Linear(spec, spec.X));
+    os << this->InteriorOf(*spec.X).Defines("X");
   }
   if (yMode == OP_PERIODIC)
   {
-    os << this->InteriorOf(*spec.Y).Defines("Y", this->Linear(spec, spec.Y));
+    os << this->InteriorOf(*spec.Y).Defines("Y");
   }
   // Emitters are light whatever their colour: their emission is not thresholded.
-  const int mode = this->ThresholdEmission ? this->Parameters->GetThresholdMode()
-                                           : static_cast<int>(vtkImageBloomThreshold::NONE);
+  const int mode = this->In.Threshold ? this->Frame.Parameters->GetThresholdMode()
+                                      : static_cast<int>(vtkImageBloomThreshold::NONE);
   os << "#define STEP " << spec.Step << "\n#define THRESHOLD_MODE " << mode
      << "\n#define SCENE_BACKGROUND "
      << (spec.Step == STEP_COMPOSITE ? this->Resources.BackgroundMode : 0)
-     << "\n#define MASK_BY_DEPTH " << (spec.ReadsSource && this->MaskSource ? 1 : 0)
+     << "\n#define MASK_BY_DEPTH " << (spec.ReadsSource && this->In.Mask ? 1 : 0)
      << "\n#define SANITIZE_SOURCE " << (spec.ReadsSource && this->SanitizeSource ? 1 : 0)
-     << "\n#define EMISSION_IN_ALPHA " << (spec.ReadsSource && this->EmissionInAlpha ? 1 : 0)
+     << "\n#define EMISSION_IN_ALPHA " << (spec.ReadsSource && this->In.InAlpha ? 1 : 0)
      << "\n#define SCENE_ALPHA_CLAMPED "
-     << (spec.Step == STEP_COMPOSITE && this->EmissionInAlpha ? 1 : 0)
+     << (spec.Step == STEP_COMPOSITE && this->Out.EmissionInAlpha ? 1 : 0)
      << "\n#define SANITIZE_OUTPUT " << (this->SanitizeOutput ? 1 : 0)
      << "\n#define COMPOSITE_BLOOM " << (spec.CompositeBloom ? 1 : 0) << "\n#define DISCARD_ZERO "
      << (spec.DiscardZero ? 1 : 0) << "\n#define ZERO_BLOOM " << (spec.ZeroBloom ? 1 : 0) << "\n";
@@ -197,7 +206,7 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
 void vtkBloomPassChainRunner::Pass(
   vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec)
 {
-  if (this->Profiling)
+  if (this->Frame.Profiling)
   {
     this->BeginProfiledSpan();
   }
@@ -294,7 +303,7 @@ void vtkBloomPassChainRunner::Pass(
       texture->Deactivate();
     }
   }
-  if (this->Profiling)
+  if (this->Frame.Profiling)
   {
     this->EndProfiledPass(spec);
   }
@@ -328,13 +337,12 @@ vtkBloomPassChainRunner::VariantEntry& vtkBloomPassChainRunner::VariantOf(
 {
   // Everything Variant() reads, in the order it writes it.
   const bool composite = spec.Step == STEP_COMPOSITE;
-  const int mode = this->ThresholdEmission ? this->Parameters->GetThresholdMode()
-                                           : static_cast<int>(vtkImageBloomThreshold::NONE);
-  const bool flags[] = { draw.XMode == OP_PERIODIC && this->Linear(spec, spec.X),
-    draw.YMode == OP_PERIODIC && this->Linear(spec, spec.Y), spec.ReadsSource && this->MaskSource,
-    spec.ReadsSource && this->SanitizeSource, spec.ReadsSource && this->EmissionInAlpha,
-    composite && this->EmissionInAlpha, this->SanitizeOutput, spec.CompositeBloom, spec.DiscardZero,
-    draw.Zero, spec.Blend, spec.Tiled, spec.SecondIsAddend };
+  const int mode = this->In.Threshold ? this->Frame.Parameters->GetThresholdMode()
+                                      : static_cast<int>(vtkImageBloomThreshold::NONE);
+  const bool flags[] = { spec.ReadsSource && this->In.Mask,
+    spec.ReadsSource && this->SanitizeSource, spec.ReadsSource && this->In.InAlpha,
+    composite && this->Out.EmissionInAlpha, this->SanitizeOutput, spec.CompositeBloom,
+    spec.DiscardZero, draw.Zero, spec.Blend, spec.Tiled, spec.SecondIsAddend };
   std::uintptr_t bits = 0;
   for (bool flag : flags)
   {
@@ -381,7 +389,7 @@ vtkBloomPassChainRunner::ImageTarget vtkBloomPassChainRunner::BeginPass(
     state->vtkglBlendEquation(GL_FUNC_ADD);
     state->vtkglBlendFunc(GL_ONE, GL_ONE);
   }
-  else if (!target && this->CompositeOver)
+  else if (!target && this->Out.Over)
   {
     // Over the layers below, premultiplied (the scene was rendered over transparent black).
     state->vtkglEnable(GL_BLEND);
@@ -400,7 +408,7 @@ std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
   const PassSpec& spec, int width, int height)
 {
   const Box whole = spec.Step == STEP_COMPOSITE
-    ? Box::Window(this->CompositeWindow, width, height).Intersection(Box::Whole(width, height))
+    ? Box::Window(this->Out.Window, width, height).Intersection(Box::Whole(width, height))
     : Box::Whole(width, height);
   const Box region = spec.Region ? spec.Region->Intersection(whole) : whole;
   if (spec.Step != STEP_COMPOSITE && !spec.ReadsSource)
@@ -450,22 +458,20 @@ std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
 //------------------------------------------------------------------------------
 int vtkBloomPassChainRunner::SingleDrawLimit()
 {
-  // Automatic: none in the fast mode (its bilinear pairs are the interiors') or on a CPU
-  // rasterizer; else every pass up to 2^21 samples.
-  return this->SingleDrawSamples >= 0            ? this->SingleDrawSamples
-    : (this->Fast || this->SoftwareRasterizer()) ? 0
-                                                 : 1 << 21;
+  // Automatic: none on a CPU rasterizer; else every pass up to 2^21 samples.
+  return this->Frame.SingleDrawSamples >= 0 ? this->Frame.SingleDrawSamples
+    : this->SoftwareRasterizer()            ? 0
+                                            : 1 << 21;
 }
 
 //------------------------------------------------------------------------------
 bool vtkBloomPassChainRunner::Fuses(
   const vtkBloomLinearOperator& x, const vtkBloomLinearOperator& y)
 {
-  // The tiled pass evaluates both axes by their tables, as one draw does; the fast mode's
-  // bilinear pairs are the separable passes' own. A compute program that does not build runs
-  // as a fragment 2D pass: the same sums, each row summed again per output.
-  return this->FuseSeparablePasses && !this->Fast && this->UseCompute &&
-    !this->SimulateComputeFailure && this->ComputeSupported() &&
+  // The tiled pass evaluates both axes by their tables, as one draw does. A compute program that
+  // does not build runs as a fragment 2D pass: the same sums, each row summed again per output.
+  return this->Frame.FuseSeparablePasses && this->Frame.UseCompute &&
+    !this->Frame.SimulateComputeFailure && this->ComputeSupported() &&
     static_cast<double>(x.OutputSize) * y.OutputSize <= this->SingleDrawLimit() &&
     this->TileRows(y) <= MaximumTileRows;
 }
@@ -482,7 +488,7 @@ bool vtkBloomPassChainRunner::FusesTwo(const vtkBloomLinearOperator& x,
 //------------------------------------------------------------------------------
 vtkBloomPassChainRunner::PassTextures vtkBloomPassChainRunner::PassTexturesOf(const PassSpec& spec)
 {
-  const bool mask = spec.ReadsSource && this->MaskSource;
+  const bool mask = spec.ReadsSource && this->In.Mask;
   PassTextures t;
   t.Textures = { spec.Source, spec.X ? this->OperatorTexture(*spec.X) : nullptr,
     spec.Y ? this->OperatorTexture(*spec.Y) : nullptr, spec.Addend,
@@ -522,13 +528,10 @@ void vtkBloomPassChainRunner::SetDrawUniforms(
   {
     u.Float("weight2", spec.Second->Weight);
   }
-  const float texel[2] = { 1.0f / spec.Source->GetWidth(), 1.0f / spec.Source->GetHeight() };
-  u.Float2("sourceTexel", texel);
   // The interior's weights of each axis evaluated as a periodic convolution.
   const vtkBloomLinearOperator* ops[2] = { spec.X, spec.Y };
   const int modes[2] = { draw.XMode, draw.YMode };
-  const char* names[2][3] = { { "xInterior", "xWeights", "xOffsets" },
-    { "yInterior", "yWeights", "yOffsets" } };
+  const char* names[2][2] = { { "xInterior", "xWeights" }, { "yInterior", "yWeights" } };
   for (int axis = 0; axis < 2; ++axis)
   {
     if (modes[axis] != OP_PERIODIC)
@@ -538,16 +541,7 @@ void vtkBloomPassChainRunner::SetDrawUniforms(
     const Interior& in = this->InteriorOf(*ops[axis]);
     const int values[3] = { in.Begin, in.First[0], in.First[1] };
     u.Ints(names[axis][0], 3, values);
-    if (this->Linear(spec, ops[axis]))
-    {
-      const int n = static_cast<int>(in.PairWeights.size());
-      u.Floats(names[axis][1], n, in.PairWeights.data());
-      u.Floats(names[axis][2], n, in.PairOffsets.data());
-    }
-    else
-    {
-      u.Floats(names[axis][1], static_cast<int>(in.Weights.size()), in.Weights.data());
-    }
+    u.Floats(names[axis][1], static_cast<int>(in.Weights.size()), in.Weights.data());
   }
   this->SetStepUniforms(u, spec.Step);
 }
@@ -555,7 +549,7 @@ void vtkBloomPassChainRunner::SetDrawUniforms(
 //------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::SetStepUniforms(Uniforms& u, int step)
 {
-  vtkBloomParameters* p = this->Parameters;
+  vtkBloomParameters* p = this->Frame.Parameters;
   auto setf = [&u](const char* name, double value) { u.Float(name, value); };
   auto set3f = [&u](const char* name, const double values[3]) { u.Float3(name, values); };
   if (step == STEP_THRESHOLD || step == STEP_KARIS_TERM)
@@ -577,7 +571,7 @@ void vtkBloomPassChainRunner::SetStepUniforms(Uniforms& u, int step)
     const double strength = p->GetStrength();
     const double* tint = p->GetTint();
     setf("keep", p->GetCompositeMode() == vtkBloomParameters::LERP ? 1.0 - strength : 1.0);
-    setf("glowAlpha", this->GlowAlpha ? 1.0 : 0.0);
+    setf("glowAlpha", this->Out.GlowAlpha ? 1.0 : 0.0);
     if (this->Resources.BackgroundMode == vtkBloomPassResources::BACKGROUND_COLOR)
     {
       u.Float4("backgroundColor", this->Resources.BackgroundColor);
@@ -586,7 +580,7 @@ void vtkBloomPassChainRunner::SetStepUniforms(Uniforms& u, int step)
     {
       // The background holds the renderer's pixels; the window's first sample is its first.
       const int* origin = this->Resources.BackgroundOrigin;
-      const int* window = this->CompositeWindow;
+      const int* window = this->Out.Window;
       const int shifted[2] = { origin[0] - window[0], origin[1] - window[2] };
       u.Int2("backgroundOrigin", shifted);
     }

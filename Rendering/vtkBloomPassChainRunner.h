@@ -13,9 +13,8 @@
  * from the one shader file and #defines: a fragment program, or for the passes into the
  * chain's own targets where the context has OpenGL 4.3 a compute program of the same file
  * (vtkBloomPassCompute.cxx). With Restrict each pass covers only the box its output can be
- * non-zero in (vtkBloomPassRegion.cxx); with Fast the interiors run as bilinear pairs of taps
- * (vtkBloomPassOperators.cxx). A separable pair of passes that is one draw runs as one tiled
- * compute pass (PassSpec::Tiled), and a second term of the same output may share it
+ * non-zero in (vtkBloomPassRegion.cxx). A separable pair of passes that is one draw runs as one
+ * tiled compute pass (PassSpec::Tiled), and a second term of the same output may share it
  * (PassSpec::Second: a level's two downsample terms, a level's blur inside its upsample); the
  * compute passes into the chain's targets barrier only where a later pass needs it
  * (Deferring).
@@ -54,135 +53,124 @@ public:
   vtkBloomPassChainRunner(const vtkBloomPassChainRunner&) = delete;
   vtkBloomPassChainRunner& operator=(const vtkBloomPassChainRunner&) = delete;
 
-  /**
-   * Bloom `emission` (the scene's or the emitters' colour; with `mask`, only where the
-   * emitters are the visible surface) into the chain's targets. Returns false when the bloom
-   * is skipped (no level, a disabled effect or nothing bright): the composite then keeps the
-   * scene only.
-   */
-  bool Run(vtkTextureObject* emission, bool mask);
-
-  /**
-   * Settings of the next Run() and Composite(): Parameters (not owned) define the chain and
-   * the point-wise values (threshold, composite); Fast runs the fast mode
-   * (vtkBloomPass::QUALITY_FAST: bilinear pairs of taps in the operators' interiors, on the
-   * half-float targets BuildChain made for it); Restrict makes every pass after the bright pass
-   * cover only the box its output can be non-zero in (vtkBloomParameters::RestrictToBrightRegion,
-   * vtkBloomPassRegion.cxx).
-   */
-  vtkBloomParameters* Parameters = nullptr;
-  bool Fast = false;
-  /// The composite raises a transparent scene's alpha by the glow (a rendered frame), or
-  /// keeps the scene's alpha (an image, as vtkImageBloom does).
-  bool GlowAlpha = true;
-  /**
-   * The scene's render wrote selective bloom's emission in its alpha (vtkBloomPassEmission):
-   * the bright pass reads the colour times min(1, max(0, alpha - 1)), the composite the alpha
-   * as min(alpha, 1). Set before Run().
-   */
-  bool EmissionInAlpha = false;
-  /**
-   * The bright pass applies the parameters' threshold (true), or takes the emission whole
-   * (false: selective bloom's emitters are light whatever their colour). Set before Run().
-   */
-  bool ThresholdEmission = true;
-  /**
-   * The multisampled scene (its colour before the resolve) and its samples: the bright pass
-   * thresholds each sample and takes their mean (SAMPLE_THRESHOLD in vtkBloomPassFS.glsl;
-   * vtkBloomPass::ThresholdSamples). Null: the resolved emission, as it is. Set before Run().
-   */
-  vtkTextureObject* SourceSamples = nullptr;
-  int SourceSampleCount = 0;
-  /**
-   * The multisampled scene again, for the composite: where it writes the framebuffer the pass
-   * was called with and that framebuffer has as many samples, each of its samples is the
-   * composite of the scene's own sample (COMPOSITE_SAMPLES in vtkBloomPassFS.glsl), so that the
-   * window resolves the samples the renderer would have drawn, as it resolves them (VTK presents
-   * a multisampled window through a gamma 2.2 average). Null, or no per-sample shading
-   * (GL_ARB_sample_shading): the resolved scene, the same value in every sample. Set before
-   * Composite().
-   */
-  vtkTextureObject* SceneSamples = nullptr;
-  int SceneSampleCount = 0;
-  /**
-   * The pass into the framebuffer (the composite, or the copy of the captured result) goes
-   * over what the framebuffer holds, premultiplied (GL_ONE, GL_ONE_MINUS_SRC_ALPHA), instead of
-   * replacing it: a renderer on a higher layer, which clears nothing, blooms over the layers
-   * below. Such a pass is always a fragment pass.
-   */
-  bool CompositeOver = false;
-  bool Restrict = false;
-
-  /**
-   * Run the chain's passes into its targets as compute shaders where the context has OpenGL
-   * 4.3 (vtkBloomPassCompute.cxx; vtkBloomPass::UseComputeShaders), the bright region's
-   * reduction as one dispatch, and the composite too where the framebuffer's colour buffer
-   * can be written as an image (FramebufferImage); else fragment passes.
-   */
-  bool UseCompute = true;
-  /// For tests: every compute variant fails to build (the fallback to fragments then runs).
-  bool SimulateComputeFailure = false;
-  /// A pass of at most this many output samples is one draw (vtkBloomPass::SingleDrawSamples;
-  /// negative: automatic, by SoftwareRasterizer).
-  int SingleDrawSamples = -1;
-  /**
-   * A separable pair of passes (x into a scratch target, then y) that is one draw is one
-   * compute dispatch instead (vtkBloomPass::FuseSeparablePasses): a 2D pass whose work groups
-   * sum the source rows they read once, in shared memory (TILE in vtkBloomPassFS.glsl).
-   */
-  bool FuseSeparablePasses = true;
-  /// Whether the context renders on the CPU (Mesa's llvmpipe or softpipe, SwiftShader), asked
-  /// once per context.
-  bool SoftwareRasterizer();
-  int Software = 0;      ///< 0 not asked, 1 yes, -1 no
-  int ComputePasses = 0; ///< passes drawn as compute since it was last set to 0
-
-  /**
-   * The last Run()'s bright region (the bounding box of the bright pass's non-zero samples, in
-   * level-0 samples, x0 x1 y0 y1 with x1, y1 past the end; all 0 when empty or not measured)
-   * and the samples its passes computed over those a full evaluation computes (1 when not
-   * restricted), the composite included.
-   */
-  int BrightRegion[4] = { 0, 0, 0, 0 };
-  double Coverage = 1.0;
-
-  /// Average GPU milliseconds of a content-aware evaluation with and without the region
-  /// measured; negative until timed (RegionPays).
-  double RegionCost = -1.0;
-  double FullCost = -1.0;
-
-  /**
-   * GPU milliseconds of the latest evaluation whose timestamps have arrived (from the bright
-   * pass to the end of the composite); negative until one has. Collects what has arrived,
-   * without waiting; the context must be current.
-   */
-  double CollectLastChainMilliseconds()
+  /// How the chain runs, fixed for a frame: given to BeginFrame().
+  struct Settings
   {
-    this->TimeEveryChain = true;
-    this->CollectCostTimings();
-    return this->LastChainMilliseconds;
-  }
-  double LastChainMilliseconds = -1.0;
-  /// Every evaluation is timed (set once CollectLastChainMilliseconds is asked); else only
-  /// those RegionPays learns from.
-  bool TimeEveryChain = false;
+    /// The chain and the point-wise values (threshold, composite); not owned.
+    vtkBloomParameters* Parameters = nullptr;
+    /// Every pass after the bright pass covers only the box its output can be non-zero in
+    /// (vtkBloomParameters::RestrictToBrightRegion, vtkBloomPassRegion.cxx).
+    bool Restrict = false;
+    /**
+     * The chain's passes into its targets as compute shaders where the context runs them
+     * (vtkBloomPassCompute.cxx; vtkBloomPass::UseComputeShaders), the bright region's reduction
+     * as one dispatch, and the composite too where the framebuffer's colour buffer can be
+     * written as an image (FramebufferImage); else fragment passes.
+     */
+    bool UseCompute = true;
+    /// For tests: every compute variant fails to build (the fallback to fragments then runs).
+    bool SimulateComputeFailure = false;
+    /// A pass of at most this many output samples is one draw (vtkBloomPass::SingleDrawSamples;
+    /// negative: automatic, by the rasterizer).
+    int SingleDrawSamples = -1;
+    /**
+     * A separable pair of passes (x into a scratch target, then y) that is one draw is one
+     * compute dispatch instead (vtkBloomPass::FuseSeparablePasses): a 2D pass whose work groups
+     * sum the source rows they read once, in shared memory (TILE in vtkBloomPassFS.glsl).
+     */
+    bool FuseSeparablePasses = true;
+    /**
+     * Every pass, and every span between BeginProfiledSpan and EndProfiledSpan, is bracketed by
+     * timestamp queries (vtkBloomPass::ProfilePasses); ResolveProfile then waits for the GPU
+     * and fills in GetProfile()'s times. Off, a pass pays one test.
+     */
+    bool Profiling = false;
+  };
+
+  /// Start a frame with `settings`: the pass counts and the profile start from nothing.
+  void BeginFrame(const Settings& settings);
+
+  /// The light that Run() (or BrightPassPSF()) blooms.
+  struct Light
+  {
+    /// The scene's or the emitters' colour.
+    vtkTextureObject* Emission = nullptr;
+    /// Only where the emitters are the visible surface (their depth against the scene's).
+    bool Mask = false;
+    /**
+     * The scene's render wrote selective bloom's emission in its alpha (vtkBloomPassEmission):
+     * the bright pass reads the colour times min(1, max(0, alpha - 1)).
+     */
+    bool InAlpha = false;
+    /// The parameters' threshold applies (true), or the emission is taken whole (false:
+    /// selective bloom's emitters are light whatever their colour).
+    bool Threshold = true;
+    /**
+     * The multisampled scene (its colour before the resolve) and its samples: the bright pass
+     * thresholds each sample and takes their mean (SAMPLE_THRESHOLD in vtkBloomPassFS.glsl;
+     * vtkBloomPass::ThresholdSamples). Null: Emission, as it is.
+     */
+    vtkTextureObject* Samples = nullptr;
+    int SampleCount = 0;
+  };
 
   /**
-   * The samples of the chain's frame that Composite() writes, x0 x1 y0 y1 (x1, y1 past the
-   * end); all 0: the whole frame. A tile rendered with its guard band (vtkBloomPassTile)
-   * writes the tile only.
+   * Bloom `light` into the chain's targets. Returns false when the bloom is skipped (no level,
+   * a disabled effect or nothing bright): the composite then keeps the scene only.
    */
-  int CompositeWindow[4] = { 0, 0, 0, 0 };
+  bool Run(const Light& light);
+
+  /**
+   * PSF mode (vtkBloomParameters::BLOOM_PSF): the bright pass of `light` at full size, with no
+   * resample, into `bright` (as vtkImageBloom's PSF mode thresholds its input). False when the
+   * bloom is skipped (a disabled effect, or nothing bright with SkipEmptyBloom).
+   */
+  bool BrightPassPSF(const Light& light, vtkBloomPassTarget& bright);
+
+  /// How Composite(), Copy() and CompositeEdges() write the frame.
+  struct Output
+  {
+    /// A transparent scene's alpha is raised by the glow (a rendered frame), or kept (an
+    /// image, as vtkImageBloom keeps it).
+    bool GlowAlpha = true;
+    /// The scene's alpha holds the emission (Light::InAlpha): the composite reads it as
+    /// min(alpha, 1).
+    bool EmissionInAlpha = false;
+    /**
+     * The pass into the framebuffer goes over what it holds, premultiplied (GL_ONE,
+     * GL_ONE_MINUS_SRC_ALPHA), instead of replacing it: a renderer on a higher layer, which
+     * clears nothing, blooms over the layers below. Such a pass is always a fragment pass.
+     */
+    bool Over = false;
+    /**
+     * The multisampled scene: where the composite writes a framebuffer of as many samples, each
+     * sample is the composite of the scene's own sample (COMPOSITE_SAMPLES in
+     * vtkBloomPassFS.glsl), so that the window resolves the samples the renderer would have
+     * drawn, as it resolves them (VTK presents a multisampled window through a gamma 2.2
+     * average). Null, or no per-sample shading (GL_ARB_sample_shading): the resolved scene, the
+     * same value in every sample.
+     */
+    vtkTextureObject* SceneSamples = nullptr;
+    int SceneSampleCount = 0;
+    /**
+     * The samples of the chain's frame written, x0 x1 y0 y1 (x1, y1 past the end); all 0: the
+     * whole frame. A tile rendered with its guard band (vtkBloomPassTile) writes the tile only.
+     */
+    int Window[4] = { 0, 0, 0, 0 };
+    /// PSF mode: the full-size bloom term the composite adds, and its size (null: the chain's).
+    vtkBloomPassTarget* PSFBloom = nullptr;
+  };
 
   /**
    * out = keep * scene + Strength * Tint * bloom into `target`, or into the bound framebuffer
    * at `origin` when `target` is null: the frame's sample (i, j) lands at origin + (i, j), for
-   * the samples of CompositeWindow.
+   * the samples of output.Window.
    */
-  void Composite(vtkBloomPassTarget* target, const int origin[2], bool bloom);
+  void Composite(const Output& output, vtkBloomPassTarget* target, const int origin[2], bool bloom);
 
   /// Copy `source` into `target`, or into the bound framebuffer at `origin` when it is null.
-  void Copy(vtkBloomPassTarget* target, const int origin[2], vtkBloomPassTarget& source);
+  void Copy(const Output& output, vtkBloomPassTarget* target, const int origin[2],
+    vtkBloomPassTarget& source);
 
   /**
    * After the composite or the copy into the bound framebuffer at `origin`, where that
@@ -190,37 +178,40 @@ public:
    * scene's own samples (COMPOSITE_SAMPLES in vtkBloomPassFS.glsl), as the renderer would have
    * drawn them. Nothing where it does not apply (CompositeSamples).
    */
-  void CompositeEdges(const int origin[2], bool bloom);
+  void CompositeEdges(const Output& output, const int origin[2], bool bloom);
+
+  ///@{
+  /// What the frame did: passes drawn (the composite included) and how many of them as compute.
+  int GetPasses() const { return this->Passes; }
+  int GetComputePasses() const { return this->ComputePasses; }
+  ///@}
 
   /**
-   * PSF mode (vtkBloomParameters::BLOOM_PSF): the bright pass of `emission` at full size, with
-   * no resample, into `bright` (as vtkImageBloom's PSF mode thresholds its input). False when
-   * the bloom is skipped (a disabled effect, or nothing bright with SkipEmptyBloom).
+   * The last Run()'s bright region (the bounding box of the bright pass's non-zero samples, in
+   * level-0 samples, x0 x1 y0 y1 with x1, y1 past the end; all 0 when empty or not measured)
+   * and the samples its passes computed over those a full evaluation computes (1 when not
+   * restricted), the composite included.
    */
-  bool BrightPassPSF(vtkTextureObject* emission, bool mask, vtkBloomPassTarget& bright);
+  const int* GetBrightRegion() const { return this->BrightRegion; }
+  double GetCoverage() const { return this->Coverage; }
 
-  /// PSF mode: the full-size bloom term the composite adds, and its size (null: the chain's).
-  vtkBloomPassTarget* PSFBloom = nullptr;
+  /// Average GPU milliseconds of a content-aware evaluation with and without the region
+  /// measured; negative until timed (RegionPays).
+  double GetRegionCost() const { return this->RegionCost; }
+  double GetFullCost() const { return this->FullCost; }
 
   /**
-   * Compile and link one compute shader; 0 when either fails, with the compiler's log in
-   * `log` (when given). Shared by the chain's compute passes, the region's reduction and
-   * PSF bloom's FFT (vtkBloomPassFFT).
+   * GPU milliseconds of the latest evaluation whose timestamps have arrived (from the bright
+   * pass to the end of the composite); negative until one has. Collects what has arrived,
+   * without waiting; the context must be current. From the first call on, every evaluation is
+   * timed.
    */
-  static unsigned int BuildComputeProgram(const char* source, std::string* log);
-
-  /// Free the operator textures; call it before the chain is rebuilt.
-  void ReleaseOperators(vtkWindow* w);
-
-  /// Free the operator textures, the programs and the query.
-  void ReleaseGraphicsResources(vtkWindow* w);
-
-  int Passes = 0; ///< passes drawn since it was last set to 0, the composite included
+  double CollectLastChainMilliseconds();
 
   /**
-   * One profiled pass (vtkBloomPass::ProfilePasses): its name, the size it wrote, its
-   * compulsory memory traffic (every texture it reads read once, its target written once, and
-   * read once more when it blends) and its GPU time from two GL timestamp queries.
+   * One profiled pass (Settings::Profiling): its name, the size it wrote, its compulsory
+   * memory traffic (every texture it reads read once, its target written once, and read once
+   * more when it blends) and its GPU time from two GL timestamp queries.
    */
   struct ProfiledPass
   {
@@ -229,17 +220,19 @@ public:
     double Bytes = 0.0;
     double Milliseconds = 0.0;
   };
-
-  /**
-   * With Profiling on, every pass, and every span between BeginProfiledSpan and
-   * EndProfiledSpan, is bracketed by timestamp queries and appended to Profile; ResolveProfile
-   * then waits for the GPU and fills in the times. Off, Pass() pays one test.
-   */
-  bool Profiling = false;
-  std::vector<ProfiledPass> Profile;
+  const std::vector<ProfiledPass>& GetProfile() const { return this->Profile; }
+  /// A span of work outside the chain's passes (PSF bloom's FFT stages), profiled as a pass.
   void BeginProfiledSpan();
   void EndProfiledSpan(const std::string& name, int width, int height, double bytes);
+  /// Wait for the GPU and fill in the profile's times.
   void ResolveProfile();
+
+  /**
+   * Compile and link one compute shader; 0 when either fails, with the compiler's log in
+   * `log` (when given). Shared by the chain's compute passes, the region's reduction and
+   * PSF bloom's FFT (vtkBloomPassFFT).
+   */
+  static unsigned int BuildComputeProgram(const char* source, std::string* log);
 
   /**
    * Whether the current context runs compute shaders as the pass writes them: OpenGL 4.3, or
@@ -251,7 +244,35 @@ public:
   /// Whether the current context lists the extension `name` (glGetStringi).
   static bool HasExtension(const char* name);
 
+  /// Free the operator textures; call it before the chain is rebuilt.
+  void ReleaseOperators(vtkWindow* w);
+
+  /// Free the operator textures, the programs and the query.
+  void ReleaseGraphicsResources(vtkWindow* w);
+
 private:
+  // What BeginFrame(), Run() and the composite's calls were given, for the passes they draw.
+  Settings Frame;
+  Light In;
+  Output Out;
+
+  // What the frame did (the getters').
+  int Passes = 0;        ///< passes drawn since BeginFrame, the composite included
+  int ComputePasses = 0; ///< of them, compute passes
+  int BrightRegion[4] = { 0, 0, 0, 0 };
+  double Coverage = 1.0;
+  double RegionCost = -1.0;
+  double FullCost = -1.0;
+  double LastChainMilliseconds = -1.0;
+  /// Every evaluation is timed (set once CollectLastChainMilliseconds is asked); else only
+  /// those RegionPays learns from.
+  bool TimeEveryChain = false;
+  std::vector<ProfiledPass> Profile;
+
+  /// Whether the context renders on the CPU (Mesa's llvmpipe or softpipe, SwiftShader), asked
+  /// once per context.
+  bool SoftwareRasterizer();
+  int Software = 0; ///< 0 not asked, 1 yes, -1 no
   // Values shared with vtkBloomPassFS.glsl, emitted into the shader as #defines.
   enum
   {
@@ -287,19 +308,10 @@ private:
     int First[2] = { 0, 0 };    ///< First of rows Begin and Begin + 1 (period 2)
     std::vector<float> Weights; ///< Period rows of Taps weights
 
-    /**
-     * The fast mode's bilinear pairs (0 when a weight is negative): taps 2 m and 2 m + 1 of
-     * each row as one bilinear fetch of weight w0 + w1 at offset 2 m + w1 / (w0 + w1).
-     */
-    int Pairs = 0;
-    std::vector<float> PairWeights; ///< Period rows of Pairs weights
-    std::vector<float> PairOffsets; ///< Period rows of Pairs offsets from First
-
     static Interior Find(const vtkBloomLinearOperator& op);
 
-    /// The #defines of OP_PERIODIC along `axis` ("X" or "Y"), with bilinear pairs when
-    /// `linear`; the weights are uniforms.
-    std::string Defines(const char* axis, bool linear) const;
+    /// The #defines of OP_PERIODIC along `axis` ("X" or "Y"); the weights are uniforms.
+    std::string Defines(const char* axis) const;
   };
 
   /// A box of samples [X0, X1) x [Y0, Y1); empty when X0 >= X1 or Y0 >= Y1.
@@ -364,8 +376,8 @@ private:
   int SingleDrawLimit();
   /**
    * Whether the separable pair x then y (x's output rows are y's input) runs as one tiled
-   * compute pass (PassSpec::Tiled): FuseSeparablePasses, compute shaders, the exact mode, a
-   * pass of one draw, and at most MaximumTileRows rows read by any 16 consecutive outputs of y.
+   * compute pass (PassSpec::Tiled): FuseSeparablePasses, compute shaders, a pass of one draw, and
+   * at most MaximumTileRows rows read by any 16 consecutive outputs of y.
    */
   bool Fuses(const vtkBloomLinearOperator& x, const vtkBloomLinearOperator& y);
   /// Fuses both terms, of one output size, into one tiled pass (their rows shared memory).
@@ -405,11 +417,11 @@ private:
     const Box* Of(const Box& box) const;
   };
   /// Run()'s steps; Run() makes their last writes visible (FlushComputeWrites).
-  bool RunSteps(vtkTextureObject* emission, bool mask);
+  bool RunSteps();
   /// Whether this Run() measures the bright region (Restrict, probed and explored over frames).
   bool ChooseRestrict();
   /// 1. The bright pass into level 0; false when nothing is bright (the bloom is skipped).
-  bool BrightPass(vtkTextureObject* emission, ChainRegions& regions);
+  bool BrightPass(ChainRegions& regions);
   /**
    * 2. and 3. The pyramid, each level from the unblurred level above it (DownsampleLevel), and
    * the blur of each contributing level (BlurLevel), interleaved: level i - 1's blur after level
@@ -532,9 +544,6 @@ private:
   /// The program of one variant, made on first use; null (with an error) if it fails.
   vtkOpenGLQuadHelper* Program(const std::string& variant);
   std::string Variant(const PassSpec& spec, int xMode, int yMode);
-
-  /// Whether the pass evaluates `op`'s interior with bilinear pairs (the fast mode).
-  bool Linear(const PassSpec& spec, const vtkBloomLinearOperator* op);
 
   /**
    * One pass into `target` (or the bound framebuffer when null, at `origin`): one draw per
@@ -753,7 +762,6 @@ private:
   unsigned int Query = 0;
 
   // Values of the current evaluation that the programs read as uniforms.
-  bool MaskSource = false;
   bool SanitizeSource = false;
   bool SanitizeOutput = false;
 };

@@ -61,7 +61,7 @@ void vtkBloomPassChainRunner::EndProfiledPass(const PassSpec& spec)
   {
     bytes += texel * this->Resources.Chain.Width * this->Resources.Chain.Height;
   }
-  if (spec.ReadsSource && this->MaskSource)
+  if (spec.ReadsSource && this->In.Mask)
   {
     bytes += 2.0 * 4.0 * spec.SourceSize[0] * spec.SourceSize[1]; // the two depth textures
   }

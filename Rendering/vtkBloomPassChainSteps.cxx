@@ -27,11 +27,10 @@ namespace
  * intermediate target count for a quarter of the separable cost. The 2:1 box (2 x 2 taps) is
  * one pass, the 2:1 tent (4 x 4) two.
  */
-bool TwoDimensional(const vtkBloomChain::Term& term, bool fast)
+bool TwoDimensional(const vtkBloomChain::Term& term)
 {
-  // The fast mode fetches pairs of taps.
-  const double wx = fast ? (term.X.Width + 1) / 2 : term.X.Width;
-  const double wy = fast ? (term.Y.Width + 1) / 2 : term.Y.Width;
+  const double wx = term.X.Width;
+  const double wy = term.Y.Width;
   const double outputs = static_cast<double>(term.X.OutputSize) * term.Y.OutputSize;
   const double single = wx * wy * outputs;
   const double separable = wx * term.X.OutputSize * term.Y.InputSize + wy * outputs;
@@ -40,21 +39,21 @@ bool TwoDimensional(const vtkBloomChain::Term& term, bool fast)
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassChainRunner::Run(vtkTextureObject* emission, bool mask)
+bool vtkBloomPassChainRunner::Run(const Light& light)
 {
-  this->Deferring = !this->Profiling;
-  const bool ran = this->RunSteps(emission, mask);
+  this->In = light;
+  this->Deferring = !this->Frame.Profiling;
+  const bool ran = this->RunSteps();
   this->FlushComputeWrites();
   this->Deferring = false;
   return ran;
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassChainRunner::RunSteps(vtkTextureObject* emission, bool mask)
+bool vtkBloomPassChainRunner::RunSteps()
 {
-  vtkBloomParameters* parameters = this->Parameters;
+  vtkBloomParameters* parameters = this->Frame.Parameters;
   const vtkBloomChain& c = this->Resources.Chain;
-  this->MaskSource = mask;
   this->SanitizeSource = parameters->GetSanitizeNonFinite();
   this->SanitizeOutput = parameters->GetSanitizeNonFinite();
   const size_t n = c.Levels.size();
@@ -70,7 +69,7 @@ bool vtkBloomPassChainRunner::RunSteps(vtkTextureObject* emission, bool mask)
   // Timed only where the time is used: while RegionPays still decides (content-aware and not
   // declined), or every evaluation once GetLastChainMilliseconds was asked. A chain that runs
   // full for good (the region declined, or not asked for) issues no query.
-  if ((this->Restrict && !this->RegionDeclined) || this->TimeEveryChain)
+  if ((this->Frame.Restrict && !this->RegionDeclined) || this->TimeEveryChain)
   {
     this->BeginCostTiming(regions.Restrict);
   }
@@ -83,7 +82,7 @@ bool vtkBloomPassChainRunner::RunSteps(vtkTextureObject* emission, bool mask)
   regions.Accum.resize(n);
   regions.Blurred.resize(n);
 
-  if (!this->BrightPass(emission, regions)) // 1. the bright pass
+  if (!this->BrightPass(regions)) // 1. the bright pass
   {
     return false;
   }
@@ -108,7 +107,7 @@ bool vtkBloomPassChainRunner::ChooseRestrict()
   // not hide. While the region keeps covering much of the chain, measure it only every
   // ProbeInterval frames and run the full chain in between, with no read-back at all: the
   // output is the same either way.
-  if (!this->Restrict)
+  if (!this->Frame.Restrict)
   {
     return false;
   }
@@ -141,7 +140,7 @@ const vtkBloomPassChainRunner::Box* vtkBloomPassChainRunner::ChainRegions::Of(co
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassChainRunner::BrightPass(vtkTextureObject* emission, ChainRegions& regions)
+bool vtkBloomPassChainRunner::BrightPass(ChainRegions& regions)
 {
   // The source fetch and the threshold in one pass. With SkipEmptyBloom the zero samples are
   // not written (the level is cleared first) and an occlusion query counts the others: a
@@ -150,9 +149,9 @@ bool vtkBloomPassChainRunner::BrightPass(vtkTextureObject* emission, ChainRegion
   vtkBloomPassResources& res = this->Resources;
   const vtkBloomChain& c = res.Chain;
   const int zero[2] = { 0, 0 };
-  const bool skipEmpty = this->Parameters->GetSkipEmptyBloom();
+  const bool skipEmpty = this->Frame.Parameters->GetSkipEmptyBloom();
   PassSpec bright;
-  bright.Source = emission;
+  bright.Source = this->In.Emission;
   const int full[2] = { c.Width, c.Height };
   bright.SourceSize = full;
   bright.X = c.SourceIsIdentity ? nullptr : &c.Source.X;
@@ -162,19 +161,19 @@ bool vtkBloomPassChainRunner::BrightPass(vtkTextureObject* emission, ChainRegion
   // A multisampled scene, thresholded sample by sample: whole-scene bloom only (selective
   // bloom's emission is masked, weighted by alpha, or not thresholded; this is where that is
   // decided).
-  if (this->SourceSamples && this->ThresholdEmission && !this->MaskSource &&
-    !this->EmissionInAlpha && this->Parameters->GetThresholdMode() != vtkImageBloomThreshold::NONE)
+  if (this->In.Samples && this->In.Threshold && !this->In.Mask && !this->In.InAlpha &&
+    this->Frame.Parameters->GetThresholdMode() != vtkImageBloomThreshold::NONE)
   {
-    bright.Samples = this->SourceSamples;
-    bright.SampleCount = this->SourceSampleCount;
+    bright.Samples = this->In.Samples;
+    bright.SampleCount = this->In.SampleCount;
   }
   // Restricted, the bright region's reduction also tells whether the bloom is empty. As
   // fragments, the zero samples are not written (the level is cleared first): fewer writes. A
   // compute bright pass that no query counts writes its zeros instead: a clear goes through
   // the graphics units, and on an NVIDIA H100 the cleared level then costs the compute passes
   // about 0.5 ms (docs/gpu.md).
-  const bool query = skipEmpty && !this->Restrict;
-  bright.DiscardZero = skipEmpty && (query || !this->UseCompute || !this->ComputeSupported());
+  const bool query = skipEmpty && !this->Frame.Restrict;
+  bright.DiscardZero = skipEmpty && (query || !this->Frame.UseCompute || !this->ComputeSupported());
   bright.Name = "bright";
   bright.Level = 0;
   if (bright.DiscardZero)
@@ -223,13 +222,11 @@ bool vtkBloomPassChainRunner::BrightPass(vtkTextureObject* emission, ChainRegion
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassChainRunner::BrightPassPSF(
-  vtkTextureObject* emission, bool mask, vtkBloomPassTarget& bright)
+bool vtkBloomPassChainRunner::BrightPassPSF(const Light& light, vtkBloomPassTarget& bright)
 {
-  // BrightPass's threshold with no resample and no region; SkipEmptyBloom counts the non-zero
-  // samples with the same occlusion query.
-  vtkBloomParameters* parameters = this->Parameters;
-  this->MaskSource = mask;
+  // BrightPass's threshold with no resample and no region.
+  this->In = light;
+  vtkBloomParameters* parameters = this->Frame.Parameters;
   this->SanitizeSource = parameters->GetSanitizeNonFinite();
   this->SanitizeOutput = parameters->GetSanitizeNonFinite();
   this->CompositeRestricted = false;
@@ -247,7 +244,7 @@ bool vtkBloomPassChainRunner::BrightPassPSF(
   // convolves to exactly zero: the output is the same either way.
   const int zero[2] = { 0, 0 };
   PassSpec spec;
-  spec.Source = emission;
+  spec.Source = light.Emission;
   spec.SourceSize = bright.Size;
   spec.Step = STEP_THRESHOLD;
   spec.ReadsSource = true;
@@ -325,12 +322,12 @@ void vtkBloomPassChainRunner::DownsampleLevel(ChainRegions& regions, size_t i)
     down.Level = static_cast<int>(i);
     down.Region = regions.Of(levelBox[i]);
     const int rows[2] = { level.Size[0], res.Levels[i - 1].Size[1] };
-    if (!TwoDimensional(term, this->Fast) && this->Fuses(term.X, term.Y))
+    if (!TwoDimensional(term) && this->Fuses(term.X, term.Y))
     {
       down.Tiled = true; // both halves in one dispatch
       down.Name = "down-xy";
     }
-    else if (!TwoDimensional(term, this->Fast))
+    else if (!TwoDimensional(term))
     {
       // The x half into Temp, then the y half and the step.
       PassSpec x;
@@ -441,8 +438,10 @@ bool vtkBloomPassChainRunner::UsesFFT(const vtkBloomLinearOperator& op)
 {
   // Compute shaders only, as any compute pass: without them (or when they are made to fail)
   // the direct pass runs, whatever ConvolutionMode asks.
-  return this->UseCompute && !this->SimulateComputeFailure && this->ComputeSupported() &&
-    this->FFTBlur->Choose(this->Resources.Context, op, this->Parameters->GetConvolutionMode());
+  return this->Frame.UseCompute && !this->Frame.SimulateComputeFailure &&
+    this->ComputeSupported() &&
+    this->FFTBlur->Choose(
+      this->Resources.Context, op, this->Frame.Parameters->GetConvolutionMode());
 }
 
 //------------------------------------------------------------------------------
@@ -473,7 +472,7 @@ bool vtkBloomPassChainRunner::FFTBlurPass(
   const std::string name = std::string(spec.Name) + "-fft";
   const std::string level = spec.Level >= 0 ? " L" + std::to_string(spec.Level) : "";
   this->FlushComputeWrites(); // the FFT's own passes barrier after themselves
-  if (this->Profiling)
+  if (this->Frame.Profiling)
   {
     this->BeginProfiledSpan();
   }
@@ -481,7 +480,7 @@ bool vtkBloomPassChainRunner::FFTBlurPass(
   {
     return false;
   }
-  if (this->Profiling)
+  if (this->Frame.Profiling)
   {
     this->EndProfiledSpan(name + level, width, height, (texel + 16.0) * samples);
     this->BeginProfiledSpan();
@@ -490,7 +489,7 @@ bool vtkBloomPassChainRunner::FFTBlurPass(
   this->PrepareTarget(target, nullptr, width, height);
   this->FFTBlur->Finish(op, axis, lines, target.Color->GetHandle(), format, spec.Weight);
   this->EndCompute();
-  if (this->Profiling)
+  if (this->Frame.Profiling)
   {
     this->EndProfiledSpan(name + "-finish" + level, width, height, (texel + 16.0) * samples);
   }
@@ -641,8 +640,8 @@ vtkBloomPassChainRunner::PassSpec vtkBloomPassChainRunner::CompositeSpec(bool bl
   vtkBloomPassResources& res = this->Resources;
   const vtkBloomChain& c = res.Chain;
   // PSF mode builds no chain: the size is its bloom term's.
-  this->CompositeSize[0] = this->PSFBloom ? this->PSFBloom->Size[0] : c.Width;
-  this->CompositeSize[1] = this->PSFBloom ? this->PSFBloom->Size[1] : c.Height;
+  this->CompositeSize[0] = this->Out.PSFBloom ? this->Out.PSFBloom->Size[0] : c.Width;
+  this->CompositeSize[1] = this->Out.PSFBloom ? this->Out.PSFBloom->Size[1] : c.Height;
   PassSpec composite;
   composite.Step = STEP_COMPOSITE;
   composite.Source = res.Scene.Color;
@@ -650,9 +649,9 @@ vtkBloomPassChainRunner::PassSpec vtkBloomPassChainRunner::CompositeSpec(bool bl
   composite.CompositeBloom = bloom;
   composite.Name = "composite";
   composite.Region = bloom && this->CompositeRestricted ? &this->CompositeRegion : nullptr;
-  if (bloom && this->PSFBloom)
+  if (bloom && this->Out.PSFBloom)
   {
-    composite.Source = this->PSFBloom->Color;
+    composite.Source = this->Out.PSFBloom->Color;
   }
   else if (bloom && c.AccumulateMode == vtkBloomParameters::DIRECT)
   {
@@ -672,19 +671,22 @@ vtkBloomPassChainRunner::PassSpec vtkBloomPassChainRunner::CompositeSpec(bool bl
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassChainRunner::Composite(vtkBloomPassTarget* target, const int origin[2], bool bloom)
+void vtkBloomPassChainRunner::Composite(
+  const Output& output, vtkBloomPassTarget* target, const int origin[2], bool bloom)
 {
+  this->Out = output;
   this->Pass(target, origin, this->CompositeSpec(bloom));
   if (!target)
   {
-    this->CompositeEdges(origin, bloom);
+    this->CompositeEdges(output, origin, bloom);
   }
   this->EndCostTiming();
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassChainRunner::CompositeEdges(const int origin[2], bool bloom)
+void vtkBloomPassChainRunner::CompositeEdges(const Output& output, const int origin[2], bool bloom)
 {
+  this->Out = output;
   vtkTextureObject* samples = this->CompositeSamples();
   if (!samples)
   {
@@ -692,15 +694,16 @@ void vtkBloomPassChainRunner::CompositeEdges(const int origin[2], bool bloom)
   }
   PassSpec edges = this->CompositeSpec(bloom);
   edges.SceneSamples = samples;
-  edges.SceneSampleCount = this->SceneSampleCount;
+  edges.SceneSampleCount = this->Out.SceneSampleCount;
   edges.Name = "composite-samples";
   this->Pass(nullptr, origin, edges);
 }
 
 //------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::Copy(
-  vtkBloomPassTarget* target, const int origin[2], vtkBloomPassTarget& source)
+  const Output& output, vtkBloomPassTarget* target, const int origin[2], vtkBloomPassTarget& source)
 {
+  this->Out = output;
   PassSpec copy;
   copy.Source = source.Color;
   copy.SourceSize = source.Size;

@@ -224,14 +224,15 @@ vtkTextureObject* vtkBloomPassChainRunner::CompositeSamples()
 {
   // Over the layers below (CompositeOver) the first composite has blended already: a sample
   // cannot be composited again.
-  if (!this->SceneSamples || this->SceneSampleCount < 2 || this->CompositeOver)
+  if (!this->Out.SceneSamples || this->Out.SceneSampleCount < 2 || this->Out.Over)
   {
     return nullptr;
   }
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
-  return samples == this->SceneSampleCount && this->SampleShadingSupported() ? this->SceneSamples
-                                                                             : nullptr;
+  return samples == this->Out.SceneSampleCount && this->SampleShadingSupported()
+    ? this->Out.SceneSamples
+    : nullptr;
 }
 
 //------------------------------------------------------------------------------
@@ -258,8 +259,8 @@ vtkBloomPassChainRunner::ImageTarget vtkBloomPassChainRunner::ComputeTarget(
   // The bright pass under an occlusion query counts fragments: it stays a fragment pass.
   ImageTarget image;
   // A pass over the framebuffer's content blends: a fragment pass.
-  if (!this->UseCompute || (spec.DiscardZero && this->CountingSamples) ||
-    (!target && this->CompositeOver) || !this->ComputeSupported())
+  if (!this->Frame.UseCompute || (spec.DiscardZero && this->CountingSamples) ||
+    (!target && this->Out.Over) || !this->ComputeSupported())
   {
     return image;
   }
@@ -273,9 +274,8 @@ vtkBloomPassChainRunner::ImageTarget vtkBloomPassChainRunner::ComputeTarget(
   else
   {
     // The samples the pass writes into the framebuffer: the composite's window of the frame.
-    const Box written = spec.Step == STEP_COMPOSITE
-      ? Box::Window(this->CompositeWindow, width, height)
-      : Box::Whole(width, height);
+    const Box written = spec.Step == STEP_COMPOSITE ? Box::Window(this->Out.Window, width, height)
+                                                    : Box::Whole(width, height);
     const int corner[2] = { origin[0] + written.X0, origin[1] + written.Y0 };
     if (!this->FramebufferImage(corner, written.X1 - written.X0, written.Y1 - written.Y0, image))
     {
@@ -372,7 +372,8 @@ vtkBloomPassChainRunner::ComputeProgram* vtkBloomPassChainRunner::Compute(
   vtkShaderProgram::Substitute(text, "//BLOOM::Constants", ShaderConstants());
   vtkShaderProgram::Substitute(text, "//BLOOM::Variant", variant);
   std::string log;
-  const GLuint id = this->SimulateComputeFailure ? 0 : BuildComputeProgram(text.c_str(), &log);
+  const GLuint id =
+    this->Frame.SimulateComputeFailure ? 0 : BuildComputeProgram(text.c_str(), &log);
   if (!id)
   {
     // Its passes run as fragments from now on; one warning says so, for the first variant.
@@ -380,7 +381,7 @@ vtkBloomPassChainRunner::ComputeProgram* vtkBloomPassChainRunner::Compute(
     {
       vtkWarningWithObjectMacro(this->Owner,
         << "A bloom compute program did not build; its passes run as fragment passes instead. "
-        << (this->SimulateComputeFailure ? "(simulated for a test)" : log));
+        << (this->Frame.SimulateComputeFailure ? "(simulated for a test)" : log));
       this->WarnedComputeFallback = true;
     }
     this->ComputePrograms.erase(key);

@@ -1,8 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 // SPDX-License-Identifier: BSD-3-Clause
 // The GPU form of vtkBloomPass's operators (see vtkBloomPassChainRunner.h): the operator
-// tables uploaded as textures, the translation-invariant interiors evaluated from uniforms, the
-// fast mode's bilinear pairs of taps, and the segments a pass draws per axis.
+// tables uploaded as textures, the translation-invariant interiors evaluated from uniforms, and
+// the segments a pass draws per axis.
 #include "vtkBloomPassChainRunner.h"
 
 #include "vtkBloomLinearOperator.h"
@@ -60,31 +60,11 @@ vtkBloomPassChainRunner::Interior vtkBloomPassChainRunner::Interior::Find(
     {
       interior.First[ph] = op.First[begin + std::min(ph, period - 1)] + lo;
     }
-    bool positive = true;
     for (int ph = 0; ph < period; ++ph)
     {
       for (int k = lo; k < hi; ++k)
       {
         interior.Weights.push_back(weight(begin + ph, k));
-        positive &= interior.Weights.back() >= 0.0f;
-      }
-    }
-    // Bilinear pairs need weights of one sign: a fetch between two texels weights them with
-    // 1 - f and f.
-    if (positive)
-    {
-      interior.Pairs = (interior.Taps + 1) / 2;
-      for (int ph = 0; ph < period; ++ph)
-      {
-        const float* row = interior.Weights.data() + ph * interior.Taps;
-        for (int m = 0; m < interior.Pairs; ++m)
-        {
-          const float w0 = row[2 * m];
-          const float w1 = 2 * m + 1 < interior.Taps ? row[2 * m + 1] : 0.0f;
-          const float sum = w0 + w1;
-          interior.PairWeights.push_back(sum);
-          interior.PairOffsets.push_back(2.0f * m + (sum > 0.0f ? w1 / sum : 0.0f));
-        }
       }
     }
     return interior;
@@ -93,15 +73,15 @@ vtkBloomPassChainRunner::Interior vtkBloomPassChainRunner::Interior::Find(
 }
 
 //------------------------------------------------------------------------------
-std::string vtkBloomPassChainRunner::Interior::Defines(const char* axis, bool linear) const
+std::string vtkBloomPassChainRunner::Interior::Defines(const char* axis) const
 {
-  // Bit k of ANY: tap (or pair) k is non-zero in some phase (else it is compiled out); of
+  // Bit k of ANY: tap k is non-zero in some phase (else it is compiled out); of
   // ALL: in every phase (no run-time test of its weight). Only the first 32 taps have bits (a
   // shift by 32 or more is undefined in C++ and in GLSL); the shader tests the weight of the
   // others (tapIsOn).
-  const int count = linear ? this->Pairs : this->Taps;
+  const int count = this->Taps;
   const int masked = std::min(count, 32);
-  const std::vector<float>& weights = linear ? this->PairWeights : this->Weights;
+  const std::vector<float>& weights = this->Weights;
   unsigned int any = 0, all = masked == 32 ? 0xffffffffu : (1u << masked) - 1u;
   for (int ph = 0; ph < this->Period; ++ph)
   {
@@ -121,7 +101,7 @@ std::string vtkBloomPassChainRunner::Interior::Defines(const char* axis, bool li
   os << "#define " << axis << "_PERIOD " << this->Period << "\n#define " << axis << "_STRIDE "
      << this->Stride << "\n#define " << axis << "_TAPS " << this->Taps << "\n#define " << axis
      << "_ANY " << any << "u\n#define " << axis << "_ALL " << all << "u\n#define " << axis
-     << "_LINEAR " << (linear ? 1 : 0) << "\n#define " << axis << "_ROW " << count << "\n";
+     << "_ROW " << count << "\n";
   return os.str();
 }
 
@@ -218,11 +198,4 @@ std::vector<vtkBloomPassChainRunner::Segment> vtkBloomPassChainRunner::Segments(
     segments.push_back({ interior.End, op->OutputSize, OP_TABLE });
   }
   return segments;
-}
-
-//------------------------------------------------------------------------------
-bool vtkBloomPassChainRunner::Linear(const PassSpec& spec, const vtkBloomLinearOperator* op)
-{
-  // The bright pass reads the scene, which is sanitized and masked sample by sample: exact.
-  return this->Fast && op && !spec.ReadsSource && this->InteriorOf(*op).Pairs > 0;
 }

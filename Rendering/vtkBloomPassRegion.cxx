@@ -140,7 +140,7 @@ void vtkBloomPassChainRunner::PrepareTarget(
 //------------------------------------------------------------------------------
 bool vtkBloomPassChainRunner::MeasureBrightRegionByCompute(Box& box)
 {
-  if (!this->UseCompute || this->ComputeState < 0 || !this->ComputeSupported())
+  if (!this->Frame.UseCompute || this->ComputeState < 0 || !this->ComputeSupported())
   {
     return false;
   }
@@ -168,7 +168,7 @@ bool vtkBloomPassChainRunner::MeasureBrightRegionByCompute(Box& box)
     glGetUniformLocation(this->ReduceProgram, "sourceSize"), level.Size[0], level.Size[1]);
   glDispatchCompute((level.Size[0] + 15) / 16, (level.Size[1] + 15) / 16, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  if (this->Profiling)
+  if (this->Frame.Profiling)
   {
     // The dispatch alone; the read-back's wait is no GPU work (BloomPassFrameTime --sync).
     this->EndProfiledSpan("reduce (compute)", 1, 1,
@@ -248,7 +248,7 @@ void vtkBloomPassChainRunner::BeginCostTiming(bool measured)
   }
   glQueryCounter(slot.Queries[0], GL_TIMESTAMP);
   slot.Measured = measured;
-  slot.ContentAware = this->Restrict;
+  slot.ContentAware = this->Frame.Restrict;
   this->CostTimingOpen = true;
   this->CompiledProgram = false;
 }
@@ -277,6 +277,14 @@ void vtkBloomPassChainRunner::EndCostTiming()
   slot.Pending = true;
   this->NextCostSlot = (this->NextCostSlot + 1) % CostSlots;
   this->CostTimingOpen = false;
+}
+
+//------------------------------------------------------------------------------
+double vtkBloomPassChainRunner::CollectLastChainMilliseconds()
+{
+  this->TimeEveryChain = true;
+  this->CollectCostTimings();
+  return this->LastChainMilliseconds;
 }
 
 //------------------------------------------------------------------------------
@@ -338,7 +346,7 @@ vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::MeasureBrightRegion()
   this->FlushComputeWrites(); // the bright pass's writes, read by the reduction
   vtkBloomPassResources& res = this->Resources;
   vtkOpenGLState* state = res.Context->GetState();
-  if (this->Profiling)
+  if (this->Frame.Profiling)
   {
     this->BeginProfiledSpan();
   }
@@ -393,7 +401,7 @@ vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::MeasureBrightRegion()
     size[0] = out[0];
     size[1] = out[1];
   }
-  if (this->Profiling)
+  if (this->Frame.Profiling)
   {
     this->EndProfiledSpan("reduce", size[0], size[1], bytes);
   }

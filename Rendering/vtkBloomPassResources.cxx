@@ -30,7 +30,7 @@ vtkBloomPassSavedState::vtkBloomPassSavedState(vtkOpenGLState* state)
 
 //------------------------------------------------------------------------------
 void vtkBloomPassTarget::Allocate(
-  vtkOpenGLRenderWindow* context, int width, int height, unsigned int format, bool linear)
+  vtkOpenGLRenderWindow* context, int width, int height, unsigned int format)
 {
   if (this->Color && this->Size[0] == width && this->Size[1] == height &&
     this->Color->GetInternalFormat(VTK_FLOAT, 4, false) == format)
@@ -41,9 +41,8 @@ void vtkBloomPassTarget::Allocate(
   this->Color = vtkSmartPointer<vtkTextureObject>::New();
   this->Color->SetContext(context);
   this->Color->SetInternalFormat(format);
-  this->Color->SetMinificationFilter(linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
-  this->Color->SetMagnificationFilter(
-    linear ? vtkTextureObject::Linear : vtkTextureObject::Nearest);
+  this->Color->SetMinificationFilter(vtkTextureObject::Nearest);
+  this->Color->SetMagnificationFilter(vtkTextureObject::Nearest);
   this->Color->SetWrapS(vtkTextureObject::ClampToEdge);
   this->Color->SetWrapT(vtkTextureObject::ClampToEdge);
   this->Color->Allocate2D(width, height, 4, VTK_FLOAT);
@@ -248,18 +247,17 @@ void vtkBloomPassResources::AllocateScene(int width, int height, bool emitters, 
 
 //------------------------------------------------------------------------------
 bool vtkBloomPassResources::ChainIsStale(
-  vtkBloomParameters* parameters, int width, int height, const int part[4], bool fast) const
+  vtkBloomParameters* parameters, int width, int height, const int part[4]) const
 {
-  // The chain depends on the size, the part of a frame, the parameters and the quality only.
+  // The chain depends on the size, the part of a frame and the parameters only.
   return this->ChainTime == 0 || this->ChainParameters != parameters ||
     this->ChainTime < parameters->GetMTime() || this->Chain.Width != width ||
-    this->Chain.Height != height || !std::equal(part, part + 4, this->ChainPart) ||
-    this->ChainIsFast != fast;
+    this->Chain.Height != height || !std::equal(part, part + 4, this->ChainPart);
 }
 
 //------------------------------------------------------------------------------
 void vtkBloomPassResources::BuildChain(vtkBloomParameters* parameters, int width, int height,
-  const vtkBloomChain* frame, const int part[4], bool fast)
+  const vtkBloomChain* frame, const int part[4])
 {
   vtkOpenGLRenderWindow* window = this->Context;
   const vtkMTimeType parametersTime = parameters->GetMTime();
@@ -277,23 +275,21 @@ void vtkBloomPassResources::BuildChain(vtkBloomParameters* parameters, int width
   std::copy(part, part + 4, this->ChainPart);
   this->ChainTime = parametersTime;
   this->ChainParameters = parameters;
-  this->ChainIsFast = fast;
   const size_t n = this->Chain.Levels.size();
-  // The scene is stored at the requested precision; the exact chain always runs on 32-bit
-  // floats, so that half-float rounding does not compound over its dozen passes. The fast
-  // chain runs on half floats, read through bilinear filtering.
-  const unsigned int chainFormat = fast ? GL_RGBA16F : GL_RGBA32F;
+  // The scene is stored at the requested precision; the chain always runs on 32-bit floats, so
+  // that half-float rounding does not compound over its dozen passes.
+  const unsigned int chainFormat = GL_RGBA32F;
   this->Levels.resize(n);
   this->Work.resize(n);
   this->Accum.resize(this->Chain.AccumulateMode == vtkBloomParameters::CASCADE ? n : 0);
   for (size_t i = 0; i < n; ++i)
   {
     const int* size = this->Chain.Levels[i].Size;
-    this->Levels[i].Allocate(window, size[0], size[1], chainFormat, fast);
-    this->Work[i].Allocate(window, size[0], size[1], chainFormat, fast);
+    this->Levels[i].Allocate(window, size[0], size[1], chainFormat);
+    this->Work[i].Allocate(window, size[0], size[1], chainFormat);
     if (!this->Accum.empty())
     {
-      this->Accum[i].Allocate(window, size[0], size[1], chainFormat, fast);
+      this->Accum[i].Allocate(window, size[0], size[1], chainFormat);
     }
   }
   if (n > 0)
@@ -301,10 +297,10 @@ void vtkBloomPassResources::BuildChain(vtkBloomParameters* parameters, int width
     // The x passes run on the levels only (the source fetch and the final resample are
     // two-dimensional passes), so level 0 is the largest intermediate.
     this->Temp.Allocate(
-      window, this->Chain.Levels[0].Size[0], this->Chain.Levels[0].Size[1], chainFormat, fast);
+      window, this->Chain.Levels[0].Size[0], this->Chain.Levels[0].Size[1], chainFormat);
     if (this->Chain.AccumulateMode == vtkBloomParameters::DIRECT)
     {
-      this->Full.Allocate(window, width, height, chainFormat, fast);
+      this->Full.Allocate(window, width, height, chainFormat);
     }
   }
 }

@@ -59,10 +59,9 @@ struct vtkBloomPassTarget
 
   /**
    * Make the target at width x height in `format`, unless it already has that size and
-   * format; `linear` turns on bilinear filtering (the fast mode's taps; texelFetch ignores it).
+   * format.
    */
-  void Allocate(vtkOpenGLRenderWindow* context, int width, int height, unsigned int format,
-    bool linear = false);
+  void Allocate(vtkOpenGLRenderWindow* context, int width, int height, unsigned int format);
   void Release(vtkWindow* window);
 
   /**
@@ -175,17 +174,14 @@ public:
   void AllocateScene(int width, int height, bool emitters, int samples);
 
   /// Whether the chain was built for other or older parameters, or another size or part.
-  bool ChainIsStale(
-    vtkBloomParameters* parameters, int width, int height, const int part[4], bool fast) const;
+  bool ChainIsStale(vtkBloomParameters* parameters, int width, int height, const int part[4]) const;
 
   /**
    * Build the chain for `parameters` at width x height, or cut it from `frame`'s chain to
-   * `part` (x0 x1 y0 y1 of a tiled frame; vtkBloomChain::Cut), and make its targets: RGBA32F,
-   * or with `fast` RGBA16F with bilinear filtering (vtkBloomPass::QUALITY_FAST).
+   * `part` (x0 x1 y0 y1 of a tiled frame; vtkBloomChain::Cut), and make its RGBA32F targets.
    */
   void BuildChain(vtkBloomParameters* parameters, int width, int height, const vtkBloomChain* frame,
-    const int part[4], bool fast);
-  bool ChainIsFast = false;
+    const int part[4]);
   int ChainPart[4] = { 0, 0, 0, 0 }; ///< the part of a tiled frame; all 0 untiled
 
   void ReleaseChain(vtkWindow* w);

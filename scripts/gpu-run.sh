@@ -17,8 +17,7 @@
 #   frametime.md     BloomPassFrameTime: every scene and preset (or $PRESETS) at 1920x1080 and
 #                    3840x2160, GPU timer, $FRAMES (default 50) frames of each kind: the bloom
 #                    over the plain frame and over the cheapest float copy by the mean, and the
-#                    bloom frame's median, mean, p99 and maximum; then the default preset in the
-#                    fast mode
+#                    bloom frame's median, mean, p99 and maximum
 #   fusion.md        the default preset's frame time and four renderers with
 #                    vtkBloomPass::FuseSeparablePasses off (BloomPassFrameTime --pairs)
 #   samples.md       the default preset in a window of 4 samples, each sample thresholded
@@ -26,13 +25,12 @@
 #   renderers.md     four bloomed renderers in one window (2 x 2 viewports) against the same
 #                    four plain, at 1920x1080 and 3840x2160: the CPU's time in Render() and the
 #                    GPU's (BloomPassFrameTime --renderers)
-#   profile.md       the per-pass GPU profile of the default preset at 3840x2160, every scene,
-#                    then of lit-spheres in the fast mode (QUALITY_FAST)
-#   quality.md       the exact pass and the fast mode for every preset at 3840x2160: GPU time
-#                    over the floor and error against each other and vtkImageBloom REFERENCE
-#                    (and quality.csv, for scripts/plot-gpu-quality.py)
+#   profile.md       the per-pass GPU profile of the default preset at 3840x2160, every scene
+#   quality.md       every preset, blurs tap by tap and PSF bloom (exact and split) at
+#                    3840x2160: GPU time over the floor and error against vtkImageBloom
+#                    REFERENCE (and quality.csv, for scripts/plot-gpu-quality.py)
 #   sparse.md        sparse scenes (0 %, 0.1 %, 1 %, 10 % bright) at 3840x2160: the full chain
-#                    against the content-aware one, exact and fast
+#                    against the content-aware one
 #   sync.md          the cost of the pass's one wait for the GPU (BloomPassFrameTime --sync)
 #   orbit.md         stutter: the bloom's own GPU time, frame by frame, over 1000
 #                    frames of an orbiting camera at 3840x2160 (BloomPassFrameTime --orbit)
@@ -120,13 +118,6 @@ echo "== frame time"
     timeout 300 "$bin/BloomPassFrameTime" all $size "$FRAMES" "$PRESETS"
     echo
   done
-  echo "The fast mode (QUALITY_FAST), vtkBloomParameters' defaults"
-  echo
-  for size in "1920 1080" "3840 2160"; do
-    # shellcheck disable=SC2086
-    timeout 300 "$bin/BloomPassFrameTime" --fast all $size "$FRAMES" default
-    echo
-  done
 } | tee "$OUT/frametime.md"
 fi
 
@@ -168,23 +159,18 @@ if step profile; then
 echo "== per-pass profile"
 {
   timeout 300 "$bin/BloomPassFrameTime" --profile all 3840 2160 "$FRAMES" default
-  timeout 120 "$bin/BloomPassFrameTime" --fast --profile lit-spheres 3840 2160 "$FRAMES" default
 } | tee "$OUT/profile.md"
 fi
 
 if step quality; then
-echo "== exact and fast"
+echo "== error against time"
 timeout 400 "$bin/BloomPassFrameTime" --quality lit-spheres 3840 2160 "$FRAMES" \
   "$OUT/quality.csv" | tee "$OUT/quality.md"
 fi
 
 if step sparse; then
 echo "== sparse scenes"
-{
-  timeout 200 "$bin/BloomPassFrameTime" --sparse 3840 2160 "$FRAMES"
-  echo
-  timeout 200 "$bin/BloomPassFrameTime" --sparse 3840 2160 "$FRAMES" fast
-} | tee "$OUT/sparse.md"
+timeout 200 "$bin/BloomPassFrameTime" --sparse 3840 2160 "$FRAMES" | tee "$OUT/sparse.md"
 fi
 
 if step sync; then

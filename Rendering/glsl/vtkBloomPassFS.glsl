@@ -31,11 +31,6 @@
   and odd sizes behave exactly as on the CPU. Zero weights are skipped, so 0 * Inf never makes
   a NaN.
 
-  The fast mode (vtkBloomPass::QUALITY_FAST; X_LINEAR / Y_LINEAR) evaluates an OP_PERIODIC
-  interior by pairs of taps instead: taps 2m and 2m + 1 of weights w0, w1 >= 0 as one bilinear
-  fetch of weight w0 + w1 at offset 2m + w1 / (w0 + w1) (the hardware's interpolation weights
-  have a few bits only: an approximation).
-
   ZERO_BLOOM: the composite where the content-aware chain knows the bloom is zero; the bloom
   is a uniform zero (not a constant, which the compiler could fold), so the result is the
   full composite's bit for bit.
@@ -100,12 +95,6 @@ uniform ivec2 regionOffset; // the first output sample this draw computes
 uniform vec2 regionSize;    // the samples this draw computes, the size of the viewport
 uniform float weight;       // SCALE, KARIS_TERM and ADD weight
 
-#ifndef X_LINEAR
-#define X_LINEAR 0
-#endif
-#ifndef Y_LINEAR
-#define Y_LINEAR 0
-#endif
 #ifndef ZERO_BLOOM
 #define ZERO_BLOOM 0
 #endif
@@ -138,9 +127,6 @@ uniform sampler2D y2Rows;
 uniform float weight2;
 shared vec4 tileRows2[TILE2_ROWS * 16];
 #endif
-#if X_LINEAR || Y_LINEAR
-uniform vec2 sourceTexel; // 1 / the source texture's size
-#endif
 
 #if X_MODE == OP_TABLE
 uniform sampler2D xRows;
@@ -150,9 +136,6 @@ uniform sampler2D xRows;
 #elif X_MODE == OP_PERIODIC
 uniform int xInterior[3]; // first interior output sample, First of its first two rows
 uniform float xWeights[X_PERIOD * X_ROW];
-#if X_LINEAR
-uniform float xOffsets[X_PERIOD * X_ROW];
-#endif
 #define X_COUNT X_ROW
 #else
 #define X_COUNT 1
@@ -168,9 +151,6 @@ uniform sampler2D yRows;
 #elif Y_MODE == OP_PERIODIC
 uniform int yInterior[3];
 uniform float yWeights[Y_PERIOD * Y_ROW];
-#if Y_LINEAR
-uniform float yOffsets[Y_PERIOD * Y_ROW];
-#endif
 #define Y_COUNT Y_ROW
 #else
 #define Y_COUNT 1
@@ -279,35 +259,6 @@ float weightY(int j, int k)
   return 1.0;
 #endif
 }
-
-#if X_LINEAR || Y_LINEAR
-// Position of tap (or pair) k along each axis, in texels.
-float positionX(int k)
-{
-#if X_LINEAR
-#if X_PERIOD == 1
-  return float(xFirst) + xOffsets[k];
-#else
-  return float(xFirst) + (xPhase == 0 ? xOffsets[k] : xOffsets[X_ROW + k]);
-#endif
-#else
-  return float(xFirst + k);
-#endif
-}
-
-float positionY(int k)
-{
-#if Y_LINEAR
-#if Y_PERIOD == 1
-  return float(yFirst) + yOffsets[k];
-#else
-  return float(yFirst) + (yPhase == 0 ? yOffsets[k] : yOffsets[Y_ROW + k]);
-#endif
-#else
-  return float(yFirst + k);
-#endif
-}
-#endif
 
 // The chain's source as vtkImageBloom reads its input: with SanitizeNonFinite, NaN becomes 0
 // and +-Inf the largest finite float, before any resampling.
@@ -493,7 +444,7 @@ bool tapIsOn(uint any, uint all, int k, float w)
   return ((any >> uint(k)) & 1u) != 0u && (((all >> uint(k)) & 1u) != 0u || w != 0.0);
 }
 
-// The x half of output column p.x on source row r (X_LINEAR aside).
+// The x half of output column p.x on source row r.
 vec4 rowSum(int px, int r)
 {
   vec4 row = vec4(0.0);
@@ -631,19 +582,7 @@ void main()
     float wy = weightY(p.y, ky);
     if (tapIsOn(Y_ANY, Y_ALL, ky, wy))
     {
-#if X_LINEAR || Y_LINEAR
-      vec4 row = vec4(0.0);
-      for (int kx = 0; kx < X_COUNT; ++kx)
-      {
-        float wx = weightX(p.x, kx);
-        if (tapIsOn(X_ANY, X_ALL, kx, wx))
-        {
-          row += wx * textureLod(source, (vec2(positionX(kx), positionY(ky)) + 0.5) * sourceTexel, 0.0);
-        }
-      }
-#else
       vec4 row = rowSum(p.x, yFirst + ky);
-#endif
       sum += wy * row;
     }
   }

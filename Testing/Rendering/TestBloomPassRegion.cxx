@@ -2,7 +2,7 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // Tests of vtkBloomPass's content-aware chain (RestrictToBrightRegion: every pass after the
 // bright pass covers only the box its output can be non-zero in) against the full chain, bit
-// for bit, and of its fast mode (QUALITY_FAST) against the exact pass.
+// for bit, and of the compute passes against the fragment passes.
 #include "vtkBloomExampleScenes.h"
 #include "vtkBloomParameters.h"
 #include "vtkBloomPass.h"
@@ -141,51 +141,46 @@ TEST(RenderingBloomPassRegion, RestrictedChainIsBitIdenticalToTheFullChain)
     {
       for (const int precision : { vtkBloomPass::FLOAT32, vtkBloomPass::FLOAT16 })
       {
-        for (const int quality : { vtkBloomPass::QUALITY_EXACT, vtkBloomPass::QUALITY_FAST })
+        for (const bool compute : { true, false })
         {
-          for (const bool compute : { true, false })
+          const std::string what = std::string(c.Name) + ", " + preset + ", float" +
+            std::to_string(precision) + (compute ? ", compute" : ", fragment");
+          Gpu gpu;
+          UsePreset(gpu.Pass, preset);
+          gpu.Pass->SetUseComputeShaders(compute);
+          gpu.Pass->SetFloatPrecision(precision);
+          vtkBloomParameters* p = gpu.Pass->GetParameters();
+          p->SetSkipEmptyBloom(false);
+          p->SetRestrictToBrightRegion(false);
+          vtkSmartPointer<vtkImageData> full = gpu.Apply(input);
+          EXPECT_EQ(gpu.Pass->GetLastChainCoverage(), 1.0) << what;
+          p->SetRestrictToBrightRegion(true);
+          vtkSmartPointer<vtkImageData> restricted = gpu.Apply(input);
+          EXPECT_TRUE(SameBits(full, restricted)) << what;
+          const double coverage = gpu.Pass->GetLastChainCoverage();
+          EXPECT_LE(coverage, 1.0) << what;
+          int region[4];
+          gpu.Pass->GetLastBrightRegion(region);
+          if (p->GetThresholdMode() == vtkImageBloomThreshold::NONE)
           {
-            const std::string what = std::string(c.Name) + ", " + preset + ", float" +
-              std::to_string(precision) + (quality ? ", fast" : ", exact") +
-              (compute ? ", compute" : ", fragment");
-            Gpu gpu;
-            UsePreset(gpu.Pass, preset);
-            gpu.Pass->SetUseComputeShaders(compute);
-            gpu.Pass->SetFloatPrecision(precision);
-            gpu.Pass->SetQuality(quality);
-            vtkBloomParameters* p = gpu.Pass->GetParameters();
-            p->SetSkipEmptyBloom(false);
-            p->SetRestrictToBrightRegion(false);
-            vtkSmartPointer<vtkImageData> full = gpu.Apply(input);
-            EXPECT_EQ(gpu.Pass->GetLastChainCoverage(), 1.0) << what;
-            p->SetRestrictToBrightRegion(true);
-            vtkSmartPointer<vtkImageData> restricted = gpu.Apply(input);
-            EXPECT_TRUE(SameBits(full, restricted)) << what;
-            const double coverage = gpu.Pass->GetLastChainCoverage();
-            EXPECT_LE(coverage, 1.0) << what;
-            int region[4];
-            gpu.Pass->GetLastBrightRegion(region);
-            if (p->GetThresholdMode() == vtkImageBloomThreshold::NONE)
-            {
-              // mip-atlas: every sample is bright.
-              EXPECT_EQ(coverage, 1.0) << what;
-            }
-            else if (c.Rects.empty())
-            {
-              EXPECT_EQ(coverage, 0.0) << what;
-              EXPECT_EQ(region[1] - region[0], 0) << what;
-            }
-            else
-            {
-              // The bloom must reach past the spots, or the comparison would be trivial.
-              EXPECT_GT(vtkBloomTest::ColourRelativeL2(full, input), 1e-3) << what;
-              EXPECT_GT(coverage, 0.0) << what;
-            }
-            if (c.Rects.size() == 1 && preset == "default")
-            {
-              // Five levels from 150 x 103 down: a small spot leaves most of the chain out.
-              EXPECT_LT(coverage, 0.5) << what;
-            }
+            // mip-atlas: every sample is bright.
+            EXPECT_EQ(coverage, 1.0) << what;
+          }
+          else if (c.Rects.empty())
+          {
+            EXPECT_EQ(coverage, 0.0) << what;
+            EXPECT_EQ(region[1] - region[0], 0) << what;
+          }
+          else
+          {
+            // The bloom must reach past the spots, or the comparison would be trivial.
+            EXPECT_GT(vtkBloomTest::ColourRelativeL2(full, input), 1e-3) << what;
+            EXPECT_GT(coverage, 0.0) << what;
+          }
+          if (c.Rects.size() == 1 && preset == "default")
+          {
+            // Five levels from 150 x 103 down: a small spot leaves most of the chain out.
+            EXPECT_LT(coverage, 0.5) << what;
           }
         }
       }
@@ -321,68 +316,35 @@ TEST(RenderingBloomPassRegion, FusedSeparablePassesGiveTheSameBits)
 }
 
 //------------------------------------------------------------------------------
-// The fast mode approximates the exact pass: per preset, within a few per cent (relative L2
-// of the colour), but not bit for bit (it does take the bilinear path), in fewer passes or as
-// many.
-TEST(RenderingBloomPassFast, ApproximatesTheExactPassForEveryPreset)
-{
-  vtkSmartPointer<vtkImageData> input =
-    SparseImage(301, 207, { { 100, 160, 60, 90 }, { 20, 24, 150, 170 }, { 250, 251, 10, 11 } });
-  for (const std::string& preset : Presets())
-  {
-    Gpu gpu;
-    UsePreset(gpu.Pass, preset);
-    gpu.Pass->SetFloatPrecisionTo32Bit();
-    gpu.Pass->SetSingleDrawSamples(0); // every interior by its uniforms: the bilinear pairs
-    vtkSmartPointer<vtkImageData> exact = gpu.Apply(input);
-    const int exactPasses = gpu.Pass->GetNumberOfPasses();
-    gpu.Pass->SetQualityToFast();
-    vtkSmartPointer<vtkImageData> fast = gpu.Apply(input);
-    const double error = vtkBloomTest::ColourRelativeL2(fast, exact);
-    std::cout << "[ fast ] " << preset << " relative L2 against the exact pass " << error << ", "
-              << gpu.Pass->GetNumberOfPasses() << " passes (exact " << exactPasses << ")\n";
-    EXPECT_GT(error, 0.0) << preset;
-    EXPECT_LE(error, 2e-2) << preset;
-    EXPECT_LE(gpu.Pass->GetNumberOfPasses(), exactPasses) << preset;
-  }
-}
-
-//------------------------------------------------------------------------------
 // The chain as compute shaders and as fragment passes (UseComputeShaders): the same sums, so
-// the exact pass agrees to float rounding, for every preset; the fast mode within its own
-// error (on NVIDIA its half-float stores and bilinear taps round differently in the two
-// stages: 1.4e-4 to 5.3e-4 relative L2, against 1.7e-3 from the exact pass); and where the
-// context has OpenGL 4.3 the compute passes do run.
+// the pass agrees to float rounding, for every preset; and where the context has OpenGL 4.3
+// the compute passes do run.
 TEST(RenderingBloomPassCompute, ComputeAndFragmentPassesAgree)
 {
   vtkSmartPointer<vtkImageData> input =
     SparseImage(301, 207, { { 100, 160, 60, 90 }, { 20, 24, 150, 170 }, { 250, 251, 10, 11 } });
   for (const std::string& preset : Presets())
   {
-    for (const int quality : { vtkBloomPass::QUALITY_EXACT, vtkBloomPass::QUALITY_FAST })
+    const std::string& what = preset;
+    Gpu gpu;
+    UsePreset(gpu.Pass, preset);
+    gpu.Pass->SetFloatPrecisionTo32Bit();
+    gpu.Pass->UseComputeShadersOff();
+    vtkSmartPointer<vtkImageData> fragment = gpu.Apply(input);
+    EXPECT_EQ(gpu.Pass->GetLastComputePasses(), 0) << what;
+    gpu.Pass->UseComputeShadersOn();
+    vtkSmartPointer<vtkImageData> compute = gpu.Apply(input);
+    GLint major = 0, minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    if (major * 10 + minor >= 43)
     {
-      const std::string what = preset + (quality ? ", fast" : ", exact");
-      Gpu gpu;
-      UsePreset(gpu.Pass, preset);
-      gpu.Pass->SetFloatPrecisionTo32Bit();
-      gpu.Pass->SetQuality(quality);
-      gpu.Pass->UseComputeShadersOff();
-      vtkSmartPointer<vtkImageData> fragment = gpu.Apply(input);
-      EXPECT_EQ(gpu.Pass->GetLastComputePasses(), 0) << what;
-      gpu.Pass->UseComputeShadersOn();
-      vtkSmartPointer<vtkImageData> compute = gpu.Apply(input);
-      GLint major = 0, minor = 0;
-      glGetIntegerv(GL_MAJOR_VERSION, &major);
-      glGetIntegerv(GL_MINOR_VERSION, &minor);
-      if (major * 10 + minor >= 43)
-      {
-        // Every pass but the bright pass (under the occlusion query with the content-aware
-        // chain off; here it is on) and the composite.
-        EXPECT_GE(gpu.Pass->GetLastComputePasses(), gpu.Pass->GetNumberOfPasses() - 1) << what;
-      }
-      EXPECT_LE(vtkBloomTest::ColourRelativeL2(compute, fragment), quality ? 2e-3 : 1e-6) << what;
-      EXPECT_GT(vtkBloomTest::ColourRelativeL2(fragment, input), 1e-3) << what;
+      // Every pass but the bright pass (under the occlusion query with the content-aware
+      // chain off; here it is on) and the composite.
+      EXPECT_GE(gpu.Pass->GetLastComputePasses(), gpu.Pass->GetNumberOfPasses() - 1) << what;
     }
+    EXPECT_LE(vtkBloomTest::ColourRelativeL2(compute, fragment), 1e-6) << what;
+    EXPECT_GT(vtkBloomTest::ColourRelativeL2(fragment, input), 1e-3) << what;
   }
 }
 
