@@ -51,7 +51,7 @@ void vtkBloomPassBackground::Plan(
   vtkBloomPassResources& resources, vtkRenderer* renderer, bool bloomBackground)
 {
   // A layer drawn over others clears nothing: what lies below it is not its background, and
-  // the composite goes over it instead (vtkBloomPassChainRunner::CompositeOver).
+  // the composite goes over it instead (vtkBloomPassChainRunner::Output::Over).
   if (bloomBackground || renderer->Transparent())
   {
     resources.BackgroundMode = vtkBloomPassResources::BACKGROUND_IN_SCENE;

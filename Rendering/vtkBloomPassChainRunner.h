@@ -364,10 +364,10 @@ private:
      */
     const PassSpec* Second = nullptr;
     bool SecondIsAddend = false;
-    /// The bright pass: the multisampled source, thresholded sample by sample (SourceSamples).
+    /// The bright pass: the multisampled source, thresholded sample by sample (Light::Samples).
     vtkTextureObject* Samples = nullptr;
     int SampleCount = 0;
-    /// The composite: the multisampled scene, composited sample by sample (SceneSamples).
+    /// The composite: the multisampled scene, composited sample by sample (Output::SceneSamples).
     vtkTextureObject* SceneSamples = nullptr;
     int SceneSampleCount = 0;
   };
@@ -614,9 +614,9 @@ private:
   bool SampleShadingSupported();
   int SampleShading = 0; ///< 0 not asked, 1 yes, -1 no
   /**
-   * The multisampled scene (SceneSamples) where the bound framebuffer has as many samples, a
-   * fragment shader can run per sample and the composite replaces what the framebuffer holds
-   * (not CompositeOver); else null.
+   * The multisampled scene (Output::SceneSamples) where the bound framebuffer has as many samples,
+   * a fragment shader can run per sample and the composite replaces what the framebuffer holds (not
+   * Output::Over); else null.
    */
   vtkTextureObject* CompositeSamples();
   /// The composite's pass (Composite, CompositeEdges).

@@ -222,7 +222,7 @@ bool vtkBloomPassChainRunner::SampleShadingSupported()
 //------------------------------------------------------------------------------
 vtkTextureObject* vtkBloomPassChainRunner::CompositeSamples()
 {
-  // Over the layers below (CompositeOver) the first composite has blended already: a sample
+  // Over the layers below (Output::Over) the first composite has blended already: a sample
   // cannot be composited again.
   if (!this->Out.SceneSamples || this->Out.SceneSampleCount < 2 || this->Out.Over)
   {
