@@ -672,12 +672,13 @@ TEST(RenderingBloomPassCompute, FailedComputeProgramFallsBackToFragments)
 // extension of the card: the compute passes run there through GL_ARB_compute_shader and its
 // companions. Rendering.cmake registers this test with Mesa told to report OpenGL 3.3
 // (MESA_GL_VERSION_OVERRIDE) and VTKBLOOM_EXPECT_OLDER_CONTEXT set; in a 4.3 context it has
-// nothing to show and skips.
+// nothing to show and skips (on Mesa, where the override applies, it fails instead).
 TEST(RenderingBloomPassCompute, OlderContextWithTheExtensions)
 {
   std::vector<float> results[2];
   int computePasses[2] = { 0, 0 };
   int version = 0;
+  bool mesa = false;
   for (const bool compute : { false, true })
   {
     LitSpheres run;
@@ -688,14 +689,20 @@ TEST(RenderingBloomPassCompute, OlderContextWithTheExtensions)
     glGetIntegerv(GL_MAJOR_VERSION, &major);
     glGetIntegerv(GL_MINOR_VERSION, &minor);
     version = major * 10 + minor;
+    const auto* text = reinterpret_cast<const char*>(glGetString(GL_VERSION));
+    mesa = text && std::strstr(text, "Mesa");
     computePasses[compute ? 1 : 0] = run.Bloom->GetLastComputePasses();
     results[compute ? 1 : 0] = run.Result();
   }
   if (version >= 43)
   {
-    ASSERT_EQ(std::getenv("VTKBLOOM_EXPECT_OLDER_CONTEXT"), nullptr)
-      << "the context has OpenGL " << version / 10 << "." << version % 10 << ", not an older one";
-    GTEST_SKIP() << "an OpenGL 4.3 context: nothing older to show";
+    // MESA_GL_VERSION_OVERRIDE is Mesa's: another driver (NVIDIA's, on the GPU machine) keeps
+    // its own version, and the test has nothing older to show there.
+    ASSERT_TRUE(!mesa || !std::getenv("VTKBLOOM_EXPECT_OLDER_CONTEXT"))
+      << "Mesa's context has OpenGL " << version / 10 << "." << version % 10
+      << ", not the older one MESA_GL_VERSION_OVERRIDE asked for";
+    GTEST_SKIP() << "an OpenGL " << version / 10 << "." << version % 10
+                 << " context: nothing older to show";
   }
   EXPECT_EQ(computePasses[0], 0);
   EXPECT_GT(computePasses[1], 0) << "OpenGL " << version / 10 << "." << version % 10
