@@ -117,12 +117,10 @@ public:
   ///@{
   /**
    * Run the chain's passes into its own targets, and the bright region's reduction, as compute
-   * shaders where the context runs them (default on; OpenGL 4.3 or its extensions); else they are
-   * fragment passes. The composite into the framebuffer is a compute pass too where that
-   * framebuffer's colour buffer is a texture it can write (docs/rendering.md, "Compute shaders").
-   * Both compute the same sums: the results agree to float rounding (tested). On an NVIDIA H100,
-   * which shades fragments on a few of its multiprocessors only, the compute passes are many times
-   * faster (docs/gpu.md).
+   * shaders where the context runs them (OpenGL 4.3 or its extensions), else as fragment passes;
+   * the composite too where the framebuffer's colour buffer can be written as an image
+   * (docs/rendering.md, "Compute shaders"). Both agree to float rounding (tested); on NVIDIA's
+   * GPUs the compute passes are many times faster (docs/gpu.md). Default on.
    */
   vtkSetMacro(UseComputeShaders, bool);
   vtkGetMacro(UseComputeShaders, bool);
@@ -132,18 +130,11 @@ public:
   ///@{
   /**
    * A pass of the chain with at most this many output samples runs as one draw (one compute
-   * dispatch), its operators evaluated from their tables throughout; a larger pass is drawn as
-   * its operators' periodic interior and their borders, up to 3 x 3 draws. Both evaluate the
-   * same weights, taps and order: the result is the same bits (tested). One draw saves the
-   * small levels' fixed costs (on an NVIDIA H100 a dependent dispatch costs several
-   * microseconds however small, and each draw its uniforms on the CPU: docs/gpu.md); the
-   * interior's uniform weights are cheaper per sample on large passes. On a CPU rasterizer (Mesa's
-   * llvmpipe) a draw costs little and a table fetch per tap much: there one draw made the default
-   * chain 15-30 % slower at 480 x 270. Default -1, automatic: 2097152 (2^21: every pass of a 1920 x
-   * 1080 frame, all but the composite at 3840 x 2160) on a GPU, 0 on a CPU rasterizer (llvmpipe,
-   * softpipe, SwiftShader); 0: every pass drawn in pieces. On an NVIDIA H200 the default chain on
-   * lit-spheres then adds 0.31 ms (1080p) and 0.36 ms (4K) over a compute copy, against 0.39
-   * and 0.50 in pieces (docs/gpu.md).
+   * dispatch), its operators evaluated from their tables; a larger pass is drawn in pieces (the
+   * operators' periodic interiors and their borders). Both give the same bits (tested). Default
+   * -1, automatic: 2^21 on a GPU (every pass of a 1920 x 1080 frame), 0 on a CPU rasterizer
+   * (llvmpipe, softpipe, SwiftShader), where a table fetch per tap costs more than a draw; 0:
+   * every pass in pieces. The measurements behind the default: docs/gpu.md.
    */
   vtkSetClampMacro(SingleDrawSamples, int, -1, VTK_INT_MAX);
   vtkGetMacro(SingleDrawSamples, int);
@@ -151,15 +142,11 @@ public:
 
   ///@{
   /**
-   * Where the chain runs a term as a separable pair of passes (its x half into a scratch
-   * target, then its y half: the blur of a level, the downsample's tent, the upsample), and
-   * the pair is one draw (SingleDrawSamples) of compute shaders in the exact mode, run it as
-   * one dispatch: each 16 x 16 work group sums the source rows its outputs read once into
-   * shared memory, then sums them through the y operator. A level's two downsample terms
-   * share one such pass, and so do a level's blur and its upsample-and-accumulate (CASCADE).
-   * The same sums in the same order, so the same bits (tested); the default chain's 32
-   * dependent dispatches become 11: on an NVIDIA H100 it then adds 0.10 ms (1080p) and
-   * 0.17 ms (4K) over a compute copy, against 0.28 and 0.36 (docs/gpu.md). Default on.
+   * A separable pair of passes (a term's x half into a scratch target, then its y half) that is
+   * one draw (SingleDrawSamples) of compute shaders runs as one dispatch, whose 16 x 16 work
+   * groups sum the source rows they read once, in shared memory. The same sums in the same
+   * order, so the same bits (tested); the default chain's 32 dependent dispatches become 11
+   * (docs/gpu.md). Default on.
    */
   vtkSetMacro(FuseSeparablePasses, bool);
   vtkGetMacro(FuseSeparablePasses, bool);
