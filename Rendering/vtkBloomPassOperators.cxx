@@ -79,15 +79,13 @@ std::string vtkBloomPassChainRunner::Interior::Defines(const char* axis) const
   // ALL: in every phase (no run-time test of its weight). Only the first 32 taps have bits (a
   // shift by 32 or more is undefined in C++ and in GLSL); the shader tests the weight of the
   // others (tapIsOn).
-  const int count = this->Taps;
-  const int masked = std::min(count, 32);
-  const std::vector<float>& weights = this->Weights;
+  const int masked = std::min(this->Taps, 32);
   unsigned int any = 0, all = masked == 32 ? 0xffffffffu : (1u << masked) - 1u;
   for (int ph = 0; ph < this->Period; ++ph)
   {
     for (int k = 0; k < masked; ++k)
     {
-      if (weights[ph * count + k] != 0.0f)
+      if (this->Weights[ph * this->Taps + k] != 0.0f)
       {
         any |= 1u << k;
       }
@@ -100,8 +98,7 @@ std::string vtkBloomPassChainRunner::Interior::Defines(const char* axis) const
   std::ostringstream os;
   os << "#define " << axis << "_PERIOD " << this->Period << "\n#define " << axis << "_STRIDE "
      << this->Stride << "\n#define " << axis << "_TAPS " << this->Taps << "\n#define " << axis
-     << "_ANY " << any << "u\n#define " << axis << "_ALL " << all << "u\n#define " << axis
-     << "_ROW " << count << "\n";
+     << "_ANY " << any << "u\n#define " << axis << "_ALL " << all << "u\n";
   return os.str();
 }
 

@@ -135,8 +135,8 @@ uniform sampler2D xRows;
 #define X_ALL 0u
 #elif X_MODE == OP_PERIODIC
 uniform int xInterior[3]; // first interior output sample, First of its first two rows
-uniform float xWeights[X_PERIOD * X_ROW];
-#define X_COUNT X_ROW
+uniform float xWeights[X_PERIOD * X_TAPS];
+#define X_COUNT X_TAPS
 #else
 #define X_COUNT 1
 #define X_ANY 1u
@@ -150,8 +150,8 @@ uniform sampler2D yRows;
 #define Y_ALL 0u
 #elif Y_MODE == OP_PERIODIC
 uniform int yInterior[3];
-uniform float yWeights[Y_PERIOD * Y_ROW];
-#define Y_COUNT Y_ROW
+uniform float yWeights[Y_PERIOD * Y_TAPS];
+#define Y_COUNT Y_TAPS
 #else
 #define Y_COUNT 1
 #define Y_ANY 1u
@@ -225,7 +225,7 @@ float weightX(int j, int k)
 #if X_PERIOD == 1
   return xWeights[k];
 #else
-  return xPhase == 0 ? xWeights[k] : xWeights[X_ROW + k];
+  return xPhase == 0 ? xWeights[k] : xWeights[X_TAPS + k];
 #endif
 #else
   return 1.0;
@@ -253,7 +253,7 @@ float weightY(int j, int k)
 #if Y_PERIOD == 1
   return yWeights[k];
 #else
-  return yPhase == 0 ? yWeights[k] : yWeights[Y_ROW + k];
+  return yPhase == 0 ? yWeights[k] : yWeights[Y_TAPS + k];
 #endif
 #else
   return 1.0;
