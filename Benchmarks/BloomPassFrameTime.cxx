@@ -323,20 +323,25 @@ void TimeTwo(vtkBloomFrameTimer& timer, int frames, double ms[3], int count = 3)
   }
 }
 
-// One frame of each pass, with the same camera: the scene and both results.
-void Capture(vtkBloomFrameTimer& timer, vtkImageData* scene, vtkImageData* a, vtkImageData* b)
+// One frame of the bloom pass and (where `b` is given) of the alternative pass, with the same
+// camera: the scene and the results.
+void Capture(
+  vtkBloomFrameTimer& timer, vtkImageData* scene, vtkImageData* a, vtkImageData* b = nullptr)
 {
   timer.Bloom->CaptureResultOn();
-  timer.Alternative->CaptureResultOn();
   timer.Renderer->SetPass(timer.Bloom);
   timer.Window->Render();
   timer.Bloom->ReadSceneImage(scene);
   timer.Bloom->ReadResultImage(a);
-  timer.Renderer->SetPass(timer.Alternative);
-  timer.Window->Render();
-  timer.Alternative->ReadResultImage(b);
   timer.Bloom->CaptureResultOff();
-  timer.Alternative->CaptureResultOff();
+  if (b)
+  {
+    timer.Alternative->CaptureResultOn();
+    timer.Renderer->SetPass(timer.Alternative);
+    timer.Window->Render();
+    timer.Alternative->ReadResultImage(b);
+    timer.Alternative->CaptureResultOff();
+  }
 }
 
 // The quality row of one setting on `timer`: the pass's GPU time over the floor and its error
@@ -351,12 +356,7 @@ void QualityRow(vtkBloomFrameTimer& timer, const std::string& label, int frames,
   timer.Renderer->TexturedBackgroundOff();
   timer.Frame(vtkBloomFrameTimer::PLAIN); // a context for the GPU timer
   vtkNew<vtkImageData> sceneImage, result;
-  timer.Bloom->CaptureResultOn();
-  timer.Renderer->SetPass(timer.Bloom);
-  timer.Window->Render();
-  timer.Bloom->ReadSceneImage(sceneImage);
-  timer.Bloom->ReadResultImage(result);
-  timer.Bloom->CaptureResultOff();
+  Capture(timer, sceneImage, result);
   // The reference runs the exact operators: a split PSF's row is measured against the whole
   // PSF's convolution (what the split costs in accuracy).
   vtkNew<vtkBloomParameters> reference;
