@@ -19,6 +19,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <vector>
 
 vtkStandardNewMacro(vtkBloomPass);
@@ -52,7 +53,8 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   vtkBloomPassResources& res = this->Resources;
   if (res.Context && res.Context != window)
   {
-    self->ReleaseGraphicsResources(res.Context);
+    // Moved to another window: what the pass made in the first is freed in its own context.
+    this->ReleaseInContext();
   }
   res.Context = window;
   self->LastFloatPrecision = precision;
@@ -234,10 +236,25 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
   // there (vtkBloomPassEmission::Plan), so blending changes nothing else and is off.
   const bool emission = content != SCENE;
   this->Emission.EmittersAlone = content == EMITTERS;
+  // The props the pass is attached to while they render (vtkOpenGLRenderPass::PreRender): with
+  // emission, every prop, for its shader replacement; else the volumes, for their viewport.
+  // A GPU volume mapper with no render pass attached places its rays and reads the scene's
+  // depth at the renderer's origin in the window, where the pass's target has its first pixel
+  // at (0, 0): the volume of a renderer that is not at the window's lower left was lost.
+  // Attached, it keeps the viewport the delegate's camera pass set.
+  vtkRenderState attached(r);
   if (emission)
   {
-    self->PreRender(&s2);
+    attached.SetPropArrayAndCount(props, count);
   }
+  else
+  {
+    this->Volumes.clear();
+    std::copy_if(props, props + count, std::back_inserter(this->Volumes),
+      [](vtkProp* prop) { return prop->IsA("vtkVolume"); });
+    attached.SetPropArrayAndCount(this->Volumes.data(), static_cast<int>(this->Volumes.size()));
+  }
+  self->PreRender(&attached);
   if (content == SCENE_AND_EMISSION)
   {
     state->vtkglDisable(GL_BLEND);
@@ -247,10 +264,7 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
     const vtkBloomPassTileCamera part(r, this->Tile);
     self->DelegatePass->Render(&s2);
   }
-  if (emission)
-  {
-    self->PostRender(&s2);
-  }
+  self->PostRender(&attached);
   if (this->Resources.Samples)
   {
     multisample.Resolve(this->Resources.Context, target);
@@ -283,6 +297,10 @@ vtkBloomPass::vtkBloomPass()
 //------------------------------------------------------------------------------
 vtkBloomPass::~vtkBloomPass()
 {
+  // VTK's textures, framebuffers and buffers free their GL names only when released, not when
+  // deleted: a pass dropped without ReleaseGraphicsResources (switched off in an application)
+  // would leave its targets in the window's context for as long as the window lives.
+  this->Internals->ReleaseInContext();
   this->Emitters->Delete();
 }
 

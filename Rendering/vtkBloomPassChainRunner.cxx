@@ -50,8 +50,37 @@ void vtkBloomPassChainRunner::ReleaseOperators(vtkWindow* w)
   this->Operators.clear();
   this->Interiors.clear();
   this->TileRowCounts.clear();
-  this->Variants.clear(); // keyed by the operators' addresses
+  this->Variants.clear(); // keyed by the operators' addresses, pointing at compute programs
   this->FFTBlur->ReleaseOperators();
+  this->EndProgramGeneration(w);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::Release(FragmentProgram& program, vtkWindow* w)
+{
+  if (program.Quad)
+  {
+    if (program.Quad->Program)
+    {
+      program.Quad->Program->ReleaseGraphicsResources(w);
+    }
+    program.Quad->ReleaseGraphicsResources(w);
+    program.Quad.reset();
+  }
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::EndProgramGeneration(vtkWindow* w)
+{
+  this->Programs.EndGeneration([w](FragmentProgram& program) { Release(program, w); });
+  this->ComputePrograms.EndGeneration(
+    [this](ComputeProgram& program)
+    {
+      if (program.Id && this->Resources.Context)
+      {
+        glDeleteProgram(program.Id);
+      }
+    });
 }
 
 //------------------------------------------------------------------------------
@@ -59,11 +88,7 @@ void vtkBloomPassChainRunner::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->ReleaseOperators(w);
   this->FFTBlur->ReleaseGraphicsResources(w);
-  for (auto& program : this->Programs)
-  {
-    program.second->ReleaseGraphicsResources(w);
-  }
-  this->Programs.clear();
+  this->Programs.Clear([w](FragmentProgram& program) { Release(program, w); });
   this->ReleaseCompute();
   this->ReleaseCostTiming();
   if (this->Query)
@@ -113,7 +138,19 @@ std::string vtkBloomPassChainRunner::ShaderConstants()
 //------------------------------------------------------------------------------
 vtkOpenGLQuadHelper* vtkBloomPassChainRunner::Program(const std::string& variant)
 {
-  std::unique_ptr<vtkOpenGLQuadHelper>& quad = this->Programs[variant];
+  FragmentProgram& entry = this->Programs[variant];
+  std::unique_ptr<vtkOpenGLQuadHelper>& quad = entry.Quad;
+  if (quad)
+  {
+    this->Resources.Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
+    // Another pass of the window freed the program it shares (EndProgramGeneration) and the
+    // cache compiled it again: its attributes may have moved, so the quad is made again.
+    if (!quad->Program || quad->Program->GetHandle() != entry.Handle)
+    {
+      quad->ReleaseGraphicsResources(this->Resources.Context);
+      quad.reset();
+    }
+  }
   if (!quad)
   {
     // The bright region's reduction has a shader of its own (vtkBloomPassRegion.cxx).
@@ -129,10 +166,7 @@ vtkOpenGLQuadHelper* vtkBloomPassChainRunner::Program(const std::string& variant
     this->CompiledProgram = true;
     quad.reset(new vtkOpenGLQuadHelper(this->Resources.Context,
       vtkOpenGLRenderUtilities::GetFullScreenQuadVertexShader().c_str(), fs.c_str(), ""));
-  }
-  else
-  {
-    this->Resources.Context->GetShaderCache()->ReadyShaderProgram(quad->Program);
+    entry.Handle = quad->Program ? quad->Program->GetHandle() : 0;
   }
   if (!quad->Program || !quad->Program->GetCompiled())
   {

@@ -23,7 +23,8 @@
 #ifndef vtkBloomPassChainRunner_h
 #define vtkBloomPassChainRunner_h
 
-#include "vtkSmartPointer.h" // For the operator textures
+#include "vtkBloomPassProgramCache.h" // For the programs
+#include "vtkSmartPointer.h"          // For the operator textures
 
 #include <array>
 #include <cstdint>
@@ -598,7 +599,7 @@ private:
     unsigned int Id = 0; ///< 0: it did not build
     LocationCache Locations;
   };
-  std::map<std::string, ComputeProgram> ComputePrograms;
+  vtkBloomPassProgramCache<ComputeProgram> ComputePrograms;
   /// Compute variants that did not build: not tried again, their passes run as fragments.
   std::set<std::string> FailedCompute;
   bool WarnedComputeFallback = false;
@@ -749,7 +750,18 @@ private:
   std::map<const vtkBloomLinearOperator*, Interior> Interiors;
 
   // One program per variant (operator modes, interior weights, step, flags), made on first use.
-  std::map<std::string, std::unique_ptr<vtkOpenGLQuadHelper>> Programs;
+  // The program itself is the window's shader cache's (by its source), shared with the other
+  // passes of the window: Handle says which compilation the quad's vertex array was bound to.
+  struct FragmentProgram
+  {
+    std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+    int Handle = 0;
+  };
+  vtkBloomPassProgramCache<FragmentProgram> Programs;
+  /// Free a fragment program's quad and its compiled program (the cache keeps its source).
+  static void Release(FragmentProgram& program, vtkWindow* w);
+  /// Free the programs that the last chains did not use; a chain is about to be built.
+  void EndProgramGeneration(vtkWindow* w);
 
   /// The profile entry of one pass: its name, output size and compulsory traffic.
   void EndProfiledPass(const PassSpec& spec);

@@ -384,7 +384,7 @@ vtkBloomPassChainRunner::ComputeProgram* vtkBloomPassChainRunner::Compute(
         << (this->Frame.SimulateComputeFailure ? "(simulated for a test)" : log));
       this->WarnedComputeFallback = true;
     }
-    this->ComputePrograms.erase(key);
+    this->ComputePrograms.Erase(key);
     this->FailedCompute.insert(key);
     return nullptr;
   }

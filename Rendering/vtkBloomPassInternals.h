@@ -24,6 +24,7 @@
 #include "vtkImageData.h"
 #include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLFramebufferObject.h"
+#include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLRenderer.h"
 #include "vtkOpenGLState.h"
 #include "vtkProp.h"
@@ -205,6 +206,7 @@ public:
    * draws what lies outside the band as any render does, clipped).
    */
   std::vector<vtkProp*> TileProps;
+  std::vector<vtkProp*> Volumes; ///< the volumes of the scene's render (RenderDelegate)
   void PropsOfTile(vtkRenderer* r, vtkProp**& props, int& count)
   {
     if (this->Tile.Size[0] == this->Tile.TileSize[0] &&
@@ -244,6 +246,19 @@ public:
     std::copy(region, region + 4, self->LastBrightRegion);
     self->LastChainCoverage = this->Runner.GetCoverage();
     self->LastComputePasses = this->Runner.GetComputePasses();
+  }
+
+  /// Release everything in the context of the window that holds it, if it is still alive,
+  /// and make current again the context that was (vtkOpenGLRenderWindow::PushContext).
+  void ReleaseInContext()
+  {
+    vtkOpenGLRenderWindow* window = this->Resources.Context;
+    if (window)
+    {
+      window->PushContext();
+      this->ReleaseAll(window);
+      window->PopContext();
+    }
   }
 
   void ReleaseAll(vtkWindow* w)

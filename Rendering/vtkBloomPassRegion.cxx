@@ -200,14 +200,14 @@ void vtkBloomPassChainRunner::ReleaseCompute()
   }
   this->ReduceProgram = this->ReduceBuffer = 0;
   this->ComputeState = 0;
-  for (auto& program : this->ComputePrograms)
-  {
-    if (program.second.Id)
+  this->ComputePrograms.Clear(
+    [](ComputeProgram& program)
     {
-      glDeleteProgram(program.second.Id);
-    }
-  }
-  this->ComputePrograms.clear();
+      if (program.Id)
+      {
+        glDeleteProgram(program.Id);
+      }
+    });
   this->Variants.clear();      // they point at the programs
   this->FailedCompute.clear(); // a new context builds them afresh
   this->ComputeSupport = 0;

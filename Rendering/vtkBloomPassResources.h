@@ -19,6 +19,7 @@
 #include "vtkOpenGLState.h"  // For the scoped savers
 #include "vtkSmartPointer.h" // For the targets' textures and framebuffers
 #include "vtkType.h"         // For vtkMTimeType
+#include "vtkWeakPointer.h"  // For the context
 
 #include <vector>
 
@@ -119,7 +120,9 @@ struct vtkBloomPassMultisampleTarget
 class vtkBloomPassResources
 {
 public:
-  vtkOpenGLRenderWindow* Context = nullptr;
+  /// The window whose context holds every resource below; weak, so that a pass that outlives
+  /// its window does not free names of a context that is gone (the window freed them).
+  vtkWeakPointer<vtkOpenGLRenderWindow> Context;
   unsigned int Format = 0; ///< the scene's internal format: GL_RGBA16F or GL_RGBA32F
 
   vtkBloomPassSceneTarget Scene;

@@ -31,6 +31,10 @@ if (VTKBLOOM_ENABLE_RENDERING)
     COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_pyvista.py" -v)
   set_tests_properties(Python.scene Python.pyvista PROPERTIES
     ENVIRONMENT "${vtkbloom_python_env}" SKIP_RETURN_CODE 77 TIMEOUT 120)
+  # Long sessions: add_bloom/remove_bloom, emitters and bloom() in loops hold memory flat.
+  add_test(NAME Python.soak
+    COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_soak.py" -v)
+  set_tests_properties(Python.soak PROPERTIES ENVIRONMENT "${vtkbloom_python_env}" TIMEOUT 300)
 endif ()
 
 add_test(NAME Python.Example.BatchBloom

@@ -69,6 +69,14 @@ vtkbloom_add_gtest(TestBloomPassTiles OPENGL
     VTK::FiltersSources VTK::CommonDataModel VTK::CommonCore)
 vtk_module_autoinit(TARGETS TestBloomPassTiles MODULES VTK::RenderingOpenGL2)
 
+# Long sessions: the bloom, its emitters, presets, PSF mode, tiles, several windows and the
+# context switched for hundreds of frames hold their memory flat against the plain renderer.
+vtkbloom_add_gtest(TestBloomPassSoak OPENGL
+  SOURCES Rendering/TestBloomPassSoak.cxx
+  LIBRARIES VTKBloom::RenderingBloom VTKBloom::FiltersBloom VTK::RenderingOpenGL2
+    VTK::RenderingCore VTK::FiltersCore VTK::FiltersSources VTK::CommonDataModel VTK::CommonCore)
+vtk_module_autoinit(TARGETS TestBloomPassSoak MODULES VTK::RenderingOpenGL2)
+
 # Temporal stability: the bloom's energy under sub-pixel camera motion against the scene's.
 vtkbloom_add_gtest(TestBloomPassMotion OPENGL
   SOURCES Rendering/TestBloomPassMotion.cxx
@@ -98,6 +106,12 @@ if (TARGET VTK::InteractionWidgets AND TARGET VTK::RenderingFreeType AND
       VTK::RenderingContextOpenGL2)
     target_compile_definitions(TestBloomPassGallery PRIVATE VTKBLOOM_GALLERY_CHARTS=1)
     list(APPEND vtkbloom_gallery_autoinit VTK::RenderingContextOpenGL2)
+  endif ()
+  # Point labels (vtkLabeledDataMapper), where this VTK has the labelling module (Debian's and
+  # sid's; not the cached OSMesa and EGL prefixes).
+  if (TARGET VTK::RenderingLabel)
+    target_link_libraries(TestBloomPassGallery PRIVATE VTK::RenderingLabel)
+    target_compile_definitions(TestBloomPassGallery PRIVATE VTKBLOOM_GALLERY_LABELS=1)
   endif ()
   vtk_module_autoinit(TARGETS TestBloomPassGallery MODULES ${vtkbloom_gallery_autoinit})
 endif ()

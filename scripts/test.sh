@@ -64,11 +64,12 @@ require_tests() {
 # sid's and the cached OSMesa and EGL prefixes alike).
 rendering_tests=('RenderingBloomPass[.]' 'RenderingBloomPassLight[.]' 'RenderingGallery[.]'
   'RenderingBloomPassTiles[.]' 'RenderingBloomPassMotion[.]' 'CommandLine[.]'
-  'RenderingBloomPassCompute[.]InAnOpenGL33Context')
+  'RenderingBloomPassCompute[.]InAnOpenGL33Context' 'RenderingBloomPassSoak[.]'
+  'Rendering/RenderingGalleryRenderers[.]')
 # And where the package is wrapped for Python (not in the sanitizer build, not in the cached
 # prefixes' builds, whose VTK has no Python).
 python_tests=('Python[.]vtkbloom' 'Python[.]arrays' 'Python[.]scene' 'Python[.]ParaViewXML'
-  'Python[.]Recipe[.]' 'Python[.]ClientExamples[.]vedo' 'Docs[.]NamedPathsExist')
+  'Python[.]Recipe[.]' 'Python[.]ClientExamples[.]vedo' 'Docs[.]NamedPathsExist' 'Python[.]soak')
 
 run_x11() {
   local build=$1

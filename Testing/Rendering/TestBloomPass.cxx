@@ -61,22 +61,6 @@ double MaxChannel(vtkImageData* image, int c)
   return m;
 }
 
-long ResidentKiB()
-{
-  std::ifstream status("/proc/self/status");
-  std::string key;
-  while (status >> key)
-  {
-    if (key == "VmRSS:")
-    {
-      long kib = 0;
-      status >> kib;
-      return kib;
-    }
-  }
-  return 0;
-}
-
 // GPU result vs vtkImageBloom on the same float render, for one preset and precision.
 double PresetAgreement(const std::string& preset, int precision, const std::string& scene,
   int width = 301, int height = 207)
@@ -359,7 +343,7 @@ TEST(RenderingBloomPass, NoErrorsOrGrowthOverManyFramesWithResizes)
     ASSERT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << "frame " << frame;
     if (frame == 199)
     {
-      rssAfterWarmUp = ResidentKiB();
+      rssAfterWarmUp = vtkBloomTest::ResidentKiB();
       passes = w.Bloom->GetNumberOfPasses();
     }
   }
@@ -371,7 +355,7 @@ TEST(RenderingBloomPass, NoErrorsOrGrowthOverManyFramesWithResizes)
 #else
   const long boundKiB = 16 * 1024;
 #endif
-  EXPECT_LT(ResidentKiB() - rssAfterWarmUp, boundKiB) << "resident memory grew";
+  EXPECT_LT(vtkBloomTest::ResidentKiB() - rssAfterWarmUp, boundKiB) << "resident memory grew";
 }
 
 //------------------------------------------------------------------------------

@@ -40,6 +40,23 @@ bool RunningInCI()
   return ci && (std::strcmp(ci, "true") == 0 || std::strcmp(ci, "1") == 0);
 }
 
+//------------------------------------------------------------------------------
+long ResidentKiB()
+{
+  std::ifstream status("/proc/self/status");
+  std::string key;
+  while (status >> key)
+  {
+    if (key == "VmRSS:")
+    {
+      long kib = 0;
+      status >> kib;
+      return kib;
+    }
+  }
+  return 0;
+}
+
 std::string SharedDataPath(const std::string& relative)
 {
   const std::string path = std::string(VTKBLOOM_SHARED_DATA_DIR) + "/" + relative;

@@ -37,6 +37,9 @@ vtkSmartPointer<vtkImageData> RunAndCopy(vtkImageAlgorithm* filter, vtkImageData
 /// True when the CI environment variable says we run under CI.
 bool RunningInCI();
 
+/// This process's resident memory (VmRSS of /proc/self/status), in KiB; 0 where unknown.
+long ResidentKiB();
+
 /// Absolute path of a file under ../shared/data, or "" when it is absent.
 std::string SharedDataPath(const std::string& relative);
 
