@@ -81,7 +81,8 @@ if (VTKBLOOM_ENABLE_RENDERING)
     # A sample of the client's own examples through add_bloom at the defaults, as its users
     # run them (Testing/Python/client_examples.py; docs/python.md has the large sweeps): each
     # renders, runs with no error and no GL error its plain frame lacks, and stays within 1 %
-    # of its pixels. Lines, text, axes, grids, labels, hidden lines and chart marks.
+    # of its pixels, each viewport on its own. Lines, text, axes, grids, labels, hidden lines,
+    # chart marks, and volumes in two renderers (vedo's volume_sharemap).
     if (client STREQUAL "pyvista")
       set(examples
         pyvista.plotting.plotter.BasePlotter.enable_hidden_line_removal
@@ -102,7 +103,7 @@ if (VTKBLOOM_ENABLE_RENDERING)
         pyplot/markers.py pyplot/plot_errband.py pyplot/scatter1.py pyplot/quiver.py
         pyplot/intersect2d.py pyplot/histo_1d_a.py pyplot/fit_polynomial1.py
         pyplot/custom_axes2.py basic/legendbox.py basic/colorlines.py basic/delaunay2d.py
-        basic/color_mesh_cells1.py)
+        basic/color_mesh_cells1.py volumetric/volume_sharemap.py)
     endif ()
     add_test(NAME Python.ClientExamples.${client}
       COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/client_examples.py"

@@ -41,13 +41,18 @@
 #                    Airy PSFs of radius 16, 64 and 256 and a PSF as wide as the frame (grids
 #                    up to 7680 x 6000, four-step transforms), each against the plain frame and
 #                    the compute copy (BloomPassFrameTime --psf), $FRAMES frames of each kind
+#   soak.md          long sessions (TestBloomPassSoak): the bloom, its emitters, presets and
+#                    PSF mode, tiles and windows and the context switched for hundreds of
+#                    frames, host memory and the card's (GL_NVX_gpu_memory_info) at the start
+#                    and the end against the plain renderer, and nvidia-smi's memory in use
+#                    before and after
 #   stages.md        ShaderStageThroughput: one full-screen pass as a fragment and as a compute
 #                    shader at 3840x2160
 #   render.png       `vtk-bloom render` of lit-spheres at 3840x2160
 #   run.log          everything printed
 #
 # STEPS (default "tests frametime renderers fusion samples profile quality sparse sync orbit
-# selective psf stages render")
+# selective psf soak stages render")
 # picks the steps. At most 8 files come back from the device tool: pick fewer steps there.
 # The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
 # CUDA image) and the pack at the absolute paths it was built with.
@@ -56,7 +61,7 @@ cd "${VTKBLOOM_GPU_ROOT:-$PWD}" || exit 1
 OUT=${OUT:-$(mktemp -d)}
 mkdir -p "$OUT"
 FRAMES=${FRAMES:-50}
-STEPS=${STEPS:-tests frametime renderers fusion samples profile quality sparse sync orbit selective psf stages render}
+STEPS=${STEPS:-tests frametime renderers fusion samples profile quality sparse sync orbit selective psf soak stages render}
 PRESETS=${PRESETS:-all}
 step() { [[ " $STEPS " == *" $1 "* ]]; }
 exec > >(tee "$OUT/run.log") 2>&1
@@ -98,7 +103,8 @@ if command -v ctest >/dev/null 2>&1; then
 else
   # No CMake there: the test executables themselves, in their CTest working directory.
   status=0
-  for t in TestBloomPass TestBloomPassHardCases TestBloomPassRegion TestBloomPassMotion; do
+  for t in TestBloomPass TestBloomPassHardCases TestBloomPassRegion TestBloomPassMotion \
+    TestBloomPassSoak TestBloomPassGallery; do
     (cd "$VTKBLOOM_GPU_BUILD/Testing" && timeout 600 "$bin/$t") 2>&1 | tee -a "$OUT/ctest.log"
     [ "${PIPESTATUS[0]}" -eq 0 ] || status=1
   done
@@ -206,6 +212,21 @@ fi
 if step psf; then
 echo "== PSF bloom"
 both_sizes 400 --psf lit-spheres "$FRAMES" | tee "$OUT/psf.md"
+fi
+
+if step soak; then
+echo "== long sessions"
+used() { nvidia-smi --query-gpu=memory.used --format=csv,noheader 2>/dev/null | head -n 1; }
+before=$(used)
+soak_log=$OUT/soak.log
+(cd "$VTKBLOOM_GPU_BUILD/Testing" && timeout 600 "$bin/TestBloomPassSoak") >"$soak_log" 2>&1
+soak_status=$?
+{
+  echo "nvidia-smi memory in use before: $before"
+  grep -E '^\[ soak \]|OK \]|FAILED|Failure|grew' "$soak_log"
+  echo "nvidia-smi memory in use after: $(used)"
+} | tee "$OUT/soak.md"
+[ "$soak_status" -eq 0 ] || status=1
 fi
 
 if step stages; then

@@ -32,6 +32,9 @@ number of failed checks. Run by scripts/test.sh (the ParaView leg).
    within one level on the white palette and on a dark background, also with FXAA or tone
    mapping on; an HDR lamp beside the text glows on both backgrounds, and the text's pixels
    stay as they are (the annotations are drawn over the bloom).
+6b. Several views: bloom_view_split.py's layout of two bloom views, each with the wavelet as a
+   volume (composite and maximum intensity), in the window ParaView shares between them: each
+   view's half equals the layout with bloom off within 2 levels, and shows its volume.
 7. Properties: bloom_properties.py sets every property of the Bloom, Separable Gaussian, Bright
    Pass and Pyramid Down/Up proxies that changes the image (a property neither tested nor
    skipped fails) to non-default values; each output differs from the proxy's without it (or
@@ -524,6 +527,26 @@ if status == 0:
     check(core.sum() > 20 and 0 <= worst <= 2,
           'the annotations are drawn over the glow: %d text pixels, max %g levels'
           % (int(core.sum()), worst))
+
+# 6b. Several views in one layout, a volume in each: ParaView renders them into one window,
+# each at its viewport; each half is its plain frame (a volume away from the window's origin
+# was once lost).
+split = os.path.join(out, 'split')
+status, log = pvbatch(1, 'bloom_view_split.py', split)
+check(status == 0, 'bloom_view_split.py ran (exit %d)' % status)
+if status != 0:
+    print(log[-3000:])
+else:
+    on, off = load_rgb(split + '-on.png'), load_rgb(split + '-off.png')
+    half = off.shape[1] // 2
+    for index, part in enumerate((slice(0, half), slice(half, None))):
+        a, b = on[:, part].astype(float), off[:, part].astype(float)
+        worst = float(np.abs(a - b).max())
+        over = float((np.abs(a - b).max(axis=-1) > 8).mean())
+        shown = float((np.abs(b - b[:2, :2].mean(axis=(0, 1))).max(axis=-1) > 16).mean())
+        check(shown > 0.05 and worst <= 2 and over == 0.0,
+              'split layout, view %d: its volume shown (%.1f %% of its pixels), bloom on equals'
+              ' off within %g levels (%.2f %% over 8)' % (index, 100 * shown, worst, 100 * over))
 
 # 7. Every property of the filters that changes the image, against the vtkbloom filters set
 # through their C++ setters (bloom_properties.py holds the cases and the comparison).

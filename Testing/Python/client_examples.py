@@ -132,6 +132,28 @@ def compare(plain, bloomed):
     return result
 
 
+def viewport_rectangles(plotter, shape):
+    """Each renderer's rectangle of pixels in a frame of `shape` (rows from the top) as a pair of
+    slices, where the plotter has more than one renderer: a viewport that loses its content is
+    judged on its own pixels, not diluted by the window's."""
+    renderers = [r for r in getattr(plotter, "renderers", []) if hasattr(r, "GetSize")]
+    window = renderers[0].GetRenderWindow() if renderers else None
+    if len(renderers) < 2 or window is None:
+        return []
+    width, height = window.GetSize()
+    if width <= 0 or height <= 0:
+        return []
+    sx, sy = shape[1] / float(width), shape[0] / float(height)
+    rectangles = []
+    for renderer in renderers:
+        (x, y), (w, h) = renderer.GetOrigin(), renderer.GetSize()
+        rows = slice(int(round(shape[0] - (y + h) * sy)), int(round(shape[0] - y * sy)))
+        columns = slice(int(round(x * sx)), int(round((x + w) * sx)))
+        if rows.stop - rows.start > 0 and columns.stop - columns.start > 0:
+            rectangles.append((rows, columns))
+    return rectangles
+
+
 def light_in(plotter):
     """Whether the last bloomed frame had light: some pass of the plotter ran its chain. A pass
     skips the chain exactly when no value of its scene exceeds the threshold (at the defaults,
@@ -285,6 +307,14 @@ class Child:
                 record["error"] = "the bloomed frame is %s, the plain frame %s" % (bloomed.shape, plain.shape)
             else:
                 record.update(compare(plain, bloomed))
+                # Each renderer's viewport on its own: the worst one's share is the frame's.
+                parts = [compare(plain[r], bloomed[r]) for r in viewport_rectangles(plotter, plain.shape)]
+                if parts:
+                    record["viewports"] = [part["changed_fraction"] for part in parts]
+                    worst = max(range(len(parts)), key=lambda i: parts[i]["changed_fraction"])
+                    if parts[worst]["changed_fraction"] > record["changed_fraction"]:
+                        record["changed_fraction"] = parts[worst]["changed_fraction"]
+                        record["worst_viewport"] = worst
                 if record["max_diff"] > LEVELS:
                     record["images"] = save_images(self.images, "show%d" % index, plain, bloomed)
             self.save()

@@ -5,9 +5,8 @@ whole actor and a clim range) and bloom() on numpy arrays, a hundred times each 
 frames, hold the process's memory flat after a warm-up, against the same loop without bloom.
 
 Growth is the smallest resident size of the last samples minus the largest of the first ones,
-so that the allocator's fluctuation does not count; the bound is the bytes of the pass's float
-scene target alone (colour and depth), less than any set of its targets, where a leak of one
-set per switch would grow a hundred times as much. Run by ctest as Python.soak, under the X11
+so that the allocator's fluctuation does not count; the bound is less than one set of the
+pass's targets, where a leak of one set per switch would grow a hundred times as much. Run by ctest as Python.soak, under the X11
 leg's Xvfb and in the sid leg (VTK 9.6, EGL)."""
 
 import os
@@ -23,8 +22,12 @@ from vtkmodules.vtkRenderingCore import vtkActor, vtkPolyDataMapper, vtkRenderWi
 import vtkmodules.vtkRenderingOpenGL2  # noqa: F401 (the OpenGL factory overrides)
 
 WIDTH, HEIGHT = 480, 360
-# The pass's scene target: RGBA16F colour and a 32-bit depth, in KiB.
+# The pass's scene target (RGBA16F colour and a 32-bit depth), in KiB, and the bound: eight of
+# them, less than one set of the pass's targets at this size (the scene target and the chain's,
+# 10.5 MiB at 400 x 300: docs/rendering.md), where a leak of the scene target alone at each of
+# the hundred switches would grow by a hundred.
 SCENE_TARGET_KIB = 12 * WIDTH * HEIGHT / 1024.0
+BOUND_KIB = 8 * SCENE_TARGET_KIB
 
 
 def resident_kib():
@@ -89,9 +92,9 @@ class LongSessions(unittest.TestCase):
     def compare(self, what, run):
         plain, bloom = run(False), run(True)
         print("soak %-24s plain %+.2f MiB, bloom %+.2f MiB, bound %.2f MiB"
-              % (what, plain / 1024, bloom / 1024, SCENE_TARGET_KIB / 1024), flush=True)
-        self.assertLess(bloom - max(plain, 0.0), SCENE_TARGET_KIB,
-                        "%s: memory grew by more than the pass's scene target" % what)
+              % (what, plain / 1024, bloom / 1024, BOUND_KIB / 1024), flush=True)
+        self.assertLess(bloom - max(plain, 0.0), BOUND_KIB,
+                        "%s: memory grew by more than the bound" % what)
 
     def test_add_and_remove_bloom(self):
         def run(bloom):

@@ -18,6 +18,7 @@
 #include "vtkBloomParameters.h"
 #include "vtkBloomPass.h"
 #include "vtkBloomTestSupport.h"
+#include "vtkBloomVTKCompat.h" // For the OpenGL entry points of this VTK
 
 #include "vtkActor.h"
 #include "vtkElevationFilter.h"
@@ -31,7 +32,6 @@
 #include "vtkSmartPointer.h"
 #include "vtkSphereSource.h"
 #include "vtkWindowToImageFilter.h"
-#include "vtk_glew.h"
 
 #include <gtest/gtest.h>
 
