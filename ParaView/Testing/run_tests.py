@@ -33,8 +33,8 @@ number of failed checks. Run by scripts/test.sh (the ParaView leg).
    mapping on; an HDR lamp beside the text glows on both backgrounds, and the text's pixels
    stay as they are (the annotations are drawn over the bloom).
 6b. Several views: bloom_view_split.py's layout of two bloom views, each with the wavelet as a
-   volume (composite and maximum intensity), in the window ParaView shares between them: each
-   view's half equals the layout with bloom off within 2 levels, and shows its volume.
+   volume, in the window ParaView shares between them: each view's half shows its volume and
+   is the layout with bloom off, no pixel over 8 levels (the rays' jitter moves soft edges).
 7. Properties: bloom_properties.py sets every property of the Bloom, Separable Gaussian, Bright
    Pass and Pyramid Down/Up proxies that changes the image (a property neither tested nor
    skipped fails) to non-default values; each output differs from the proxy's without it (or
@@ -539,14 +539,18 @@ if status != 0:
 else:
     on, off = load_rgb(split + '-on.png'), load_rgb(split + '-off.png')
     half = off.shape[1] // 2
-    for index, part in enumerate((slice(0, half), slice(half, None))):
+    # The volume's soft edges differ by a few levels: ParaView jitters its rays by the
+    # fragment's position, which the pass's target moves (0.5 % of the pixels over 2 levels,
+    # at most 8, on ParaView 5.11); a lost volume is a quarter of the view over 8.
+    for index, part in enumerate((slice(3, half - 3), slice(half + 3, None))):
         a, b = on[:, part].astype(float), off[:, part].astype(float)
-        worst = float(np.abs(a - b).max())
-        over = float((np.abs(a - b).max(axis=-1) > 8).mean())
-        shown = float((np.abs(b - b[:2, :2].mean(axis=(0, 1))).max(axis=-1) > 16).mean())
-        check(shown > 0.05 and worst <= 2 and over == 0.0,
-              'split layout, view %d: its volume shown (%.1f %% of its pixels), bloom on equals'
-              ' off within %g levels (%.2f %% over 8)' % (index, 100 * shown, worst, 100 * over))
+        difference = np.abs(a - b).max(axis=-1)
+        over, mean = float((difference > 8).mean()), float(difference.mean())
+        shown = float((np.abs(b - b[:2, -2:].mean(axis=(0, 1))).max(axis=-1) > 16).mean())
+        check(shown > 0.05 and over == 0.0 and mean < 0.5,
+              'split layout, view %d: its volume shown (%.1f %% of its pixels), bloom on as off:'
+              ' %.2f %% over 8 levels, mean %.3f, max %g' % (index, 100 * shown, 100 * over,
+                                                              mean, float(difference.max())))
 
 # 7. Every property of the filters that changes the image, against the vtkbloom filters set
 # through their C++ setters (bloom_properties.py holds the cases and the comparison).
