@@ -35,6 +35,11 @@ number of failed checks. Run by scripts/test.sh (the ParaView leg).
 6b. Several views: bloom_view_split.py's layout of two bloom views, each with the wavelet as a
    volume, in the window ParaView shares between them: each view's half shows its volume and
    is the layout with bloom off, no pixel over 8 levels (the rays' jitter moves soft edges).
+6c. Long sessions: bloom_view_soak.py renders the view 300 times with its bloom switched off
+   and on every 5 frames, its preset changed every 20 and the view resized every 30, on 1 and
+   3 ranks; the first rank's resident memory (where pvbatch runs the script, and IceT composites)
+   grows by less than 16 MiB more than in the same session without bloom (the growth: the
+   smallest of its last samples minus the largest of its first).
 7. Properties: bloom_properties.py sets every property of the Bloom, Separable Gaussian, Bright
    Pass and Pyramid Down/Up proxies that changes the image (a property neither tested nor
    skipped fails) to non-default values; each output differs from the proxy's without it (or
@@ -551,6 +556,35 @@ else:
               'split layout, view %d: its volume shown (%.1f %% of its pixels), bloom on as off:'
               ' %.2f %% over 8 levels, mean %.3f, max %g' % (index, 100 * shown, 100 * over,
                                                               mean, float(difference.max())))
+
+# 6c. Long sessions, serial and under MPI: memory flat against the plain view's, rank by rank.
+def soak_growth(prefix, ranks):
+    growths = []
+    for rank in range(ranks):
+        path = '%s-%d.txt' % (prefix, rank)
+        if not os.path.exists(path):
+            return None
+        with open(path) as f:
+            samples = [int(v) for v in f.read().split()]
+        k = max(3, len(samples) // 6)
+        growths.append(min(samples[-k:]) - max(samples[:k]))
+    return growths
+
+
+for ranks in (1, 3):
+    growth = {}
+    for use_bloom in (0, 1):
+        prefix = os.path.join(out, 'soak-%d-%d' % (ranks, use_bloom))
+        status, log = pvbatch(ranks, 'bloom_view_soak.py', prefix, '300', str(use_bloom))
+        check(status == 0, 'bloom_view_soak.py, %d rank(s), bloom %s (exit %d)'
+              % (ranks, 'switched' if use_bloom else 'off', status))
+        # pvbatch runs the script on the first rank only: its memory is the one sampled.
+        growth[use_bloom] = soak_growth(prefix, 1) if status == 0 else None
+    if growth[0] is not None and growth[1] is not None:
+        excess = [b - max(p, 0) for b, p in zip(growth[1], growth[0])]
+        check(max(excess) < 16 * 1024,
+              'long session, %d rank(s): resident growth with bloom %s KiB, without %s KiB'
+              ' (bound 16 MiB more)' % (ranks, growth[1], growth[0]))
 
 # 7. Every property of the filters that changes the image, against the vtkbloom filters set
 # through their C++ setters (bloom_properties.py holds the cases and the comparison).
