@@ -330,6 +330,24 @@ void ExpectFlat(const char* what, int renderers, int width, int height,
   }
 }
 
+/// ExpectFlat for a window of one renderer at width x height: `frames` frames, memory sampled
+/// from `warmUp` on, each frame `change(session, i)` then a render.
+void ExpectFlatInOneWindow(const char* what, int width, int height, int frames, int warmUp,
+  const std::function<void(Session&, int)>& change)
+{
+  ExpectFlat(what, 1, width, height,
+    [&](bool bloom)
+    {
+      Session s(width, height, 1, bloom);
+      return Soak(frames, warmUp, s.Window,
+        [&](int i)
+        {
+          change(s, i);
+          s.Render();
+        });
+    });
+}
+
 constexpr int Width = 400, Height = 300;
 }
 
@@ -338,21 +356,15 @@ constexpr int Width = 400, Height = 300;
 // 5 frames: 100 switches after the warm-up.
 TEST(RenderingBloomPassSoak, SwitchingTheBloomOffAndOnHoldsNothing)
 {
-  ExpectFlat("bloom off and on", 1, Width, Height,
-    [](bool bloom)
+  ExpectFlatInOneWindow("bloom off and on", Width, Height, 600, 100,
+    [](Session& s, int i)
     {
-      Session s(Width, Height, 1, bloom);
-      return Soak(600, 100, s.Window,
-        [&](int i)
-        {
-          if (i % 5 == 4)
-          {
-            s.SetBloom(0, false);
-            s.Render();
-            s.SetBloom(0, true);
-          }
-          s.Render();
-        });
+      if (i % 5 == 4)
+      {
+        s.SetBloom(0, false);
+        s.Render();
+        s.SetBloom(0, true);
+      }
     });
 }
 
@@ -362,45 +374,40 @@ TEST(RenderingBloomPassSoak, SwitchingTheBloomOffAndOnHoldsNothing)
 // all of them at once, and the emission source switched back to the scene.
 TEST(RenderingBloomPassSoak, EmittersAddedAndRemovedHoldNothing)
 {
-  ExpectFlat("emitters", 1, Width, Height,
-    [](bool bloom)
+  ExpectFlatInOneWindow("emitters", Width, Height, 600, 120,
+    [](Session& s, int i)
     {
-      Session s(Width, Height, 1, bloom);
-      return Soak(600, 120, s.Window,
-        [&](int i)
+      if (i % 4 != 0)
+      {
+        return;
+      }
+      const int step = i / 4 % 6;
+      s.ForEachPass(
+        [&](vtkBloomPass* pass)
         {
-          const int step = i / 4 % 6;
-          if (i % 4 == 0)
+          switch (step)
           {
-            s.ForEachPass(
-              [&](vtkBloomPass* pass)
-              {
-                switch (step)
-                {
-                  case 0:
-                    pass->AddEmitter(s.Shown.Grey);
-                    pass->SetEmissionSourceToEmitters();
-                    break;
-                  case 1:
-                    pass->RemoveEmitter(s.Shown.Grey);
-                    pass->AddScalarRangeEmitter(s.Shown.Mapped, 0.4, 0.7);
-                    break;
-                  case 2:
-                    pass->SetEmitInSceneRender(false); // the emitters rendered a second time
-                    break;
-                  case 3:
-                    pass->SetEmitInSceneRender(true);
-                    pass->AddEmitter(s.Shown.Hot);
-                    break;
-                  case 4:
-                    pass->RemoveAllEmitters();
-                    break;
-                  default:
-                    pass->SetEmissionSourceToScene();
-                }
-              });
+            case 0:
+              pass->AddEmitter(s.Shown.Grey);
+              pass->SetEmissionSourceToEmitters();
+              break;
+            case 1:
+              pass->RemoveEmitter(s.Shown.Grey);
+              pass->AddScalarRangeEmitter(s.Shown.Mapped, 0.4, 0.7);
+              break;
+            case 2:
+              pass->SetEmitInSceneRender(false); // the emitters rendered a second time
+              break;
+            case 3:
+              pass->SetEmitInSceneRender(true);
+              pass->AddEmitter(s.Shown.Hot);
+              break;
+            case 4:
+              pass->RemoveAllEmitters();
+              break;
+            default:
+              pass->SetEmissionSourceToScene();
           }
-          s.Render();
         });
     });
 }
@@ -411,35 +418,30 @@ TEST(RenderingBloomPassSoak, PresetsAndPSFModeSwitchedHoldNothing)
 {
   const std::vector<std::string> presets = vtkBloomParameters::GetPresetNames();
   ASSERT_GE(presets.size(), 2u);
-  constexpr int W = 320, H = 240; // PSF mode's FFT at a size llvmpipe runs quickly
-  ExpectFlat("presets and PSF mode", 1, W, H,
-    [&](bool bloom)
+  const int cycle = static_cast<int>(presets.size()) + 1;
+  // PSF mode's FFT at a size llvmpipe runs quickly.
+  ExpectFlatInOneWindow("presets and PSF mode", 320, 240, 6 * cycle * 20, 6 * cycle * 4,
+    [&](Session& s, int i)
     {
-      Session s(W, H, 1, bloom);
-      const int cycle = static_cast<int>(presets.size()) + 1;
-      return Soak(6 * cycle * 20, 6 * cycle * 4, s.Window,
-        [&](int i)
+      if (i % 6 != 0)
+      {
+        return;
+      }
+      const int step = i / 6 % cycle;
+      s.ForEachPass(
+        [&](vtkBloomPass* pass)
         {
-          if (i % 6 == 0)
+          vtkBloomParameters* parameters = pass->GetParameters();
+          if (step < cycle - 1)
           {
-            const int step = i / 6 % cycle;
-            s.ForEachPass(
-              [&](vtkBloomPass* pass)
-              {
-                vtkBloomParameters* parameters = pass->GetParameters();
-                if (step < cycle - 1)
-                {
-                  parameters->SetBloomModeToPyramid();
-                  pass->SetPreset(presets[step].c_str());
-                }
-                else
-                {
-                  parameters->SetBloomModeToPSF();
-                  parameters->SetPSFRadius(24);
-                }
-              });
+            parameters->SetBloomModeToPyramid();
+            pass->SetPreset(presets[step].c_str());
           }
-          s.Render();
+          else
+          {
+            parameters->SetBloomModeToPSF();
+            parameters->SetPSFRadius(24);
+          }
         });
     });
 }
@@ -484,18 +486,12 @@ TEST(RenderingBloomPassSoak, TilesRenderersAndWindowsHoldNothing)
 // an application that hides its view or a ParaView client that disconnects.
 TEST(RenderingBloomPassSoak, ReleasingTheContextHoldsNothing)
 {
-  ExpectFlat("context released", 1, Width, Height,
-    [](bool bloom)
+  ExpectFlatInOneWindow("context released", Width, Height, 500, 100,
+    [](Session& s, int i)
     {
-      Session s(Width, Height, 1, bloom);
-      return Soak(500, 100, s.Window,
-        [&](int i)
-        {
-          if (i % 20 == 19)
-          {
-            s.Window->Finalize();
-          }
-          s.Render();
-        });
+      if (i % 20 == 19)
+      {
+        s.Window->Finalize();
+      }
     });
 }
