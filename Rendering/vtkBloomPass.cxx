@@ -262,7 +262,6 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
   {
     const vtkBloomPassSteps::RendererFXAAOff noFXAA(r);
     const vtkBloomPassTileCamera part(r, this->Tile);
-    const vtkBloomPassViewportAtOrigin atOrigin(r, this->Tile);
     self->DelegatePass->Render(&s2);
   }
   self->PostRender(&attached);

@@ -129,38 +129,3 @@ vtkBloomPassTileCamera::~vtkBloomPassTileCamera()
     this->Camera->SetUserTransform(this->Saved);
   }
 }
-
-//------------------------------------------------------------------------------
-vtkBloomPassViewportAtOrigin::vtkBloomPassViewportAtOrigin(
-  vtkRenderer* renderer, const vtkBloomPassTile& tile)
-{
-  int w, h, x, y;
-  renderer->GetTiledSizeAndOrigin(&w, &h, &x, &y);
-  vtkWindow* window = renderer->GetVTKWindow();
-  const int* size = window ? window->GetSize() : nullptr;
-  if (tile.Tiled || (x == 0 && y == 0) || !size || size[0] <= 0 || size[1] <= 0)
-  {
-    return;
-  }
-  std::copy_n(renderer->GetViewport(), 4, this->Saved);
-  const double dx = static_cast<double>(x) / size[0], dy = static_cast<double>(y) / size[1];
-  renderer->SetViewport(
-    this->Saved[0] - dx, this->Saved[1] - dy, this->Saved[2] - dx, this->Saved[3] - dy);
-  int movedW, movedH, movedX, movedY;
-  renderer->GetTiledSizeAndOrigin(&movedW, &movedH, &movedX, &movedY);
-  if (movedW != w || movedH != h || movedX != 0 || movedY != 0)
-  {
-    renderer->SetViewport(this->Saved);
-    return;
-  }
-  this->Renderer = renderer;
-}
-
-//------------------------------------------------------------------------------
-vtkBloomPassViewportAtOrigin::~vtkBloomPassViewportAtOrigin()
-{
-  if (this->Renderer)
-  {
-    this->Renderer->SetViewport(this->Saved);
-  }
-}

@@ -96,26 +96,5 @@ private:
   vtkSmartPointer<vtkHomogeneousTransform> Saved;
 };
 
-/**
- * While it lives, the renderer's viewport is moved, its size kept, so that its tiled origin is
- * the window's lower left. The delegate renders into the pass's target, whose first pixel is
- * the viewport's; what VTK places at the renderer's origin in the window (a GPU volume's rays
- * and the depth it reads, a chart's context device on VTK 9.6, the viewport a pass of VTK's
- * sets) lands there too. Nothing moves where the renderer is at the origin already, in a tiled
- * frame (the guard band's camera places the part), or where the move would change its size.
- */
-class vtkBloomPassViewportAtOrigin
-{
-public:
-  vtkBloomPassViewportAtOrigin(vtkRenderer* renderer, const vtkBloomPassTile& tile);
-  ~vtkBloomPassViewportAtOrigin();
-  vtkBloomPassViewportAtOrigin(const vtkBloomPassViewportAtOrigin&) = delete;
-  vtkBloomPassViewportAtOrigin& operator=(const vtkBloomPassViewportAtOrigin&) = delete;
-
-private:
-  vtkRenderer* Renderer = nullptr; ///< the renderer moved, or null
-  double Saved[4] = { 0.0, 0.0, 1.0, 1.0 };
-};
-
 #endif
 // VTK-HeaderTest-Exclude: vtkBloomPassTile.h
