@@ -53,8 +53,12 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   vtkBloomPassResources& res = this->Resources;
   if (res.Context && res.Context != window)
   {
-    // Moved to another window: what the pass made in the first is freed in its own context.
-    this->ReleaseInContext();
+    // Moved to another window: what the pass and its delegate made in the first is freed in
+    // the first's context.
+    vtkOpenGLRenderWindow* first = res.Context;
+    first->PushContext();
+    self->ReleaseGraphicsResources(first);
+    first->PopContext();
   }
   res.Context = window;
   self->LastFloatPrecision = precision;

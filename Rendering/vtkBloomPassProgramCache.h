@@ -6,12 +6,10 @@
  *         few settings only.
  *
  * The chain's programs are specialized to its operators (a table's width is a constant, so
- * that its loop unrolls) and the FFT's to its grid, so each setting of the parameters, and in
- * PSF mode each size, has programs of its own. Kept for ever, a user's slider or a window
- * dragged to a hundred sizes would compile and keep hundreds of them (300 MB on llvmpipe for a
- * sweep of the blur's standard deviation over 120 values). The cache counts generations (one
- * per chain, or per FFT grid): EndGeneration() frees the programs that no generation of the
- * last Kept has used, so that going back and forth between a few presets, or the tiles of a
+ * that its loop unrolls), so each setting of the parameters has programs of its own. Kept for
+ * ever, a user's slider would compile and keep a set for every value it passes. The cache counts
+ * generations (one per chain built): EndGeneration() frees the programs that no generation of
+ * the last Kept has used, so that going back and forth between a few presets, or the tiles of a
  * screenshot, compiles nothing again, and a sweep holds the programs of its last few steps.
  */
 
@@ -35,18 +33,6 @@ public:
     Entry& entry = this->Entries[key];
     entry.Generation = this->Generation;
     return entry.Value;
-  }
-
-  /// The program of `key` (marked as used), or null where there is none.
-  Program* Find(const std::string& key)
-  {
-    auto found = this->Entries.find(key);
-    if (found == this->Entries.end())
-    {
-      return nullptr;
-    }
-    found->second.Generation = this->Generation;
-    return &found->second.Value;
   }
 
   void Erase(const std::string& key) { this->Entries.erase(key); }
@@ -80,8 +66,6 @@ public:
     }
     this->Entries.clear();
   }
-
-  size_t Size() const { return this->Entries.size(); }
 
 private:
   struct Entry
