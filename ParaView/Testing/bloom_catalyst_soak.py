@@ -19,6 +19,7 @@ from paraview.simple import Render, TrivialProducer
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from catalyst_scene import bloom_view, frame, show_field  # noqa: E402
+from resident_memory import resident_kib  # noqa: E402
 
 producer = TrivialProducer(registrationName='input')
 view = bloom_view()
@@ -29,14 +30,6 @@ switching = os.environ.get('VTKBLOOM_SOAK_BLOOM') == '1'
 rank = servermanager.vtkProcessModule.GetProcessModule().GetPartitionId()
 path = '%s-%d.txt' % (os.environ.get('VTKBLOOM_SOAK_OUT', 'catalyst-soak'), rank)
 steps = [0]
-
-
-def resident_kib():
-    with open('/proc/self/status') as status:
-        for line in status:
-            if line.startswith('VmRSS:'):
-                return int(line.split()[1])
-    return 0
 
 
 def catalyst_execute(info):

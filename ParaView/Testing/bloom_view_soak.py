@@ -10,21 +10,15 @@ off and on every 5 frames and its preset changed every 20; every 30 frames the v
 its resident memory in KiB after every 10th frame from the first quarter on. run_tests.py
 compares the growth of the bloom's session with the plain one's.
 """
+import os
 import sys
 
 from paraview import servermanager
 from paraview.simple import *  # noqa: F403
 
-sys.path.insert(0, __import__('os').path.dirname(__import__('os').path.abspath(__file__)))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from resident_memory import resident_kib  # noqa: E402
 from spheres_scene import show_spheres  # noqa: E402
-
-
-def resident_kib():
-    with open('/proc/self/status') as status:
-        for line in status:
-            if line.startswith('VmRSS:'):
-                return int(line.split()[1])
-    return 0
 
 
 prefix, frames, use_bloom = sys.argv[1], int(sys.argv[2]), int(sys.argv[3])

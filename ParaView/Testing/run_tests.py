@@ -560,16 +560,18 @@ else:
                                                               mean, float(difference.max())))
 
 # 6c. Long sessions, serial and under MPI: memory flat against the plain view's, rank by rank.
+from resident_memory import growth as memory_growth  # noqa: E402 (this folder is on sys.path)
+
+
 def soak_growth(prefix, ranks):
+    """Each rank's growth from the samples its session wrote, or None where one wrote none."""
     growths = []
     for rank in range(ranks):
         path = '%s-%d.txt' % (prefix, rank)
         if not os.path.exists(path):
             return None
         with open(path) as f:
-            samples = [int(v) for v in f.read().split()]
-        k = max(3, len(samples) // 6)
-        growths.append(min(samples[-k:]) - max(samples[:k]))
+            growths.append(memory_growth([int(v) for v in f.read().split()]))
     return growths
 
 
