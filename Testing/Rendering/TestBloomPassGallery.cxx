@@ -2,8 +2,9 @@
 // SPDX-License-Identifier: BSD-3-Clause
 // The gallery: vtkBloomPass at its defaults on the scenes users build (white, gradient and
 // textured backgrounds, lit and colour-mapped surfaces, text, scalar bars, corner annotations,
-// legends, a slider widget, several viewports, layers, an orientation marker, depth peeling and
-// order-independent translucency, a volume, FXAA, tone mapping, SSAO, hardware picking, a
+// legends, point labels, a slider widget, several viewports, layers, an inset, an orientation
+// marker, depth peeling and order-independent translucency, volumes (composite, maximum
+// intensity, beside a surface), an image slice, FXAA, tone mapping, SSAO, hardware picking, a
 // resize, glyphs, point sprites, wide lines, a shader replacement, multisampling) and, in
 // windows of 8 samples as PyVista and vedo make them, the anti-aliased edges of thin, wide and
 // smoothed lines, a surface's edges, text, cube axes, a grid and a chart's marks. Nothing in
@@ -19,14 +20,18 @@
 //      annotations' opaque pixels unchanged (2 levels) while its glow reaches below them; their
 //      anti-aliased edges let the glow through by no more than their coverage;
 //  (d) on white, the emitter's halo contrasts with the background at least half as much as on
-//      black (an additive glow clipped to white would not show at all).
+//      black (an additive glow clipped to white would not show at all);
+//  (e) in several renderers: each configuration that can move to another window, four times in
+//      a 2 x 2 layout, each quadrant against its own plain frame (RenderingGalleryRenderers, at
+//      the end of the file).
 // The float scene is checked to hold nothing above 1, and the pass to raise no OpenGL error.
 // Each configuration prints one table line, appends it to $VTKBLOOM_GALLERY_CSV when set, and
 // writes `<configuration>.png` (plain | bloom with the emitter) to $VTKBLOOM_GALLERY_PNG_DIR;
 // $VTKBLOOM_GALLERY_DEBUG_DIR receives plain | after and plain | before.
-// The file is long because it is a catalogue: 29 short scene builders for 36 configurations
-// (each builder under 60 lines, read one at a time) and the one test that runs them; the
-// measuring and the support live in Testing/Support/vtkBloomGallery.{h,cxx}.
+// The file is long because it is a catalogue: 31 short scene builders for up to 41
+// configurations (each builder under 60 lines, read one at a time) and the two tests that run
+// over all of them, (a) to (d) in one window and (e) in four; the measuring and the support
+// live in Testing/Support/vtkBloomGallery.{h,cxx}.
 #include "vtkBloomGallery.h"
 
 #include "vtkActor.h"
