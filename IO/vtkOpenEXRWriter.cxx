@@ -15,6 +15,7 @@
 #include "vtkPointData.h"
 #include "vtkUnsignedIntArray.h"
 
+#include <IexErrnoExc.h>
 #include <Imath/half.h>
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
@@ -519,6 +520,18 @@ void vtkOpenEXRWriter::WriteData()
   catch (const std::bad_alloc&)
   {
     fail(vtkErrorCode::UnknownError, "out of memory");
+  }
+  catch (const Iex::EnospcExc& e) // the file system is full
+  {
+    fail(vtkErrorCode::OutOfDiskSpaceError, e.what());
+  }
+  catch (const Iex::EfbigExc& e) // the file is over the process's size limit (RLIMIT_FSIZE)
+  {
+    fail(vtkErrorCode::OutOfDiskSpaceError, e.what());
+  }
+  catch (const Iex::EdquotExc& e) // the user's quota is spent
+  {
+    fail(vtkErrorCode::OutOfDiskSpaceError, e.what());
   }
   catch (const std::exception& e)
   {

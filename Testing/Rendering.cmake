@@ -31,6 +31,7 @@ vtk_module_autoinit(TARGETS TestBloomPassHardCases MODULES VTK::RenderingOpenGL2
 
 # The content-aware chain against the full chain, bit for bit, and the fast mode.
 vtkbloom_add_gtest(TestBloomPassRegion OPENGL
+  FILTER -RenderingBloomPassCompute.OlderContextWithTheExtensions
   SOURCES Rendering/TestBloomPassRegion.cxx
   LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTKBloom::FiltersBloom
     VTK::RenderingOpenGL2 VTK::RenderingCore VTK::CommonDataModel VTK::CommonCore)

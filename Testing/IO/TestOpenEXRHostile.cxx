@@ -21,7 +21,6 @@
 
 #include <sys/resource.h>
 
-#include <chrono>
 #include <map>
 #include <string>
 #include <vector>
@@ -48,16 +47,17 @@ TEST_P(OpenEXRHostile, IsRefusedQuicklyWithBoundedMemory)
   vtkOpenEXRTest::WriteBytes(path, std::string(file.Bytes.begin(), file.Bytes.end()));
   ASSERT_LT(file.Bytes.size(), 64u * 1024u) << "hostile files stay small";
 
-  const auto start = std::chrono::steady_clock::now();
+  const double before = vtkOpenEXRTest::ProcessCPUSeconds();
   const vtkOpenEXRTest::ReadResult result = vtkOpenEXRTest::Read(path);
-  const double seconds =
-    std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double seconds = vtkOpenEXRTest::ProcessCPUSeconds() - before;
 
   EXPECT_EQ(result.Errors, 1) << file.Description;
   EXPECT_NE(result.ErrorCode, vtkErrorCode::NoError) << file.Description;
   EXPECT_TRUE(result.Empty()) << file.Description;
   EXPECT_NE(result.Message.find("Cannot read OpenEXR file"), std::string::npos) << result.Message;
-  EXPECT_LT(seconds, 2.0) << file.Description;
+  // The work, not the clock: a reader that decoded what the header claims would spend far
+  // more CPU time than this, a busy machine or valgrind does not (the reads take milliseconds).
+  EXPECT_LT(seconds, 10.0) << file.Description;
   // The test process itself (VTK, OpenEXR, gtest) stays near 30 MB; a reader that allocated
   // and touched what the header claims would be far above this.
   EXPECT_LT(PeakResidentMegabytes(), 256) << file.Description;

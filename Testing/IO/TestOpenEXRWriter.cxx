@@ -24,6 +24,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -38,8 +39,13 @@
 #include <vector>
 
 #ifndef _WIN32
+#include <grp.h>
+#include <sys/resource.h>
 #include <sys/stat.h>
+#include <sys/wait.h>
 #include <unistd.h>
+
+#include <csignal>
 #endif
 
 namespace
@@ -542,30 +548,124 @@ TEST_F(OpenEXRWriterErrors, NoFileName)
   EXPECT_EQ(writer->GetErrorCode(), vtkErrorCode::NoFileNameError);
 }
 
+#ifndef _WIN32
+// Write `image` to `path` as the unprivileged user "nobody" (65534) where this process is root,
+// for whom directory permissions are not enforced: in a child process that drops its
+// privileges, whose result comes back as its exit status. Otherwise in this process.
+WriteResult WriteAsAnUnprivilegedUser(vtkImageData* image, const std::string& path)
+{
+  if (::geteuid() != 0)
+  {
+    return Write(image, path);
+  }
+  std::fflush(nullptr);
+  const pid_t child = ::fork();
+  if (child == 0)
+  {
+    const bool dropped = ::setgroups(0, nullptr) == 0 && ::setgid(65534) == 0 &&
+      ::setuid(65534) == 0 && ::geteuid() == 65534;
+    if (!dropped)
+    {
+      ::_exit(100);
+    }
+    const WriteResult result = Write(image, path);
+    // Returned (0 or 1), then the number of errors reported (at most 9), then the code's
+    // class: 1 when CannotOpenFileError.
+    ::_exit(result.Returned * 100 + std::min(result.Errors, 9) * 10 +
+      (result.ErrorCode == vtkErrorCode::CannotOpenFileError ? 1 : 0));
+  }
+  int status = 0;
+  WriteResult result;
+  if (child < 0 || ::waitpid(child, &status, 0) != child || !WIFEXITED(status) ||
+    WEXITSTATUS(status) == 100)
+  {
+    ADD_FAILURE() << "no child process could write as the user nobody";
+    result.Returned = -1;
+    return result;
+  }
+  const int code = WEXITSTATUS(status);
+  result.Returned = code / 100;
+  result.Errors = (code / 10) % 10;
+  result.ErrorCode = code % 10 == 1 ? vtkErrorCode::CannotOpenFileError : vtkErrorCode::UnknownError;
+  return result;
+}
+
+// Limits the size of any file this process writes (RLIMIT_FSIZE, which binds root too) for
+// its lifetime; a write past it fails with EFBIG instead of raising SIGXFSZ.
+class FileSizeLimit
+{
+public:
+  explicit FileSizeLimit(rlim_t bytes)
+  {
+    this->Previous = std::signal(SIGXFSZ, SIG_IGN);
+    ::getrlimit(RLIMIT_FSIZE, &this->Saved);
+    struct rlimit limit = this->Saved;
+    limit.rlim_cur = bytes;
+    this->Set = ::setrlimit(RLIMIT_FSIZE, &limit) == 0;
+  }
+  ~FileSizeLimit()
+  {
+    ::setrlimit(RLIMIT_FSIZE, &this->Saved);
+    std::signal(SIGXFSZ, this->Previous);
+  }
+  FileSizeLimit(const FileSizeLimit&) = delete;
+  FileSizeLimit& operator=(const FileSizeLimit&) = delete;
+  bool Set = false;
+
+private:
+  struct rlimit Saved = {};
+  void (*Previous)(int) = SIG_DFL;
+};
+#endif
+
+// A directory the user cannot write to: the write fails before any byte, and the file there
+// is kept. Run as root (every CI leg), it runs as the user nobody.
 TEST_F(OpenEXRWriterErrors, UnwritableDirectory)
 {
 #ifdef _WIN32
   GTEST_SKIP() << "POSIX permissions";
 #else
-  if (::geteuid() == 0)
-  {
-    GTEST_SKIP() << "running as root: directory permissions are not enforced";
-  }
   const std::string directory = vtkBloomTest::OutputPath("read_only");
   fs::create_directories(directory);
   const std::string path = directory + "/kept.exr";
   fs::permissions(directory, fs::perms::owner_all);
   ASSERT_EQ(Write(this->Good, path).Returned, 1);
   const std::string before = vtkOpenEXRTest::FileBytes(path);
-  fs::permissions(directory, fs::perms::owner_read | fs::perms::owner_exec);
+  // Readable and searchable by all, writable by none.
+  fs::permissions(directory,
+    fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
+      fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
   std::mt19937 random(5);
   auto other = MakeFloatImage(1, random);
-  const WriteResult result = Write(other, path);
+  const WriteResult result = WriteAsAnUnprivilegedUser(other, path);
   fs::permissions(directory, fs::perms::owner_all);
   EXPECT_EQ(result.Returned, 0);
   EXPECT_EQ(result.Errors, 1);
+  EXPECT_EQ(result.ErrorCode, vtkErrorCode::CannotOpenFileError);
   EXPECT_EQ(vtkOpenEXRTest::FileBytes(path), before);
   EXPECT_EQ(CountTemporaries(directory), 0);
+#endif
+}
+
+// The disk fills up halfway through the file: the write fails, the file that was there is
+// kept byte for byte, and the partial temporary file is removed. Root cannot bypass the
+// limit, so this runs in every leg.
+TEST_F(OpenEXRWriterErrors, DiskFullHalfwayKeepsTheOldFile)
+{
+#ifdef _WIN32
+  GTEST_SKIP() << "POSIX resource limits";
+#else
+  std::mt19937 random(6);
+  auto other = MakeFloatImage(3, random);
+  WriteResult result;
+  {
+    // Half of what the same image takes: the header and part of the pixels fit.
+    FileSizeLimit limit(static_cast<rlim_t>(this->ExistingBytes.size() / 2));
+    ASSERT_TRUE(limit.Set);
+    result = Write(other, this->Existing, [](vtkOpenEXRWriter* w) { w->SetNumberOfThreads(1); });
+  }
+  this->ExpectCleanFailure(result);
+  EXPECT_EQ(result.ErrorCode, vtkErrorCode::OutOfDiskSpaceError) << result.Message;
 #endif
 }
 

@@ -22,6 +22,10 @@
 #include <string>
 #include <vector>
 
+#ifndef _WIN32
+#include <sys/resource.h>
+#endif
+
 namespace vtkOpenEXRTest
 {
 /// Counts ErrorEvent / WarningEvent and keeps the last error text. Observing the events also
@@ -85,6 +89,21 @@ inline ReadResult Read(
 }
 
 /// The raw bytes of a file ("" if it cannot be read).
+/// The CPU time (user and system, every thread) this process has used so far: the work a read
+/// did, which a busy machine does not stretch as it stretches the clock. 0 where unknown.
+inline double ProcessCPUSeconds()
+{
+#ifndef _WIN32
+  rusage usage{};
+  if (getrusage(RUSAGE_SELF, &usage) == 0)
+  {
+    return static_cast<double>(usage.ru_utime.tv_sec + usage.ru_stime.tv_sec) +
+      1e-6 * static_cast<double>(usage.ru_utime.tv_usec + usage.ru_stime.tv_usec);
+  }
+#endif
+  return 0.0;
+}
+
 inline std::string FileBytes(const std::string& path)
 {
   std::ifstream in(path, std::ios::binary);

@@ -218,4 +218,6 @@ class EXR(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    unittest.main()
+    from unittest_main import main
+
+    sys.exit(main())

@@ -11,6 +11,7 @@ parameters of their own)."""
 import math
 import re
 import os
+import sys
 import unittest
 import xml.etree.ElementTree as ElementTree
 
@@ -122,4 +123,6 @@ class ParaViewXML(unittest.TestCase):
         self.assertGreaterEqual(lists, 2)
 
 if __name__ == "__main__":
-    unittest.main()
+    from unittest_main import main
+
+    sys.exit(main())

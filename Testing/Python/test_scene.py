@@ -8,6 +8,7 @@ plain frame where nothing is light, a glow where an emitter is, and the frame as
 remove_bloom. vedo's own Plotter is tested where vedo is installed."""
 
 import os
+import sys
 import unittest
 
 import numpy as np
@@ -393,4 +394,6 @@ class Vedo(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    unittest.main()
+    from unittest_main import main
+
+    sys.exit(main())

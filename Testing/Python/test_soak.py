@@ -158,4 +158,6 @@ class LongSessions(unittest.TestCase):
 if __name__ == "__main__":
     if sys.platform.startswith("linux") and not os.path.exists("/proc/self/status"):
         sys.exit("test_soak.py reads /proc/self/status")
-    unittest.main()
+    from unittest_main import main
+
+    sys.exit(main())

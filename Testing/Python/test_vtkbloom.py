@@ -7,6 +7,7 @@ the bloom statistics, checked against independent numpy computations."""
 import math
 import os
 import tempfile
+import sys
 import unittest
 
 import numpy as np
@@ -331,4 +332,6 @@ class Statistics(unittest.TestCase):
 
 
 if __name__ == "__main__":
-    unittest.main()
+    from unittest_main import main
+
+    sys.exit(main())

@@ -450,7 +450,7 @@ TEST(RenderingBloomPass, RegressionImages)
     testing->AddArgument("-T");
     testing->AddArgument(vtkBloomTest::OutputDirectory().c_str());
     testing->SetRenderWindow(w.Window);
-    EXPECT_EQ(testing->RegressionTest(15.0), vtkTesting::PASSED) << scene << " vs " << baseline;
+    EXPECT_EQ(testing->RegressionTest(10.0), vtkTesting::PASSED) << scene << " vs " << baseline;
   }
 }
 

@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace
@@ -60,6 +61,11 @@ std::vector<int> Grab(vtkRenderWindow* window)
 
 int LargestDifference(const std::vector<int>& a, const std::vector<int>& b)
 {
+  if (a.empty() || a.size() != b.size())
+  {
+    ADD_FAILURE() << "frames of " << a.size() << " and " << b.size() << " values compared";
+    return std::numeric_limits<int>::max();
+  }
   int largest = 0;
   for (size_t i = 0; i < a.size(); ++i)
   {

@@ -134,6 +134,13 @@ bool SameShape(vtkImageData* a, vtkImageData* b)
   return da[0] == db[0] && da[1] == db[1] && da[2] == db[2] &&
     a->GetNumberOfScalarComponents() == b->GetNumberOfScalarComponents();
 }
+
+// Two images whose colours can be compared: the same shape, not empty, with at least three
+// components. An empty pair would give 0, which passes any bound.
+bool ComparableColours(vtkImageData* a, vtkImageData* b)
+{
+  return SameShape(a, b) && a->GetNumberOfPoints() > 0 && a->GetNumberOfScalarComponents() >= 3;
+}
 }
 
 double RelativeL2(vtkImageData* a, vtkImageData* b)
@@ -158,6 +165,10 @@ double RelativeL2(vtkImageData* a, vtkImageData* b)
 
 double ColourRelativeL2(vtkImageData* a, vtkImageData* b)
 {
+  if (!ComparableColours(a, b))
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
   double num = 0.0, den = 0.0;
   vtkDataArray* sa = a->GetPointData()->GetScalars();
   vtkDataArray* sb = b->GetPointData()->GetScalars();
@@ -175,6 +186,10 @@ double ColourRelativeL2(vtkImageData* a, vtkImageData* b)
 
 double BloomRelativeL2(vtkImageData* base, vtkImageData* a, vtkImageData* b)
 {
+  if (!ComparableColours(base, a) || !ComparableColours(base, b))
+  {
+    return std::numeric_limits<double>::quiet_NaN();
+  }
   double num = 0.0, den = 0.0;
   vtkDataArray* s0 = base->GetPointData()->GetScalars();
   vtkDataArray* sa = a->GetPointData()->GetScalars();

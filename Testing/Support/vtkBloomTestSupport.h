@@ -61,13 +61,15 @@ double RelativeL2(vtkImageData* a, vtkImageData* b);
 
 /**
  * ||a - b||_2 / ||b||_2 over the colour channels (the first three components) of two
- * images of the same size: a rendered or bloomed frame against its reference.
+ * images of the same size: a rendered or bloomed frame against its reference. NaN (which fails
+ * every bound) unless both have the same shape, at least one pixel and three components.
  */
 double ColourRelativeL2(vtkImageData* a, vtkImageData* b);
 
 /**
  * The relative L2 of two bloom terms over the colour channels: ||(a - base) - (b - base)|| /
- * ||b - base||, for a result `a` against a reference result `b` of the same input `base`.
+ * ||b - base||, for a result `a` against a reference result `b` of the same input `base`. NaN
+ * unless all three have the same shape, at least one pixel and three components.
  */
 double BloomRelativeL2(vtkImageData* base, vtkImageData* a, vtkImageData* b);
 

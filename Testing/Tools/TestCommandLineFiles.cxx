@@ -48,10 +48,10 @@ bool SameBits(const Pixels& a, const Pixels& b)
 
 //------------------------------------------------------------------------------
 // Every generated hostile file, through a copy (blur --radius 0) and a bloom: exit status 1
-// with a message, within 10 s and 256 MB of resident memory, and no output file. The deadline
-// catches a hang or a file that makes the reader work without bound; it is not a speed claim
-// (on two cores shared with a ParaView build the slowest took 3.0 s, and a 2 s bound failed).
-// The memory bound is the one that holds the work.
+// with a message, within 10 s of CPU time and 256 MB of resident memory, and no output file.
+// The bounds are on the work the tool does, not on the clock: a hang or a file that makes the
+// reader work without bound exceeds them, a busy machine does not (on two cores shared with a
+// ParaView build the slowest took 3.0 s of wall-clock time, and a 2 s deadline failed).
 TEST(CommandLineFiles, HostileFilesAreRefusedFastWithNothingWritten)
 {
   const std::string directory = FreshDirectory("cli-hostile");
@@ -71,15 +71,15 @@ TEST(CommandLineFiles, HostileFilesAreRefusedFastWithNothingWritten)
       const MeasuredRun run = RunToolMeasured(arguments);
       EXPECT_EQ(run.Status, 1) << command[0] << " " << path << "\n" << run.Errors;
       EXPECT_NE(run.Errors.find("cannot read"), std::string::npos) << path << "\n" << run.Errors;
-      EXPECT_LT(run.Seconds, 10.0) << path;
+      EXPECT_LT(run.CPUSeconds, 10.0) << path;
       EXPECT_LT(run.PeakResidentKilobytes, 256 * 1024) << path;
       EXPECT_FALSE(fs::exists(out)) << path;
-      slowest = std::max(slowest, run.Seconds);
+      slowest = std::max(slowest, run.CPUSeconds);
       largest = std::max(largest, run.PeakResidentKilobytes);
     }
   }
   std::cout << paths.size() << " hostile files x 2 commands: slowest " << slowest
-            << " s, largest resident " << largest / 1024 << " MB\n";
+            << " s of CPU time, largest resident " << largest / 1024 << " MB\n";
 }
 
 //------------------------------------------------------------------------------
