@@ -45,12 +45,14 @@ mode=${1:-all}
 [ "$mode" = --in-sid-root ] || bash "$root/scripts/install-deps.sh"
 
 # Fails unless every group of tests named (the start of a ctest name, after any
-# parameterization prefix, as an extended regular expression) is in the build: a target that
-# the configuration should have made but did not (a module not found, a condition gone wrong)
-# would otherwise pass by not running. ctest itself runs with --no-tests=error.
+# parameterization prefix, as an extended regular expression) is in the build, and every
+# GoogleTest test in Testing/ is too, unless Testing/ci-legs.txt says why this leg lacks it
+# (scripts/lib/check-suites.py): a target that the configuration should have made but did not
+# (a module not found, a condition gone wrong) would otherwise pass by not running. ctest
+# itself runs with --no-tests=error.
 require_tests() {
-  local build=$1 group names missing=()
-  shift
+  local leg=$1 build=$2 group names missing=()
+  shift 2
   names=$(ctest --test-dir "$build" -N | sed -n 's/^ *Test *#[0-9]*: //p')
   for group in "$@"; do
     grep -Eq "(^|/)$group" <<<"$names" || missing+=("$group")
@@ -59,29 +61,56 @@ require_tests() {
     echo "test: $build has no tests ${missing[*]}, which its configuration should have built" >&2
     exit 1
   fi
+  /usr/bin/python3 "$root/scripts/lib/check-suites.py" "$leg" "$build"
 }
+
+# ctest for one leg (LEG BUILD [ARGS...]; LAUNCH=xvfb: under a private Xvfb; LAUNCH=headless:
+# with no DISPLAY and no WAYLAND_DISPLAY), then its JUnit report against the skips that
+# Testing/ci-legs.txt allows the leg (scripts/lib/check-skips.py): a skip nobody listed fails
+# the leg as a failure would.
+# VTKBLOOM_EXPECT_COMPUTE=1: every leg's context (Mesa's llvmpipe: OpenGL 4.5) runs the bloom
+# pass's compute shaders, and a test binary whose context does not fails before its tests.
+run_ctest() {
+  local leg=$1 build=$2 launch=()
+  shift 2
+  case ${LAUNCH:-} in
+    xvfb) launch=(bash "$root/scripts/lib/with-xvfb.sh") ;;
+    headless) launch=(env -u DISPLAY -u WAYLAND_DISPLAY) ;;
+  esac
+  local report
+  report="$(cd "$build" && pwd)/Testing/junit-$leg.xml" # ctest reads a relative path from BUILD
+  rm -f "$report"
+  VTKBLOOM_EXPECT_COMPUTE=1 "${launch[@]}" ctest --test-dir "$build" --output-on-failure \
+    --no-tests=error -j"$(nproc)" --output-junit "$report" "$@"
+  /usr/bin/python3 "$root/scripts/lib/check-skips.py" "$leg" "$report"
+}
+
 # The groups every rendering build has (VTK with FreeType, annotations and widgets: Debian's,
 # sid's and the cached OSMesa and EGL prefixes alike).
 rendering_tests=('RenderingBloomPass[.]' 'RenderingBloomPassLight[.]' 'RenderingGallery[.]'
   'RenderingBloomPassTiles[.]' 'RenderingBloomPassMotion[.]' 'CommandLine[.]'
   'RenderingBloomPassCompute[.]InAnOpenGL33Context' 'RenderingBloomPassSoak[.]'
   'Rendering/RenderingGalleryRenderers[.]')
+# The CPU suites every build has: the filters, the numerics, OpenEXR, the tool.
+cpu_tests=('Filters' 'Numerics' 'Performance' 'OpenEXR' 'CommandLineFiles[.]' 'PresetExample[.]')
 # And where the package is wrapped for Python (not in the sanitizer build, not in the cached
 # prefixes' builds, whose VTK has no Python).
 python_tests=('Python[.]vtkbloom' 'Python[.]arrays' 'Python[.]scene' 'Python[.]ParaViewXML'
   'Python[.]Recipe[.]' 'Python[.]ClientExamples[.]vedo' 'Docs[.]NamedPathsExist' 'Python[.]soak')
 
 run_x11() {
-  local build=$1
+  local build=$1 leg=x11
   shift
   bash "$root/scripts/configure.sh" "$build" "$@"
-  local required=("${rendering_tests[@]}")
-  grep -q '^VTKBLOOM_ENABLE_SANITIZERS:BOOL=ON' "$build/CMakeCache.txt" ||
+  local required=("${rendering_tests[@]}" "${cpu_tests[@]}")
+  if grep -q '^VTKBLOOM_ENABLE_SANITIZERS:BOOL=ON' "$build/CMakeCache.txt"; then
+    leg=asan
+  else
     required+=("${python_tests[@]}")
-  require_tests "$build" "${required[@]}"
+  fi
+  require_tests "$leg" "$build" "${required[@]}"
   echo "test: running the suite against the system VTK (X11, private Xvfb)"
-  bash "$root/scripts/lib/with-xvfb.sh" ctest --test-dir "$build" --output-on-failure \
-    --no-tests=error -j"$(nproc)"
+  LAUNCH=xvfb run_ctest "$leg" "$build"
 }
 
 # The headless legs: the suite against Debian's VTK built for osmesa or egl (no X at all).
@@ -92,10 +121,9 @@ run_headless() {
   bash "$root/scripts/configure.sh" "$root/build-$backend" -DCMAKE_BUILD_TYPE=Release \
     -DVTKBLOOM_WARNINGS_AS_ERRORS=ON -DVTKBLOOM_WRAP_PYTHON=OFF \
     -DVTK_DIR="$prefix/lib/cmake/vtk-9.1"
-  require_tests "$root/build-$backend" "${rendering_tests[@]}"
+  require_tests "$backend" "$root/build-$backend" "${rendering_tests[@]}" "${cpu_tests[@]}"
   echo "test: running the suite against the ${backend^^} VTK (no DISPLAY, no X server)"
-  env -u DISPLAY -u WAYLAND_DISPLAY ctest --test-dir "$root/build-$backend" --output-on-failure \
-    --no-tests=error -j"$(nproc)"
+  LAUNCH=headless run_ctest "$backend" "$root/build-$backend"
 }
 
 # The ParaView plugin against Debian's ParaView 5.11 (its VTK 9.2): build it, then run its
@@ -117,15 +145,13 @@ run_in_sid_root() {
   bash "$root/scripts/configure.sh" "$root/build-sid" -DCMAKE_BUILD_TYPE=Release \
     -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
   # sid has PyVista 0.49 and vedo 2026: their tests and recipes are built there.
-  require_tests "$root/build-sid" "${rendering_tests[@]}" "${python_tests[@]}" \
+  require_tests sid "$root/build-sid" "${rendering_tests[@]}" "${cpu_tests[@]}" "${python_tests[@]}" \
     'Python[.]pyvista' 'Python[.]Recipe[.]pyvista' 'Python[.]Recipe[.]vedo' \
     'Python[.]ClientExamples[.]pyvista'
   echo "test: running the suite against VTK 9.6 (no DISPLAY: VTK chooses EGL)"
-  env -u DISPLAY -u WAYLAND_DISPLAY ctest --test-dir "$root/build-sid" --output-on-failure \
-    --no-tests=error -j"$(nproc)"
+  LAUNCH=headless run_ctest sid "$root/build-sid"
   echo "test: the tests that open a window, again against VTK 9.6 through X (private Xvfb)"
-  bash "$root/scripts/lib/with-xvfb.sh" ctest --test-dir "$root/build-sid" --output-on-failure \
-    --no-tests=error -j"$(nproc)" -R '^(Rendering|CommandLineData[.]View)'
+  LAUNCH=xvfb run_ctest sid-x "$root/build-sid" -R '^(Rendering|CommandLineData[.]View)'
   bash "$root/scripts/build-paraview-plugin.sh" "$root/build-paraview-sid"
   echo "test: running the ParaView 6.1 plugin's tests (pvbatch, 1 to 4 MPI ranks)"
   VTKBLOOM_PARAVIEW_BUILD="$root/build-paraview-sid" /usr/bin/python3 \

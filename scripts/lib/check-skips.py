@@ -5,8 +5,8 @@
 
     check-skips.py LEG JUNIT.xml
 
-JUNIT.xml is ctest's report (ctest --output-junit). Testing/expected-skips.txt lists, for each
-leg, the tests it may skip and why. The leg fails when a test skipped that its list does not
+JUNIT.xml is ctest's report (ctest --output-junit). Testing/ci-legs.txt lists, for each leg,
+the tests it may skip and why ('skip' lines). The leg fails when a test skipped that its list does not
 name (a compute test that found no compute shaders, a suite whose data went missing), or when
 the report holds no test at all. A listed test that ran is reported, not failed: the list says
 what a leg may lack, and a machine may have more. It prints the leg's counts: tests run,
@@ -17,23 +17,8 @@ import sys
 import xml.etree.ElementTree as ElementTree
 from pathlib import Path
 
-LIST = Path(__file__).resolve().parents[2] / "Testing" / "expected-skips.txt"
-
-
-def expected(leg):
-    """The (pattern, reason) pairs that apply to LEG: lines 'LEGS  TEST-REGEX  -- REASON'."""
-    allowed = []
-    for number, line in enumerate(LIST.read_text().splitlines(), 1):
-        line = line.strip()
-        if not line or line.startswith("#"):
-            continue
-        match = re.fullmatch(r"(\S+)\s+(\S+)\s+--\s+(.+)", line)
-        if not match:
-            sys.exit("check-skips: %s:%d: expected 'LEGS TEST-REGEX -- REASON'" % (LIST, number))
-        legs, pattern, reason = match.groups()
-        if leg in legs.split(",") or legs == "*":
-            allowed.append((re.compile(pattern), reason))
-    return allowed
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from ci_legs import LIST, allowed  # noqa: E402
 
 
 def outcomes(report):
@@ -52,11 +37,17 @@ def outcomes(report):
 
 
 def said(output):
-    """The reason a test gave for skipping (GoogleTest's or vtkbloom_testing's line), if any."""
-    for line in output.splitlines():
-        match = re.search(r"(?:Skipped|SKIPPED)\W*(.*\S)", line)
-        if match and "[  SKIPPED ] 1 test" not in line:
-            return match.group(1)[:160]
+    """The reason a test gave for skipping, if any: the line after GoogleTest's "FILE:LINE:
+    Skipped", or unittest_main.py's "SKIPPED ID: REASON"."""
+    lines = output.splitlines()
+    for number, line in enumerate(lines):
+        if line.rstrip().endswith(": Skipped"):
+            following = [text.strip() for text in lines[number + 1:number + 3] if text.strip()]
+            if following and not following[0].startswith("["):
+                return following[0][:160]
+        match = re.match(r"SKIPPED (\S+): (.+)", line)
+        if match:
+            return match.group(2)[:160]
     return ""
 
 
@@ -64,7 +55,7 @@ def main():
     if len(sys.argv) != 3:
         sys.exit(__doc__.split("\n\n")[1])
     leg, report = sys.argv[1], sys.argv[2]
-    allowed = expected(leg)
+    permitted = allowed(leg, "skip")
     found = outcomes(report)
     counts = {kind: sum(1 for _, outcome, _ in found if outcome == kind) for kind in ("run", "skipped", "failed")}
     print("tests (%s): %d run, %d skipped, %d failed" % (leg, counts["run"], counts["skipped"], counts["failed"]))
@@ -72,13 +63,13 @@ def main():
     for name, outcome, output in found:
         if outcome != "skipped":
             continue
-        reasons = [reason for pattern, reason in allowed if pattern.fullmatch(name)]
+        reasons = [reason for pattern, reason in permitted if pattern.fullmatch(name)]
         if reasons:
             print("  skipped, as listed: %s (%s)" % (name, reasons[0]))
         else:
             unlisted.append(name)
             print("  SKIPPED, NOT LISTED: %s (%s)" % (name, said(output) or "no reason printed"))
-    for pattern, reason in allowed:
+    for pattern, reason in permitted:
         if not any(pattern.fullmatch(name) and outcome == "skipped" for name, outcome, _ in found):
             print("  listed, and ran here: %s (%s)" % (pattern.pattern, reason))
     if not found:

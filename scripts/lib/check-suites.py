@@ -1,0 +1,58 @@
+#!/usr/bin/env python3
+# SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
+# SPDX-License-Identifier: BSD-3-Clause
+"""Every GoogleTest test in Testing/ is in a leg's build, unless the leg's list says why not.
+
+    check-suites.py LEG BUILD
+
+Reads each TEST, TEST_F and TEST_P in Testing/**/*.cxx and fails when ctest -N in BUILD has
+no test of that suite and name (after any INSTANTIATE_TEST_SUITE_P prefix, before any
+parameter): a suite dropped by a CMake condition, a test compiled out, a file no longer
+built. Testing/ci-legs.txt names, per leg, what may be absent and why ('absent' lines)."""
+
+import re
+import subprocess
+import sys
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from ci_legs import allowed  # noqa: E402
+
+DEFINITION = re.compile(r"^\s*TEST(?:_F|_P)?\(\s*(\w+)\s*,\s*(\w+)\s*\)", re.MULTILINE)
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit(__doc__.split("\n\n")[1])
+    leg, build = sys.argv[1], sys.argv[2]
+    listing = subprocess.run(["ctest", "--test-dir", build, "-N"], capture_output=True, text=True,
+                             check=True).stdout
+    names = set()
+    for line in listing.splitlines():
+        match = re.match(r"\s*Test\s+#\d+: (\S+)", line)
+        if match:
+            name = match.group(1)
+            if "/" in name and "." not in name.split("/")[0]:
+                name = name.split("/", 1)[1]  # an INSTANTIATE_TEST_SUITE_P prefix
+            names.add(name.split("/")[0])  # and its parameter
+    absent = allowed(leg, "absent")
+    missing = []
+    defined = 0
+    for source in sorted((ROOT / "Testing").rglob("*.cxx")):
+        for suite, name in DEFINITION.findall(source.read_text(errors="replace")):
+            defined += 1
+            test = "%s.%s" % (suite, name)
+            if test in names or any(pattern.fullmatch(test) for pattern, _ in absent):
+                continue
+            missing.append("%s (%s)" % (test, source.relative_to(ROOT)))
+    print("suites (%s): %d tests defined in Testing/, %d missing from %s" % (leg, defined, len(missing), build))
+    if missing:
+        print("check-suites: %s: tests that this leg's build should have and does not:\n  %s"
+              % (leg, "\n  ".join(missing)), file=sys.stderr)
+        return 1
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
