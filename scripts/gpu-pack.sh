@@ -21,7 +21,8 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 dest=${1:-$root/.gpupack}
 build=$root/build-egl
 bins=(TestBloomPass TestBloomPassHardCases TestBloomPassRegion TestBloomPassMotion
-  TestBloomPassSoak TestBloomPassGallery BloomPassFrameTime ShaderStageThroughput vtk-bloom)
+  TestBloomPassSoak TestBloomPassGallery TestBloomPassLight TestBloomPassTiles
+  BloomPassFrameTime ShaderStageThroughput vtk-bloom)
 log() { echo "gpu-pack: $*" >&2; }
 
 prefix=$(bash "$root/scripts/build-egl-vtk.sh" | tail -n 1)

@@ -31,6 +31,13 @@ for suite in TestOpenEXRDamaged TestOpenEXRHostile TestOpenEXRCrafted; do
     tail -n 30 "$work/logs/$suite.out" >&2
     exit 1
   fi
+  # Every test ran: a skip here (missing data, say) would leave memcheck nothing to check.
+  if grep -q '^\[  SKIPPED \]' "$work/logs/$suite.out" ||
+    ! grep -q '^\[  PASSED  \] [1-9]' "$work/logs/$suite.out"; then
+    echo "valgrind: $suite skipped tests or ran none:" >&2
+    grep -E '^\[  (SKIPPED|PASSED) ' "$work/logs/$suite.out" >&2 || true
+    exit 1
+  fi
 done
 
 # The files: the crafted ones (committed, and regenerated with this OpenEXR) and the sound
