@@ -38,6 +38,13 @@ if (VTKBLOOM_ENABLE_RENDERING)
       COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_pyvista.py" -v)
     set_tests_properties(Python.pyvista PROPERTIES
       ENVIRONMENT "${vtkbloom_python_env}" SKIP_RETURN_CODE 77 TIMEOUT 120)
+    # PyVista's plugin points (plotter.bloom, image.bloom, pyvista.read), found through the
+    # build tree's dist-info, and the plugin's docstring examples.
+    add_test(NAME Python.pyvista.plugin
+      COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/test_pyvista_plugin.py" -v)
+    set_tests_properties(Python.pyvista.plugin PROPERTIES
+      ENVIRONMENT "${vtkbloom_python_env};VTKBLOOM_SHARED_DATA_DIR=${VTKBLOOM_SHARED_DATA_DIR}"
+      SKIP_RETURN_CODE 77 TIMEOUT 300)
   endif ()
   # Long sessions: add_bloom/remove_bloom, emitters and bloom() in loops hold memory flat.
   add_test(NAME Python.soak

@@ -146,7 +146,7 @@ run_in_sid_root() {
     -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
   # sid has PyVista 0.49 and vedo 2026: their tests and recipes are built there.
   require_tests sid "$root/build-sid" "${rendering_tests[@]}" "${cpu_tests[@]}" "${python_tests[@]}" \
-    'Python[.]pyvista' 'Python[.]Recipe[.]pyvista' 'Python[.]Recipe[.]vedo' \
+    'Python[.]pyvista' 'Python[.]pyvista[.]plugin' 'Python[.]Recipe[.]pyvista' 'Python[.]Recipe[.]vedo' \
     'Python[.]ClientExamples[.]pyvista'
   echo "test: running the suite against VTK 9.6 (no DISPLAY: VTK chooses EGL)"
   LAUNCH=headless run_ctest sid "$root/build-sid"

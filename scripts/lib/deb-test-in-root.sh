@@ -45,6 +45,27 @@ print("bloom: light spread to its neighbours,", glow[24, 28])
 vtkbloom.write_exr("in.exr", frame, pixel_type="float")
 EOF
 
+check "python3: the distribution's metadata and PyVista's entry points, harmless without PyVista"
+python3 - <<'EOF'
+import sys
+from importlib.metadata import entry_points, version
+
+import vtkbloom
+
+assert version("vtkbloom") == vtkbloom.__version__, (version("vtkbloom"), vtkbloom.__version__)
+found = {(e.group, e.name, e.value) for g in ("pyvista.plotter_components", "pyvista.accessors",
+                                               "pyvista.readers") for e in entry_points(group=g)}
+assert ("pyvista.readers", "exr", "vtkbloom.pyvista_plugin:read") in found, found
+assert "vtkbloom.pyvista_plugin" not in sys.modules  # only PyVista imports it
+print("entry points:", sorted(found))
+EOF
+if apt-cache show python3-pyvista >/dev/null 2>&1; then
+  check "PyVista finds plotter.bloom and pyvista.read('x.exr') with no import of vtkbloom"
+  apt_install python3-pyvista
+  python3 -c "import numpy as np, vtkbloom; vtkbloom.write_exr('x.exr', np.full((4, 6, 3), 2.0, np.float32))"
+  python3 -c "import sys, pyvista as pv; assert 'vtkbloom' not in sys.modules; pl = pv.Plotter(off_screen=True); pl.bloom.enable(); print(pl.bloom.passes, pv.read('x.exr'))"
+fi
+
 check "vtk-bloom image in.exr out.exr"
 vtk-bloom image --preset webgpu-market in.exr out.exr
 python3 -c "
