@@ -126,10 +126,18 @@ if (VTKBLOOM_ENABLE_RENDERING)
         pyplot/custom_axes2.py basic/legendbox.py basic/colorlines.py basic/delaunay2d.py
         basic/color_mesh_cells1.py volumetric/volume_sharemap.py)
     endif ()
+    # An open defect, bounded so that it cannot grow unseen: one pixel of PyVista's
+    # hidden-line example (two viewports, wireframes 3 pixels wide; no light) is 6 levels off
+    # on VTK 9.6 (docs/python.md, "Not yet").
+    set(known)
+    if (client STREQUAL "pyvista")
+      set(known --known-dark-off
+        pyvista.plotting.plotter.BasePlotter.enable_hidden_line_removal=6)
+    endif ()
     add_test(NAME Python.ClientExamples.${client}
       COMMAND "${Python3_EXECUTABLE}" "${CMAKE_CURRENT_SOURCE_DIR}/Python/client_examples.py"
         --client ${client} --check --out "${vtkbloom_python_out}/client-examples-${client}"
-        --only ${examples})
+        ${known} --only ${examples})
     set_tests_properties(Python.ClientExamples.${client} PROPERTIES
       ENVIRONMENT "${vtkbloom_python_env}" TIMEOUT 900)
   endforeach ()

@@ -469,6 +469,17 @@ class Child:
         }
 
 
+def known_dark_off(pairs):
+    """--known-dark-off NAME=LEVELS ...: {name: levels}."""
+    known = {}
+    for pair in pairs:
+        name, _, levels = pair.rpartition("=")
+        if not name or not levels.isdigit():
+            raise SystemExit("client_examples: --known-dark-off %r: expected NAME=LEVELS" % pair)
+        known[name] = int(levels)
+    return known
+
+
 def raised_in_vtkbloom(error):
     """Whether the exception came from vtkbloom's own code (a frame of its package in the
     traceback): ours to fix, whatever the example does without bloom."""
@@ -836,9 +847,14 @@ def summarize(report):
     # without depth peeling: docs/rendering.md), the frame is the pass's, not the window's own:
     # listed, and not held to the 1-level target. Every other dark frame is.
     warned = [e for e in dark_off if any(TRANSLUCENT_WARNING in w for w in e["verdict"].get("pass_warnings", []))]
-    dark_off = [e for e in dark_off if e not in warned]
+    # Open defects named on the command line, each with the bound it must stay within.
+    known = report.get("known_dark_off", {})
+    bounded = [e for e in dark_off if e not in warned and e["verdict"].get("max_diff", 255) <= known.get(e["name"], -1)]
+    dark_off = [e for e in dark_off if e not in warned and e not in bounded]
     groups["dark_off"] = dark_off
-    groups["dark_off_warned"] = warned
+    groups["dark_off_warned"] = warned + bounded
+    run_names = {e["name"] for e in run}
+    groups["known_not_run"] = sorted(name for name in known if name not in run_names)
     groups["unstable"] = [e for e in groups["deterministic"] if not e["verdict"].get("bloom_stable")]
     # VTK's errors (not its warnings) that appear only with bloom.
     groups["vtk_errors"] = [e for e in run if any(VTK_ERROR_LINE.search(line) for line in e["verdict"]["vtk_bloom_only"])]
@@ -863,12 +879,13 @@ def summarize(report):
         "differ_with_light": sum(1 for e in groups["differ"] if e["verdict"].get("light")),
         "without_light": len(dark),
         "without_light_off_by_more_than_1_level": len(dark_off),
-        "without_light_off_where_the_pass_warned": len(warned),
+        "without_light_off_where_the_pass_warned": len(groups["dark_off_warned"]),
         "bloom_unstable": len(groups["unstable"]),
         "vtk_error_lines_with_bloom_only": len(groups["vtk_errors"]),
         # Every target the summary prints is enforced.
         "target_met": (share >= TARGET and not groups["bloom_failures"] and not groups["gl"]
-                       and not dark_off and not groups["unstable"] and not groups["vtk_errors"]),
+                       and not dark_off and not groups["unstable"] and not groups["vtk_errors"]
+                       and not groups["known_not_run"]),
     }
     return before, at_run, groups
 
@@ -919,8 +936,8 @@ def markdown(report, out):
         "| deterministic, with no light in any frame | %d |" % f["without_light"],
         "| ... **of which any pixel is more than 1 level off** (target: none) | **%d** |"
         % f["without_light_off_by_more_than_1_level"],
-        "| ... and more than 1 level off where the pass warned of translucency without depth peeling (below) | %d |"
-        % f["without_light_off_where_the_pass_warned"],
+        "| ... and more than 1 level off where the pass warned of translucency without depth peeling, or "
+        "an open defect named with its bound (below) | %d |" % f["without_light_off_where_the_pass_warned"],
         "",
         "## Skipped, and why",
         "",
@@ -972,10 +989,13 @@ def markdown(report, out):
               "\n".join("- `%s`: %d levels, %.3f %% of the pixels > %d" % (
                   e["name"], e["verdict"]["max_diff"], 100 * e["verdict"]["changed_fraction"], LEVELS)
                   for e in groups["dark_off"]) or "None."]
-    lines += ["", "## No light, more than 1 level off, where the pass warned (translucency without depth peeling)", "",
+    lines += ["", "## No light, more than 1 level off, where the pass warned (translucency without depth peeling) "
+              "or an open defect is named with its bound (--known-dark-off)", "",
               "\n".join("- `%s`: %d levels, %.3f %% of the pixels > %d" % (
                   e["name"], e["verdict"]["max_diff"], 100 * e["verdict"]["changed_fraction"], LEVELS)
                   for e in groups["dark_off_warned"]) or "None."]
+    if groups["known_not_run"]:
+        lines += ["", "**Named with --known-dark-off and not run** (the check fails): %s" % names(groups["known_not_run"], 1000)]
     lines += ["", "## Not the same frame twice without bloom", "", names(groups["nondeterministic"], 1000) or "None."]
     lines += ["", "## Ran, but reached no show()", "", names(groups["no_frame"], 1000) or "None."]
     return "\n".join(lines) + "\n"
@@ -1061,6 +1081,7 @@ def parent(args):
         "date": datetime.datetime.now().isoformat(timespec="seconds"),
         "seconds": time.time() - started,
         "population": [{"name": e["name"], "skip": e["skip"]} for e in population],
+        "known_dark_off": known_dark_off(args.known_dark_off),
         "examples": [{k: v for k, v in e.items() if k not in ("source", "skip")} for e in chosen],
     }
     if build_info().get("extensions") != built.get("extensions"):
@@ -1091,6 +1112,9 @@ def main():
     parser.add_argument("--seed", type=int, default=48, help="the sample's and the examples' seed")
     parser.add_argument("--out", help="output folder (default ./client-examples/CLIENT-VERSION)")
     parser.add_argument("--examples", help="vedo's examples folder (default %s)" % VEDO_EXAMPLES)
+    parser.add_argument("--known-dark-off", nargs="+", default=[], metavar="NAME=LEVELS",
+                        help="an open defect, bounded: the example NAME's frames without light may be "
+                             "up to LEVELS off (listed apart; more fails, and so does a NAME that is not run)")
     parser.add_argument("--only", nargs="+",
                         help="run the examples named (a whole name), or whose names contain one of these")
     parser.add_argument("--timeout", type=int, default=60, help="seconds per example and run (60)")
