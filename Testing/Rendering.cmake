@@ -72,7 +72,7 @@ vtk_module_autoinit(TARGETS TestBloomPassTiles MODULES VTK::RenderingOpenGL2)
 
 # Long sessions: the bloom, its emitters, presets, PSF mode, tiles, several windows and the
 # context switched for hundreds of frames hold their memory flat against the plain renderer.
-vtkbloom_add_gtest(TestBloomPassSoak OPENGL SERIAL_UNDER_SANITIZERS
+vtkbloom_add_gtest(TestBloomPassSoak OPENGL
   SOURCES Rendering/TestBloomPassSoak.cxx
   LIBRARIES VTKBloom::RenderingBloom VTKBloom::FiltersBloom VTK::RenderingOpenGL2
     VTK::RenderingCore VTK::FiltersCore VTK::FiltersSources VTK::CommonDataModel VTK::CommonCore)

@@ -315,9 +315,11 @@ void ExpectFlat(const char* what, int renderers, int width, int height,
     bloom.Host / 1024.0, plain.Device / 1024.0, bloom.Device / 1024.0, bound / 1024.0);
   std::cout << line << std::endl;
 #ifdef __SANITIZE_ADDRESS__
-  // AddressSanitizer's quarantine (capped at 32 MB for the OpenGL tests) shows as resident
-  // memory; a leak is a hundred sets.
-  const double slack = 32.0 * 1024.0;
+  // AddressSanitizer's quarantine (capped at 32 MB for the OpenGL tests) and its allocator's
+  // own caches show as resident memory: over a soak they moved it by -72 to +94 MiB (CI, two
+  // cores), run alone or beside other tests. A leak is a hundred sets (over 1 GiB here), so
+  // the bound keeps 128 MiB of slack and still catches it; the release build has none.
+  const double slack = 128.0 * 1024.0;
 #else
   const double slack = 0.0;
 #endif
