@@ -586,7 +586,8 @@ WriteResult WriteAsAnUnprivilegedUser(vtkImageData* image, const std::string& pa
   const int code = WEXITSTATUS(status);
   result.Returned = code / 100;
   result.Errors = (code / 10) % 10;
-  result.ErrorCode = code % 10 == 1 ? vtkErrorCode::CannotOpenFileError : vtkErrorCode::UnknownError;
+  result.ErrorCode =
+    code % 10 == 1 ? vtkErrorCode::CannotOpenFileError : vtkErrorCode::UnknownError;
   return result;
 }
 
@@ -633,8 +634,8 @@ TEST_F(OpenEXRWriterErrors, UnwritableDirectory)
   const std::string before = vtkOpenEXRTest::FileBytes(path);
   // Readable and searchable by all, writable by none.
   fs::permissions(directory,
-    fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read |
-      fs::perms::group_exec | fs::perms::others_read | fs::perms::others_exec);
+    fs::perms::owner_read | fs::perms::owner_exec | fs::perms::group_read | fs::perms::group_exec |
+      fs::perms::others_read | fs::perms::others_exec);
   std::mt19937 random(5);
   auto other = MakeFloatImage(1, random);
   const WriteResult result = WriteAsAnUnprivilegedUser(other, path);

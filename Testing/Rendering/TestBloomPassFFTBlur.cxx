@@ -6,9 +6,9 @@
 // vtkImageBloom's REFERENCE chain at odd and even sizes, with bright spots on the borders; the
 // profile names the FFT passes; AUTOMATIC picks the FFT for ping-pong and the direct passes
 // for the default preset; without compute shaders the direct passes run.
+#include "vtkBloomOpenGLEnvironment.h"
 #include "vtkBloomParameters.h"
 #include "vtkBloomPass.h"
-#include "vtkBloomOpenGLEnvironment.h"
 #include "vtkBloomPassTestWindow.h"
 #include "vtkBloomTestSupport.h"
 
