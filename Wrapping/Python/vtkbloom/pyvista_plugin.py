@@ -259,9 +259,9 @@ class ImageBloom:
             raise ValueError("image.bloom.%s(): expected a 2-D image whose active scalars have 3 or 4 "
                              "components, not %s points of %s" % (function, dimensions, None if scalars is None
                                                                  else scalars.shape[1:] or "1"))
-        # VTK's row 0 is the bottom; the numpy functions take row 0 at the top.
+        # VTK's row 0 is the bottom; the numpy functions take row 0 at the top, in float.
         frame = scalars.reshape(dimensions[1], dimensions[0], scalars.shape[1])[::-1]
-        return image, frame
+        return image, frame if frame.dtype.kind == "f" else frame.astype("float32")
 
     def _image_like(self, image, frame, name):
         out = pyvista.ImageData(dimensions=image.dimensions, spacing=image.spacing, origin=image.origin)
@@ -293,8 +293,7 @@ class ImageBloom:
         True
         """
         image, frame = self._frame("apply")
-        glow = arrays.bloom(frame.astype(frame.dtype if frame.dtype.kind == "f" else "float32"),
-                            preset=preset, **parameters)
+        glow = arrays.bloom(frame, preset=preset, **parameters)
         return self._image_like(image, glow, image.active_scalars_name)
 
     def blur(self, sigma, **parameters):
@@ -309,9 +308,7 @@ class ImageBloom:
         True
         """
         image, frame = self._frame("blur")
-        return self._image_like(image, arrays.blur(frame.astype("float32") if frame.dtype.kind != "f"
-                                                   else frame, sigma, **parameters),
-                                image.active_scalars_name)
+        return self._image_like(image, arrays.blur(frame, sigma, **parameters), image.active_scalars_name)
 
     def statistics(self, preset=None, **parameters):
         """The bloom filter's statistics of this image, as a dict (energy in and out, bright
@@ -326,8 +323,7 @@ class ImageBloom:
         0
         """
         _, frame = self._frame("statistics")
-        return arrays.bloom(frame.astype("float32") if frame.dtype.kind != "f" else frame,
-                            preset=preset, statistics=True, **parameters)[1]
+        return arrays.bloom(frame, preset=preset, statistics=True, **parameters)[1]
 
 
 def read(path, **kwargs):
