@@ -261,7 +261,7 @@ bool ProfilePasses(
       t, 1e-6 * b, t > 0.0 ? 1e-6 * b / t : 0.0);
     total += t;
     bytes += b;
-    if (name != "scene" && name != "emitters")
+    if (name != "scene" && name != "emitters" && name != "depth" && name != "fxaa")
     {
       chain += t;
       chainBytes += b;
@@ -834,6 +834,10 @@ bool SelectiveTable(const std::string& scene, int width, int height, int frames)
       for (int i = 0; i < pass->GetNumberOfProfiledPasses(); ++i)
       {
         const std::string name = pass->GetProfiledPassName(i);
+        if (name == "depth" || name == "fxaa")
+        {
+          continue; // after the chain, outside this table's three spans
+        }
         sum[name == "scene"      ? 0
             : name == "emitters" ? 1
                                  : 2] += pass->GetProfiledPassMilliseconds(i);

@@ -218,6 +218,12 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
   s2.SetFrameBuffer(fbo);
   fbo->Bind();
   fbo->ActivateDrawBuffer(0);
+  // The scene's render writes the called framebuffer's depth where it can: nothing to copy.
+  if (content != EMITTERS)
+  {
+    this->DepthShared =
+      this->ShareDepth && this->Depth.Share(this->CalledFramebuffer, fbo->GetFBOIndex());
+  }
   state->vtkglViewport(0, 0, target.Size[0], target.Size[1]);
   state->vtkglScissor(0, 0, target.Size[0], target.Size[1]);
 
@@ -269,9 +275,10 @@ void vtkBloomPass::vtkInternals::RenderDelegate(vtkBloomPass* self, const vtkRen
     self->DelegatePass->Render(&s2);
   }
   self->PostRender(&attached);
+  this->Depth.EndShare();
   if (this->Resources.Samples)
   {
-    multisample.Resolve(this->Resources.Context, target);
+    multisample.Resolve(this->Resources.Context, target, content == EMITTERS || !this->DepthShared);
   }
   if (content != EMITTERS)
   {
@@ -395,6 +402,9 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   const vtkBloomPassSavedState saved(state);
   vtkInternals& in = *this->Internals;
   vtkBloomPassResources& res = in.Resources;
+  GLint called = 0;
+  glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &called);
+  in.CalledFramebuffer = static_cast<unsigned int>(called);
   // Multisampling is kept: where the framebuffer the pass was called with has samples, the
   // scene renders with as many.
   GLint samples = 0;
@@ -422,6 +432,9 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     return;
   }
   in.PlanWhatBlooms(this, s, selective);
+  // The called framebuffer's depth buffer, shared with the scene's render, must cover the
+  // same pixels; the emitters' second render needs the scene's depth as the pass's own texture.
+  in.ShareDepth = x == 0 && y == 0 && !(selective && !inScene);
   if (this->CaptureResult)
   {
     res.Result.Allocate(window, w, h, GL_RGBA32F);
@@ -431,10 +444,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   state->PushFramebufferBindings();
   // The delegate writes the float colour and a 32-bit depth once (the profile's lower bound).
   const double sceneBytes = (res.Format == GL_RGBA32F ? 20.0 : 12.0) * w * h;
-  if (this->ProfilePasses)
-  {
-    in.Runner.BeginProfiledSpan();
-  }
+  in.BeginSpan(this);
   in.RenderDelegate(this, s, res.Scene, props, count,
     inScene ? vtkInternals::SCENE_AND_EMISSION : vtkInternals::SCENE);
   if (res.BackgroundMode == vtkBloomPassResources::BACKGROUND_TEXTURE)
@@ -442,23 +452,14 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     vtkBloomPassBackground::Draw(res, r, x, y, w, h);
   }
   this->SceneRendered(s, res.Scene.Color);
-  if (this->ProfilePasses)
-  {
-    in.Runner.EndProfiledSpan("scene", w, h, sceneBytes);
-  }
+  in.EndSpan(this, "scene", w, h, sceneBytes);
   if (selective && !inScene)
   {
     std::vector<vtkProp*>& emitters = in.Emission.SecondRender;
-    if (this->ProfilePasses)
-    {
-      in.Runner.BeginProfiledSpan();
-    }
+    in.BeginSpan(this);
     in.RenderDelegate(this, s, res.Emitter, emitters.data(), static_cast<int>(emitters.size()),
       vtkInternals::EMITTERS);
-    if (this->ProfilePasses)
-    {
-      in.Runner.EndProfiledSpan("emitters", w, h, sceneBytes);
-    }
+    in.EndSpan(this, "emitters", w, h, sceneBytes);
   }
 
   // 2. The chain into the pass's own targets; for a tile of a kept frame (KeptFrameMode), that
@@ -483,7 +484,12 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   }
   // The scene's depth under the composited frame, for what reads it next: the annotations (a
   // label mapper hides the labels of points the scene covers), a pass around this one.
-  in.Depth.Write(window, res.Scene.Depth, x, y, w, h, tile.Inner);
+  if (!in.DepthShared)
+  {
+    in.BeginSpan(this);
+    in.Depth.Write(window, res.Scene.Depth, x, y, w, h, tile.Inner);
+    in.EndSpan(this, "depth", w, h, 8.0 * w * h);
+  }
   // The renderer's viewport again (the scene's render had the part's, a tile with its band),
   // for what follows and reads it: the FXAA, the annotations.
   state->vtkglViewport(x, y, w, h);
@@ -493,7 +499,9 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // Inside other passes (ParaView's own FXAA pass, a tone mapping) FXAA is theirs to apply.
   if (fxaa)
   {
+    in.BeginSpan(this);
     in.ApplyFXAA(static_cast<vtkOpenGLRenderer*>(r));
+    in.EndSpan(this, "fxaa", w, h, 8.0 * w * h);
   }
   // 5. The annotations, over the bloom; the delegate's steps as they were.
   this->NumberOfRenderedProps += in.Steps.RenderOverlay(s, x, y, w, h);

@@ -449,7 +449,8 @@ public:
   /**
    * Per-pass GPU profile, for benchmarks (off by default). With ProfilePasses on, every GPU
    * pass of a render (the delegate's scene, the emitters, each pass of the chain and the
-   * composite) is bracketed by two GL timestamp queries (glQueryCounter with GL_TIMESTAMP,
+   * composite, the depth's write where the scene could not render into the window's depth
+   * buffer, the renderer's FXAA) is bracketed by two GL timestamp queries (glQueryCounter with GL_TIMESTAMP,
    * OpenGL 3.3 or ARB_timer_query), and the end of Render() waits for the GPU to read them, so
    * a profiled frame is slower than an unprofiled one: profile in frames that are not timed
    * otherwise. Timestamps rather than GL_TIME_ELAPSED, so that a caller may still time the
@@ -467,7 +468,8 @@ public:
    * "scene", "bright L0", "blur-x L3" or "composite"; the size in pixels the entry wrote; its
    * GPU time in milliseconds; and its compulsory memory traffic in bytes (every texture it
    * reads read once, its target written once and read again when it blends; for "scene" and
-   * "emitters", the float colour and the 32-bit depth written once). An index out of range
+   * "emitters", the float colour and the 32-bit depth written once; "depth" and "fxaa" outside
+   * the chain, after the composite). An index out of range
    * gives an empty name and zeros.
    */
   int GetNumberOfProfiledPasses();

@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 // SPDX-License-Identifier: BSD-3-Clause
-// The scene's depth written where the frame is composited (see vtkBloomPassDepth.h).
+// The scene's depth where the frame is composited: shared, or written (see vtkBloomPassDepth.h).
 #include "vtkBloomPassDepth.h"
 
 #include "vtkBloomVTKCompat.h"
@@ -11,6 +11,8 @@
 #include "vtkOpenGLState.h"
 #include "vtkShaderProgram.h"
 #include "vtkTextureObject.h"
+
+#include <algorithm>
 
 namespace
 {
@@ -80,6 +82,96 @@ void vtkBloomPassDepth::Write(vtkOpenGLRenderWindow* window, vtkTextureObject* d
   this->Quad->Program->SetUniform2i("first", offset);
   this->Quad->Render();
   depth->Deactivate();
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassDepth::Attachment::Describe(unsigned int framebuffer)
+{
+  // OpenGL 4.5's direct state access: the framebuffers are not bound, so that VTK's record of
+  // the bindings (vtkOpenGLState) stays true.
+  *this = Attachment();
+  if (!glGetNamedFramebufferAttachmentParameteriv || !glGetNamedRenderbufferParameteriv ||
+    !glGetTextureLevelParameteriv || !glGetTextureParameteriv || framebuffer == 0)
+  {
+    return false;
+  }
+  GLint type = GL_NONE, name = 0, layered = GL_FALSE;
+  glGetNamedFramebufferAttachmentParameteriv(
+    framebuffer, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_TYPE, &type);
+  if (type != GL_RENDERBUFFER && type != GL_TEXTURE)
+  {
+    return false;
+  }
+  glGetNamedFramebufferAttachmentParameteriv(
+    framebuffer, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_OBJECT_NAME, &name);
+  this->Type = type;
+  this->Name = static_cast<unsigned int>(name);
+  if (type == GL_RENDERBUFFER)
+  {
+    glGetNamedRenderbufferParameteriv(this->Name, GL_RENDERBUFFER_WIDTH, &this->Size[0]);
+    glGetNamedRenderbufferParameteriv(this->Name, GL_RENDERBUFFER_HEIGHT, &this->Size[1]);
+    glGetNamedRenderbufferParameteriv(this->Name, GL_RENDERBUFFER_SAMPLES, &this->Size[2]);
+    return true;
+  }
+  GLint kind = GL_NONE;
+  glGetNamedFramebufferAttachmentParameteriv(
+    framebuffer, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_TEXTURE_LEVEL, &this->Level);
+  glGetNamedFramebufferAttachmentParameteriv(
+    framebuffer, GL_DEPTH_ATTACHMENT, GL_FRAMEBUFFER_ATTACHMENT_LAYERED, &layered);
+  glGetTextureParameteriv(this->Name, GL_TEXTURE_TARGET, &kind);
+  if (layered != GL_FALSE || (kind != GL_TEXTURE_2D && kind != GL_TEXTURE_2D_MULTISAMPLE))
+  {
+    return false;
+  }
+  glGetTextureLevelParameteriv(this->Name, this->Level, GL_TEXTURE_WIDTH, &this->Size[0]);
+  glGetTextureLevelParameteriv(this->Name, this->Level, GL_TEXTURE_HEIGHT, &this->Size[1]);
+  glGetTextureLevelParameteriv(this->Name, this->Level, GL_TEXTURE_SAMPLES, &this->Size[2]);
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassDepth::Attachment::AttachTo(unsigned int framebuffer) const
+{
+  if (this->Type == GL_RENDERBUFFER)
+  {
+    glNamedFramebufferRenderbuffer(framebuffer, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, this->Name);
+  }
+  else
+  {
+    glNamedFramebufferTexture(framebuffer, GL_DEPTH_ATTACHMENT, this->Name, this->Level);
+  }
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPassDepth::Share(unsigned int called, unsigned int target)
+{
+  this->EndShare();
+  Attachment theirs;
+  if (!glNamedFramebufferRenderbuffer || !glNamedFramebufferTexture ||
+    !glCheckNamedFramebufferStatus || called == target || !theirs.Describe(called) ||
+    !this->Own.Describe(target) ||
+    !std::equal(theirs.Size, theirs.Size + 3, static_cast<const int*>(this->Own.Size)))
+  {
+    return false;
+  }
+  theirs.AttachTo(target);
+  this->SharedTarget = target;
+  if (glCheckNamedFramebufferStatus(target, GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+  {
+    this->EndShare(); // a combination of formats the driver refuses: Write() instead
+    return false;
+  }
+  return true;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassDepth::EndShare()
+{
+  if (this->SharedTarget)
+  {
+    this->Own.AttachTo(this->SharedTarget);
+    this->SharedTarget = 0;
+  }
 }
 
 //------------------------------------------------------------------------------

@@ -125,7 +125,13 @@ public:
     }
     this->FXAA->Execute(renderer);
   }
-  vtkBloomPassDepth Depth;       ///< the scene's depth, written where the frame is composited
+  vtkBloomPassDepth Depth; ///< the scene's depth where the frame is composited
+  /// The framebuffer the pass was called with (its GL name), whose depth buffer the scene's
+  /// render may write (vtkBloomPassDepth::Share), and whether this frame's did: DepthShared
+  /// says whether a Depth.Write() is still owed.
+  unsigned int CalledFramebuffer = 0;
+  bool ShareDepth = false;
+  bool DepthShared = false;
   vtkBloomPassFFT FFT;           ///< PSF mode's convolution
   vtkBloomPassPSFSplit PSFSplit; ///< a split PSF's (PSFTailScale > 1, a tail left)
   bool UsePSFSplit = false;      ///< the current PSFs are split
@@ -227,6 +233,22 @@ public:
     }
     props = this->TileProps.data();
     count = static_cast<int>(this->TileProps.size());
+  }
+
+  /// A span of the frame in the profile (vtkBloomPass::ProfilePasses), outside the chain.
+  void BeginSpan(vtkBloomPass* self)
+  {
+    if (self->ProfilePasses)
+    {
+      this->Runner.BeginProfiledSpan();
+    }
+  }
+  void EndSpan(vtkBloomPass* self, const char* name, int w, int h, double bytes)
+  {
+    if (self->ProfilePasses)
+    {
+      this->Runner.EndProfiledSpan(name, w, h, bytes);
+    }
   }
 
   /// What the delegate renders: the scene, the scene and its emission, or the emitters alone.

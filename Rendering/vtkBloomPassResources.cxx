@@ -206,7 +206,7 @@ void vtkBloomPassMultisampleTarget::Release(vtkWindow* window)
 
 //------------------------------------------------------------------------------
 void vtkBloomPassMultisampleTarget::Resolve(
-  vtkOpenGLRenderWindow* context, vtkBloomPassSceneTarget& target)
+  vtkOpenGLRenderWindow* context, vtkBloomPassSceneTarget& target, bool depth)
 {
   vtkOpenGLState* state = context->GetState();
   state->PushFramebufferBindings();
@@ -216,7 +216,7 @@ void vtkBloomPassMultisampleTarget::Resolve(
   target.FBO->ActivateDrawBuffer(0);
   // A multisample resolve must cover the same rectangle; depth resolves by nearest.
   glBlitFramebuffer(0, 0, this->Size[0], this->Size[1], 0, 0, this->Size[0], this->Size[1],
-    GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT, GL_NEAREST);
+    depth ? GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT : GL_COLOR_BUFFER_BIT, GL_NEAREST);
   state->PopFramebufferBindings();
 }
 

@@ -110,10 +110,11 @@ struct vtkBloomPassMultisampleTarget
   void Release(vtkWindow* window);
 
   /**
-   * Resolve the colour (the average of the samples, in float) and the depth (one sample) into
-   * `target`, of the same size and format. The framebuffer bindings are restored afterwards.
+   * Resolve the colour (the average of the samples, in float) and, with `depth`, the depth (one
+   * sample) into `target`, of the same size and format. The framebuffer bindings are restored
+   * afterwards.
    */
-  void Resolve(vtkOpenGLRenderWindow* context, vtkBloomPassSceneTarget& target);
+  void Resolve(vtkOpenGLRenderWindow* context, vtkBloomPassSceneTarget& target, bool depth);
 };
 
 //------------------------------------------------------------------------------

@@ -70,6 +70,14 @@ vtkbloom_add_gtest(TestBloomPassTiles OPENGL
     VTK::FiltersSources VTK::CommonDataModel VTK::CommonCore)
 vtk_module_autoinit(TARGETS TestBloomPassTiles MODULES VTK::RenderingOpenGL2)
 
+# What the bloom frame costs over the plain frame, counted (shader invocations, full-size passes,
+# bytes), not timed: a full-frame draw or copy added around the chain fails here.
+vtkbloom_add_gtest(TestBloomPassFrameCost OPENGL
+  SOURCES Rendering/TestBloomPassFrameCost.cxx
+  LIBRARIES vtkbloom_scenes VTKBloom::RenderingBloom VTK::RenderingOpenGL2 VTK::RenderingCore
+    VTK::CommonDataModel VTK::CommonCore)
+vtk_module_autoinit(TARGETS TestBloomPassFrameCost MODULES VTK::RenderingOpenGL2)
+
 # Long sessions: the bloom, its emitters, presets, PSF mode, tiles, several windows and the
 # context switched for hundreds of frames hold their memory flat against the plain renderer.
 vtkbloom_add_gtest(TestBloomPassSoak OPENGL
