@@ -208,7 +208,93 @@ bool TimeFrames(const std::string& scene, const std::string& preset, int width, 
   return true;
 }
 
-// The per-pass profile of the bloom frame; false for an unknown scene or preset.
+// The median GPU time of each profiled entry of `pass` over `frames` frames of `kind`, in the
+// order of the last frame, with the entries' names (a name that repeats is one entry).
+std::vector<std::pair<std::string, double>> ProfiledMedians(
+  vtkBloomFrameTimer& timer, vtkBloomPass* pass, vtkBloomFrameTimer::Kind kind, int frames)
+{
+  pass->ProfilePassesOn();
+  std::vector<std::vector<double>> ms;
+  for (int f = -1; f < frames; ++f)
+  {
+    timer.Frame(kind);
+    const int n = pass->GetNumberOfProfiledPasses();
+    ms.resize(n);
+    for (int i = 0; f >= 0 && i < n; ++i)
+    {
+      ms[i].push_back(pass->GetProfiledPassMilliseconds(i));
+    }
+  }
+  std::vector<std::pair<std::string, double>> medians;
+  for (int i = 0; i < static_cast<int>(ms.size()); ++i)
+  {
+    medians.emplace_back(pass->GetProfiledPassName(i), vtkBloomMedian(ms[i]));
+  }
+  pass->ProfilePassesOff();
+  return medians;
+}
+
+// What the user pays for the bloom frame over the plain frame, then its parts: the plain,
+// compute-copy and bloom frames interleaved unprofiled (the GPU timer around Render()), then
+// the profile of the bloom frame and of the compute copy (the same pass with no chain: its
+// composite is the copy back).
+void PrintBreakdown(vtkBloomFrameTimer& timer,
+  const std::vector<std::pair<std::string, double>>& bloom, int width, int height, int frames)
+{
+  std::vector<double> gpu[3];
+  const vtkBloomFrameTimer::Kind kinds[3] = { vtkBloomFrameTimer::PLAIN,
+    vtkBloomFrameTimer::COMPUTE_COPY, vtkBloomFrameTimer::BLOOM };
+  for (int f = -2; f < frames; ++f)
+  {
+    for (int k = 0; k < 3; ++k)
+    {
+      timer.Frame(kinds[k]);
+      if (f >= 0)
+      {
+        gpu[k].push_back(1e3 * timer.LastGPUSeconds);
+      }
+    }
+  }
+  const vtkBloomFrameStatistics plain(gpu[0]), copy(gpu[1]), frame(gpu[2]);
+  const auto copyParts = ProfiledMedians(
+    timer, timer.ComputeCopy, vtkBloomFrameTimer::COMPUTE_COPY, std::min(frames, 50));
+  double scene = 0.0, depth = 0.0, fxaa = 0.0, chain = 0.0, composite = 0.0, copyBack = 0.0;
+  for (const auto& part : bloom)
+  {
+    const std::string& name = part.first;
+    double& sum = name == "scene" || name == "emitters" ? scene
+      : name == "depth"                                 ? depth
+      : name == "fxaa"                                  ? fxaa
+      : name.rfind("composite", 0) == 0                 ? composite
+                                                        : chain;
+    sum += part.second;
+  }
+  for (const auto& part : copyParts)
+  {
+    copyBack += part.first.rfind("composite", 0) == 0 ? part.second : 0.0;
+  }
+  std::printf("\n**What the user pays**, %dx%d, %d frames of each kind interleaved (GPU timer): "
+              "plain frame %.3f mean; bloom frame %.3f mean, %.3f median, %.3f p99; **bloom over "
+              "plain %+.3f ms by the means** (%+.3f by the medians); over the compute copy "
+              "(%.3f mean) %+.3f\n\n",
+    width, height, frames, plain.Mean, frame.Mean, frame.Median, frame.P99, frame.Mean - plain.Mean,
+    frame.Median - plain.Median, copy.Mean, frame.Mean - copy.Mean);
+  std::printf("| part (medians of the profiled frames) | GPU ms |\n|---|---:|\n");
+  std::printf(
+    "| the scene into the float target (scene span; the plain frame is %.3f in all) | %.4f |\n",
+    plain.Median, scene);
+  std::printf(
+    "| the depth's draw (where the scene could not render into the window's depth) | %.4f |\n",
+    depth);
+  std::printf("| the copy back (the compute copy's composite) | %.4f |\n", copyBack);
+  std::printf("| the chain (bright pass to last upsample) | %.4f |\n", chain);
+  std::printf("| the composite | %.4f |\n", composite);
+  std::printf("| the renderer's FXAA | %.4f |\n", fxaa);
+  std::fflush(stdout);
+}
+
+// The per-pass profile of the bloom frame, then what the user pays and its parts
+// (PrintBreakdown); false for an unknown scene or preset.
 bool ProfilePasses(
   const std::string& scene, const std::string& preset, int width, int height, int frames)
 {
@@ -230,18 +316,9 @@ bool ProfilePasses(
       frameGPU.push_back(1e3 * timer.LastGPUSeconds);
     }
   }
+  const auto medians = ProfiledMedians(timer, timer.Bloom, vtkBloomFrameTimer::BLOOM, frames);
   timer.Bloom->ProfilePassesOn();
-  std::vector<std::vector<double>> ms;
-  for (int f = -1; f < frames; ++f)
-  {
-    timer.Frame(vtkBloomFrameTimer::BLOOM);
-    const int n = timer.Bloom->GetNumberOfProfiledPasses();
-    ms.resize(n);
-    for (int i = 0; f >= 0 && i < n; ++i)
-    {
-      ms[i].push_back(timer.Bloom->GetProfiledPassMilliseconds(i));
-    }
-  }
+  timer.Frame(vtkBloomFrameTimer::BLOOM); // for the sizes and bytes of the last frame
   vtkBloomPass* bloom = timer.Bloom;
   std::printf("\n%s, preset %s%s, %dx%d, %s precision: %d GPU passes of the chain and the "
               "composite (the profile also lists the scene render)\n\n",
@@ -250,13 +327,13 @@ bool ProfilePasses(
     bloom->GetNumberOfPasses());
   std::printf("| # | pass | size | GPU time | MB | GB/s |\n|---|---|---|---|---|---|\n");
   double total = 0.0, chain = 0.0, bytes = 0.0, chainBytes = 0.0;
-  for (int i = 0; i < static_cast<int>(ms.size()); ++i)
+  for (int i = 0; i < static_cast<int>(medians.size()); ++i)
   {
     int size[2];
     bloom->GetProfiledPassSize(i, size);
-    const double t = vtkBloomMedian(ms[i]);
+    const double t = medians[i].second;
     const double b = bloom->GetProfiledPassBytes(i);
-    const std::string name = bloom->GetProfiledPassName(i);
+    const std::string& name = medians[i].first;
     std::printf("| %d | %s | %dx%d | %.4f ms | %.2f | %.0f |\n", i, name.c_str(), size[0], size[1],
       t, 1e-6 * b, t > 0.0 ? 1e-6 * b / t : 0.0);
     total += t;
@@ -267,13 +344,14 @@ bool ProfilePasses(
       chainBytes += b;
     }
   }
+  bloom->ProfilePassesOff();
   const double frameMs = vtkBloomMedian(frameGPU), floorMs = vtkBloomMedian(floorGPU);
   std::printf("\nsum of the passes %.3f ms (%.1f MB); the chain and composite alone %.3f ms "
               "(%.1f MB, %.0f GB/s)\nunprofiled frames (GPU timer): with bloom %.3f ms, float "
               "target + copy %.3f ms, bloom over the floor %+.3f ms\n",
     total, 1e-6 * bytes, chain, 1e-6 * chainBytes, chain > 0.0 ? 1e-6 * chainBytes / chain : 0.0,
     frameMs, floorMs, frameMs - floorMs);
-  std::fflush(stdout);
+  PrintBreakdown(timer, medians, width, height, frames);
   return true;
 }
 
