@@ -20,6 +20,10 @@
 //   BloomPassFrameTime --no-read-back ...  as above, SkipEmptyBloom off too: the CPU never waits
 //                                  for the GPU in the pass (no query or region read back)
 //   BloomPassFrameTime --samples N ...  as above in a window of N samples (multisampling)
+//   BloomPassFrameTime --depth-draw ...  as above, the scene's depth drawn after the composite
+//                                  instead of rendered into the window's depth buffer
+//                                  (vtkBloomPassTesting::SetShareWindowDepth off: the frame
+//                                  before that sharing, for its cost)
 //   BloomPassFrameTime --resolved ...  as above, vtkBloomPass::ThresholdSamplesOff (a
 //                                  multisampled scene thresholded after its resolve)
 //   BloomPassFrameTime --direct ... / --fft ...  as above, the level blurs by their taps or
@@ -85,6 +89,7 @@
 // files would have to export for one caller each.
 #include "vtkBloomFrameTimer.h"
 #include "vtkBloomParameters.h"
+#include "vtkBloomPassTesting.h"
 
 #include "vtkImageBloom.h"
 #include "vtkImageData.h"
@@ -111,6 +116,7 @@ bool Unrestricted = false; // --unrestricted: vtkBloomParameters::RestrictToBrig
 bool NoReadBack = false;   // --no-read-back: SkipEmptyBloomOff too (the CPU never waits)
 int Samples = 0;           // --samples N: a multisampled window
 bool Resolved = false;     // --resolved: vtkBloomPass::ThresholdSamplesOff
+bool DepthDraw = false;    // --depth-draw: the depth drawn after the composite, never shared
 
 // The timer on `scene` with `preset`, in the shader stage the options ask for; false,
 // with a message, for an unknown scene or preset.
@@ -138,6 +144,8 @@ bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::strin
     timer.Bloom->GetParameters()->SetSkipEmptyBloom(false);
   }
   timer.Bloom->SetThresholdSamples(!Resolved);
+  vtkBloomPassTesting::SetShareWindowDepth(timer.Bloom, !DepthDraw);
+  vtkBloomPassTesting::SetShareWindowDepth(timer.ComputeCopy, !DepthDraw);
   if (Convolution >= 0)
   {
     timer.Bloom->GetParameters()->SetConvolutionMode(Convolution);
@@ -1026,7 +1034,7 @@ int main(int argc, char* argv[])
     (std::strcmp(argv[1], "--fragment") == 0 || std::strcmp(argv[1], "--direct") == 0 ||
       std::strcmp(argv[1], "--fft") == 0 || std::strcmp(argv[1], "--pairs") == 0 ||
       std::strcmp(argv[1], "--resolved") == 0 || std::strcmp(argv[1], "--unrestricted") == 0 ||
-      std::strcmp(argv[1], "--no-read-back") == 0 ||
+      std::strcmp(argv[1], "--no-read-back") == 0 || std::strcmp(argv[1], "--depth-draw") == 0 ||
       (argc > 2 && std::strcmp(argv[1], "--single-draw") == 0) ||
       (argc > 2 && std::strcmp(argv[1], "--samples") == 0)))
   {
@@ -1039,6 +1047,10 @@ int main(int argc, char* argv[])
     else if (std::strcmp(argv[1], "--resolved") == 0)
     {
       Resolved = true;
+    }
+    else if (std::strcmp(argv[1], "--depth-draw") == 0)
+    {
+      DepthDraw = true;
     }
     else if (std::strcmp(argv[1], "--direct") == 0 || std::strcmp(argv[1], "--fft") == 0)
     {

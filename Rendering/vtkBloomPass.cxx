@@ -434,7 +434,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   in.PlanWhatBlooms(this, s, selective);
   // The called framebuffer's depth buffer, shared with the scene's render, must cover the
   // same pixels; the emitters' second render needs the scene's depth as the pass's own texture.
-  in.ShareDepth = x == 0 && y == 0 && !(selective && !inScene);
+  in.ShareDepth = in.ShareWindowDepth && x == 0 && y == 0 && !(selective && !inScene);
   if (this->CaptureResult)
   {
     res.Result.Allocate(window, w, h, GL_RGBA32F);

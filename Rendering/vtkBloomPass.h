@@ -450,10 +450,10 @@ public:
    * Per-pass GPU profile, for benchmarks (off by default). With ProfilePasses on, every GPU
    * pass of a render (the delegate's scene, the emitters, each pass of the chain and the
    * composite, the depth's write where the scene could not render into the window's depth
-   * buffer, the renderer's FXAA) is bracketed by two GL timestamp queries (glQueryCounter with GL_TIMESTAMP,
-   * OpenGL 3.3 or ARB_timer_query), and the end of Render() waits for the GPU to read them, so
-   * a profiled frame is slower than an unprofiled one: profile in frames that are not timed
-   * otherwise. Timestamps rather than GL_TIME_ELAPSED, so that a caller may still time the
+   * buffer, the renderer's FXAA) is bracketed by two GL timestamp queries (glQueryCounter with
+   * GL_TIMESTAMP, OpenGL 3.3 or ARB_timer_query), and the end of Render() waits for the GPU to read
+   * them, so a profiled frame is slower than an unprofiled one: profile in frames that are not
+   * timed otherwise. Timestamps rather than GL_TIME_ELAPSED, so that a caller may still time the
    * whole frame with a GL_TIME_ELAPSED query. Off, it costs one test per pass. The profile
    * holds the entries of the last render; it is empty when profiling is off.
    */
@@ -534,6 +534,7 @@ private:
 
   class vtkInternals;
   std::unique_ptr<vtkInternals> Internals;
+  friend class vtkBloomPassTesting; // the tests' switches (vtkBloomPassTesting.h)
 };
 
 #endif

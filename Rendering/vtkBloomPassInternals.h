@@ -130,7 +130,8 @@ public:
   /// render may write (vtkBloomPassDepth::Share), and whether this frame's did: DepthShared
   /// says whether a Depth.Write() is still owed.
   unsigned int CalledFramebuffer = 0;
-  bool ShareDepth = false;
+  bool ShareWindowDepth = true; ///< off only for tests (vtkBloomPassTesting)
+  bool ShareDepth = false;      ///< this frame may share it
   bool DepthShared = false;
   vtkBloomPassFFT FFT;           ///< PSF mode's convolution
   vtkBloomPassPSFSplit PSFSplit; ///< a split PSF's (PSFTailScale > 1, a tail left)

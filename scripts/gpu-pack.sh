@@ -11,7 +11,7 @@
 #                                       ignore it in git)
 #
 # The project is built in build-egl/ (the build of `bash scripts/test.sh --egl`). The tarball
-# holds, at their absolute paths on this machine, the nine executables, the CTest files of the
+# holds, at their absolute paths on this machine, the twelve executables, the CTest files of the
 # build (so that ctest runs the rendering tests there as here), the test data they read (the
 # baselines in Testing/Data and the shared presets and EXR images), and under
 # /opt/vtk-bloom-gpu/lib every library `ldd` names except glibc's, the C++ runtime's and the GL
@@ -22,7 +22,7 @@ dest=${1:-$root/.gpupack}
 build=$root/build-egl
 bins=(TestBloomPass TestBloomPassHardCases TestBloomPassRegion TestBloomPassMotion
   TestBloomPassSoak TestBloomPassGallery TestBloomPassLight TestBloomPassTiles
-  BloomPassFrameTime ShaderStageThroughput vtk-bloom)
+  TestBloomPassFrameCost BloomPassFrameTime ShaderStageThroughput vtk-bloom)
 log() { echo "gpu-pack: $*" >&2; }
 
 prefix=$(bash "$root/scripts/build-egl-vtk.sh" | tail -n 1)

@@ -25,7 +25,13 @@
 #   renderers.md     four bloomed renderers in one window (2 x 2 viewports) against the same
 #                    four plain, at 1920x1080 and 3840x2160: the CPU's time in Render() and the
 #                    GPU's (BloomPassFrameTime --renderers)
-#   profile.md       the per-pass GPU profile of the default preset at 3840x2160, every scene
+#   profile.md       the per-pass GPU profile of the default preset at 1920x1080 and 3840x2160,
+#                    every scene, then what the user pays (the bloom frame over the plain frame)
+#                    and its parts: the scene's float render, the depth's draw, the copy back,
+#                    the chain, the composite
+#   depthdraw.md     the frame-time table and lit-spheres' profile with the scene's depth drawn
+#                    after the composite (BloomPassFrameTime --depth-draw), as every frame did
+#                    before the scene rendered into the window's depth buffer: its cost
 #   quality.md       every preset, blurs tap by tap and PSF bloom (exact and split) at
 #                    3840x2160: GPU time over the floor and error against vtkImageBloom
 #                    REFERENCE (and quality.csv, for scripts/plot-gpu-quality.py)
@@ -53,7 +59,7 @@
 #
 # STEPS (default "tests frametime renderers fusion samples profile quality sparse sync orbit
 # selective psf soak stages render")
-# picks the steps. At most 8 files come back from the device tool: pick fewer steps there.
+# picks the steps (depthdraw only when named). At most 8 files come back from the device tool: pick fewer steps there.
 # The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
 # CUDA image) and the pack at the absolute paths it was built with.
 set -uo pipefail
@@ -179,8 +185,28 @@ fi
 if step profile; then
 echo "== per-pass profile"
 {
-  timeout 300 "$bin/BloomPassFrameTime" --profile all 3840 2160 "$FRAMES" default
+  for size in "1920 1080" "3840 2160"; do
+    # shellcheck disable=SC2086
+    timeout 300 "$bin/BloomPassFrameTime" --profile all $size "$FRAMES" default
+    echo
+  done
 } | tee "$OUT/profile.md"
+fi
+
+if step depthdraw; then
+echo "== the frame with the depth drawn after the composite"
+{
+  echo "GPU timer (GL_TIME_ELAPSED), $FRAMES frames of each kind; BloomPassFrameTime --depth-draw"
+  echo
+  for size in "1920 1080" "3840 2160"; do
+    # shellcheck disable=SC2086
+    timeout 300 "$bin/BloomPassFrameTime" --depth-draw all $size "$FRAMES" "$PRESETS"
+    echo
+    # shellcheck disable=SC2086
+    timeout 300 "$bin/BloomPassFrameTime" --depth-draw --profile lit-spheres $size 50 default
+    echo
+  done
+} | tee "$OUT/depthdraw.md"
 fi
 
 if step quality; then

@@ -16,6 +16,7 @@
 // The window's depth after a bloom frame is the plain frame's, shared or drawn.
 #include "vtkBloomExampleScenes.h"
 #include "vtkBloomPass.h"
+#include "vtkBloomPassTesting.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkFloatArray.h"
 #include "vtkNew.h"
@@ -258,4 +259,24 @@ TEST(RenderingBloomPassFrameCost, TwoViewportsDrawTheirDepth)
   w.Bloom(true);
   const FrameCounts bloom = w.Count();
   EXPECT_GE(bloom.Fragments - plain.Fragments, 0.9) << "the depth's draws were not counted";
+}
+
+// The frame as it was before the scene rendered into the window's depth: the depth drawn after
+// the composite. The count sees that draw (one full frame), and the depth is the same.
+TEST(RenderingBloomPassFrameCost, TheDepthsDrawIsCounted)
+{
+  CostWindow w("lit-spheres", 1, 0);
+  w.Bloom(false);
+  w.Window->Render();
+  const FrameCounts plain = w.Count();
+  const std::vector<float> plainDepth = w.Depth();
+  w.Bloom(true);
+  const FrameCounts shared = w.Count();
+  ASSERT_TRUE(vtkBloomPassTesting::GetShareWindowDepth(w.Passes[0]));
+  vtkBloomPassTesting::SetShareWindowDepth(w.Passes[0], false);
+  const FrameCounts drawn = w.Count();
+  EXPECT_LE(shared.Fragments - plain.Fragments, 0.05);
+  EXPECT_GE(drawn.Fragments - plain.Fragments, 0.99);
+  EXPECT_LE(drawn.Fragments - plain.Fragments, 1.01);
+  EXPECT_LE(LargestDifference(w.Depth(), plainDepth), 1e-6);
 }
