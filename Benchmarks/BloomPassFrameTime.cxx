@@ -298,6 +298,8 @@ void PrintBreakdown(vtkBloomFrameTimer& timer,
   std::printf("| the chain (bright pass to last upsample) | %.4f |\n", chain);
   std::printf("| the composite | %.4f |\n", composite);
   std::printf("| the renderer's FXAA | %.4f |\n", fxaa);
+  std::printf("| the bloom frame outside these spans (its median less their sum) | %.4f |\n",
+    frame.Median - (scene + depth + fxaa + chain + composite));
   std::fflush(stdout);
 }
 
