@@ -90,6 +90,8 @@
 #include "vtkBloomFrameTimer.h"
 #include "vtkBloomParameters.h"
 #include "vtkBloomPassTesting.h"
+#include "vtkCallbackCommand.h"
+#include "vtkCommand.h"
 
 #include "vtkImageBloom.h"
 #include "vtkImageData.h"
@@ -242,6 +244,59 @@ std::vector<std::pair<std::string, double>> ProfiledMedians(
   return medians;
 }
 
+// GPU timestamps at the window's and the renderer's StartEvent and EndEvent: where in the
+// window's Render() a frame's GPU time goes (before the renderer, in it, after it: the
+// window's own copy to its display framebuffer).
+struct FrameSegments
+{
+  std::vector<GLuint> Queries;
+  size_t Next = 0;
+  static void Stamp(vtkObject*, unsigned long, void* data, void*)
+  {
+    auto* self = static_cast<FrameSegments*>(data);
+    if (self->Next < self->Queries.size())
+    {
+      glQueryCounter(self->Queries[self->Next++], GL_TIMESTAMP);
+    }
+  }
+  // The medians over `frames` frames of `kind`: window start to renderer start, renderer
+  // start to end, renderer end to window end.
+  std::vector<double> Measure(vtkBloomFrameTimer& timer, vtkBloomFrameTimer::Kind kind, int frames)
+  {
+    timer.Frame(kind);
+    this->Queries.assign(4, 0);
+    glGenQueries(4, this->Queries.data());
+    vtkNew<vtkCallbackCommand> stamp;
+    stamp->SetCallback(&FrameSegments::Stamp);
+    stamp->SetClientData(this);
+    const unsigned long tags[4] = { timer.Window->AddObserver(vtkCommand::StartEvent, stamp),
+      timer.Renderer->AddObserver(vtkCommand::StartEvent, stamp),
+      timer.Renderer->AddObserver(vtkCommand::EndEvent, stamp),
+      timer.Window->AddObserver(vtkCommand::EndEvent, stamp) };
+    std::vector<double> ms[3];
+    for (int f = 0; f < frames; ++f)
+    {
+      this->Next = 0;
+      timer.Frame(kind);
+      GLuint64 t[4] = { 0, 0, 0, 0 };
+      for (size_t i = 0; i < this->Next; ++i)
+      {
+        glGetQueryObjectui64v(this->Queries[i], GL_QUERY_RESULT, &t[i]);
+      }
+      for (int k = 0; this->Next == 4 && k < 3; ++k)
+      {
+        ms[k].push_back(1e-6 * static_cast<double>(t[k + 1] - t[k]));
+      }
+    }
+    timer.Window->RemoveObserver(tags[0]);
+    timer.Renderer->RemoveObserver(tags[1]);
+    timer.Renderer->RemoveObserver(tags[2]);
+    timer.Window->RemoveObserver(tags[3]);
+    glDeleteQueries(4, this->Queries.data());
+    return { vtkBloomMedian(ms[0]), vtkBloomMedian(ms[1]), vtkBloomMedian(ms[2]) };
+  }
+};
+
 // What the user pays for the bloom frame over the plain frame, then its parts: the plain,
 // compute-copy and bloom frames interleaved unprofiled (the GPU timer around Render()), then
 // the profile of the bloom frame and of the compute copy (the same pass with no chain: its
@@ -300,6 +355,14 @@ void PrintBreakdown(vtkBloomFrameTimer& timer,
   std::printf("| the renderer's FXAA | %.4f |\n", fxaa);
   std::printf("| the bloom frame outside these spans (its median less their sum) | %.4f |\n",
     frame.Median - (scene + depth + fxaa + chain + composite));
+  FrameSegments segments;
+  const std::vector<double> p = segments.Measure(timer, vtkBloomFrameTimer::PLAIN, 50);
+  const std::vector<double> b = segments.Measure(timer, vtkBloomFrameTimer::BLOOM, 50);
+  std::printf("\n| segment of the window's Render() (GPU timestamps, medians of 50) | plain | "
+              "bloom |\n|---|---:|---:|\n| the window's start to the renderer's | %.4f | %.4f "
+              "|\n| the renderer | %.4f | %.4f |\n| the renderer's end to the window's (its "
+              "copy to the display framebuffer) | %.4f | %.4f |\n",
+    p[0], b[0], p[1], b[1], p[2], b[2]);
   std::fflush(stdout);
 }
 
