@@ -15,7 +15,7 @@
  *   have written it. It costs nothing: no draw, no copy.
  * - Write(): a full-screen draw of the scene's depth texture into the bound framebuffer, its
  *   colour untouched, as vtkSSAOPass writes gl_FragDepth in its final draw. On a GPU whose
- *   fragment shading runs on part of the chip (an NVIDIA H200) that draw costs about 0.6 ms at
+ *   fragment shading runs on part of the chip (an NVIDIA H200) that draw costs 0.56 ms at
  *   3840x2160 (docs/gpu.md): it is the fallback, where the depth buffers differ in size or
  *   samples (a renderer in part of the window, a tile with a guard band), or where the pass
  *   needs the scene's depth as a texture of its own (the emitters' second render).
