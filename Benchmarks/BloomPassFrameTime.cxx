@@ -82,11 +82,11 @@
 // the occlusion query only, and with neither (no wait: the CPU submits the whole frame ahead
 // of the GPU), GPU time and the CPU's time in Render().
 //
-// One executable for every GPU timing of scripts/gpu-run.sh (about 1080 lines): each mode is a
-// function of its own (TimeFrames, ProfilePasses, QualityTable, SparseTable, SyncTable,
-// OrbitTable, SelectiveTable, PSFTable, RenderersTable), and they share the scene set-up
-// (SetUp), the frame timing (vtkBloomFrameTimer.h) and the frame statistics, which separate
-// files would have to export for one caller each.
+// One executable for every GPU timing of scripts/gpu-run.sh (about 1230 lines): each mode is a
+// function of its own (TimeFrames, ProfilePasses with its breakdown, QualityTable, SparseTable,
+// SyncTable, OrbitTable, SelectiveTable, PSFTable, RenderersTable), and they share the scene
+// set-up and the options' flags (SetUp), the frame timing (vtkBloomFrameTimer.h) and the frame
+// statistics, which separate files would have to export for one caller each.
 #include "vtkBloomFrameTimer.h"
 #include "vtkBloomParameters.h"
 #include "vtkBloomPassTesting.h"

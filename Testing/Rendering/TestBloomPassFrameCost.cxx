@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -58,6 +59,7 @@ struct CostWindow
   std::vector<vtkSmartPointer<vtkBloomPass>> Passes;
 
   int Samples;
+  bool Built = true; ///< every renderer's scene was built
 
   CostWindow(const std::string& scene, int viewports, int samples)
     : Samples(samples)
@@ -73,7 +75,7 @@ struct CostWindow
       pass->SetDelegatePass(steps);
       renderer->SetViewport(
         static_cast<double>(i) / viewports, 0.0, static_cast<double>(i + 1) / viewports, 1.0);
-      vtkBloomBuildExampleScene(scene, renderer, pass);
+      this->Built = vtkBloomBuildExampleScene(scene, renderer, pass) && this->Built;
       this->Window->AddRenderer(renderer);
       this->Renderers.push_back(renderer);
       this->Passes.push_back(pass);
@@ -166,6 +168,7 @@ struct Budget
 void ExpectWithin(const std::string& scene, int viewports, int samples, const Budget& budget)
 {
   CostWindow w(scene, viewports, samples);
+  ASSERT_TRUE(w.Built) << scene;
   w.Bloom(false);
   w.Window->Render();
   ASSERT_TRUE(HasPipelineStatistics(w.Window))
@@ -266,6 +269,7 @@ TEST(RenderingBloomPassFrameCost, TwoViewportsDrawTheirDepth)
 TEST(RenderingBloomPassFrameCost, TheDepthsDrawIsCounted)
 {
   CostWindow w("lit-spheres", 1, 0);
+  ASSERT_TRUE(w.Built);
   w.Bloom(false);
   w.Window->Render();
   const FrameCounts plain = w.Count();
