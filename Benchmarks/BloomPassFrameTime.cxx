@@ -12,8 +12,8 @@
 //   BloomPassFrameTime --info      the window class and the OpenGL vendor, renderer and version
 //   BloomPassFrameTime --fragment ...  as above, every pass a fragment pass
 //                                  (vtkBloomPass::UseComputeShadersOff)
-//   BloomPassFrameTime --single-draw N ...  as above, vtkBloomPass::SingleDrawSamples N
-//   BloomPassFrameTime --pairs ...  as above, vtkBloomPass::FuseSeparablePassesOff (the
+//   BloomPassFrameTime --single-draw N ...  as above, vtkBloomPassTesting::SetSingleDrawSamples N
+//   BloomPassFrameTime --pairs ...  as above, vtkBloomPassTesting::SetFuseSeparablePasses off (the
 //                                  separable pairs as two passes, as before issue 37's fusion)
 //   BloomPassFrameTime --unrestricted ...  as above, RestrictToBrightRegion off (the whole
 //                                  chain every frame, no bright-region probes)
@@ -41,7 +41,7 @@
 // "scene" (the scene's own parameters, the default), "default" (vtkBloomParameters' defaults),
 // a name of vtkBloomParameters::GetPresetNames(), or "all" (default and every preset). A preset
 // keeps the scene's bright pass, so the same pixels bloom. --profile prints, for each scene and
-// preset, the bloom frame's passes (vtkBloomPass::ProfilePasses: GPU time from timestamp
+// preset, the bloom frame's passes (vtkBloomPassTesting::SetProfilePasses: GPU time from timestamp
 // queries, size and compulsory memory traffic of each, medians over FRAMES frames).
 //
 // --quality: for vtkImageBloom's defaults, every preset, blurs by their taps and PSF bloom
@@ -112,8 +112,8 @@ namespace
 {
 bool Fragment = false;     // --fragment
 int Convolution = -1;      // --direct, --fft: vtkBloomParameters::ConvolutionMode
-int SingleDraw = -1;       // --single-draw N: vtkBloomPass::SingleDrawSamples
-bool Pairs = false;        // --pairs: vtkBloomPass::FuseSeparablePassesOff
+int SingleDraw = -1;       // --single-draw N: vtkBloomPassTesting::SetSingleDrawSamples
+bool Pairs = false;        // --pairs: vtkBloomPassTesting::SetFuseSeparablePasses off
 bool Unrestricted = false; // --unrestricted: vtkBloomParameters::RestrictToBrightRegionOff
 bool NoReadBack = false;   // --no-read-back: SkipEmptyBloomOff too (the CPU never waits)
 int Samples = 0;           // --samples N: a multisampled window
@@ -134,9 +134,9 @@ bool SetUp(vtkBloomFrameTimer& timer, const std::string& scene, const std::strin
   timer.Bloom->SetUseComputeShaders(!Fragment);
   if (SingleDraw >= 0)
   {
-    timer.Bloom->SetSingleDrawSamples(SingleDraw);
+    vtkBloomPassTesting::SetSingleDrawSamples(timer.Bloom, SingleDraw);
   }
-  timer.Bloom->SetFuseSeparablePasses(!Pairs);
+  vtkBloomPassTesting::SetFuseSeparablePasses(timer.Bloom, !Pairs);
   if (Unrestricted || NoReadBack)
   {
     timer.Bloom->GetParameters()->SetRestrictToBrightRegion(false);
@@ -223,24 +223,25 @@ bool TimeFrames(const std::string& scene, const std::string& preset, int width, 
 std::vector<std::pair<std::string, double>> ProfiledMedians(
   vtkBloomFrameTimer& timer, vtkBloomPass* pass, vtkBloomFrameTimer::Kind kind, int frames)
 {
-  pass->ProfilePassesOn();
+  vtkBloomPassTesting::SetProfilePasses(pass, true);
   std::vector<std::vector<double>> ms;
+  std::vector<vtkBloomPassTesting::ProfiledPass> profile;
   for (int f = -1; f < frames; ++f)
   {
     timer.Frame(kind);
-    const int n = pass->GetNumberOfProfiledPasses();
-    ms.resize(n);
-    for (int i = 0; f >= 0 && i < n; ++i)
+    profile = vtkBloomPassTesting::GetProfile(pass);
+    ms.resize(profile.size());
+    for (std::size_t i = 0; f >= 0 && i < profile.size(); ++i)
     {
-      ms[i].push_back(pass->GetProfiledPassMilliseconds(i));
+      ms[i].push_back(profile[i].Milliseconds);
     }
   }
   std::vector<std::pair<std::string, double>> medians;
-  for (int i = 0; i < static_cast<int>(ms.size()); ++i)
+  for (std::size_t i = 0; i < ms.size(); ++i)
   {
-    medians.emplace_back(pass->GetProfiledPassName(i), vtkBloomMedian(ms[i]));
+    medians.emplace_back(profile[i].Name, vtkBloomMedian(ms[i]));
   }
-  pass->ProfilePassesOff();
+  vtkBloomPassTesting::SetProfilePasses(pass, false);
   return medians;
 }
 
@@ -390,9 +391,11 @@ bool ProfilePasses(
     }
   }
   const auto medians = ProfiledMedians(timer, timer.Bloom, vtkBloomFrameTimer::BLOOM, frames);
-  timer.Bloom->ProfilePassesOn();
+  vtkBloomPassTesting::SetProfilePasses(timer.Bloom, true);
   timer.Frame(vtkBloomFrameTimer::BLOOM); // for the sizes and bytes of the last frame
   vtkBloomPass* bloom = timer.Bloom;
+  const std::vector<vtkBloomPassTesting::ProfiledPass> last =
+    vtkBloomPassTesting::GetProfile(bloom);
   std::printf("\n%s, preset %s%s, %dx%d, %s precision: %d GPU passes of the chain and the "
               "composite (the profile also lists the scene render)\n\n",
     scene.c_str(), preset.c_str(), Fragment ? " (fragment passes)" : "", width, height,
@@ -400,15 +403,14 @@ bool ProfilePasses(
     bloom->GetNumberOfPasses());
   std::printf("| # | pass | size | GPU time | MB | GB/s |\n|---|---|---|---|---|---|\n");
   double total = 0.0, chain = 0.0, bytes = 0.0, chainBytes = 0.0;
-  for (int i = 0; i < static_cast<int>(medians.size()); ++i)
+  for (std::size_t i = 0; i < medians.size() && i < last.size(); ++i)
   {
-    int size[2];
-    bloom->GetProfiledPassSize(i, size);
+    const int* size = last[i].Size;
     const double t = medians[i].second;
-    const double b = bloom->GetProfiledPassBytes(i);
+    const double b = last[i].Bytes;
     const std::string& name = medians[i].first;
-    std::printf("| %d | %s | %dx%d | %.4f ms | %.2f | %.0f |\n", i, name.c_str(), size[0], size[1],
-      t, 1e-6 * b, t > 0.0 ? 1e-6 * b / t : 0.0);
+    std::printf("| %d | %s | %dx%d | %.4f ms | %.2f | %.0f |\n", static_cast<int>(i), name.c_str(),
+      size[0], size[1], t, 1e-6 * b, t > 0.0 ? 1e-6 * b / t : 0.0);
     total += t;
     bytes += b;
     if (name != "scene" && name != "emitters" && name != "depth" && name != "fxaa")
@@ -417,7 +419,7 @@ bool ProfilePasses(
       chainBytes += b;
     }
   }
-  bloom->ProfilePassesOff();
+  vtkBloomPassTesting::SetProfilePasses(bloom, false);
   const double frameMs = vtkBloomMedian(frameGPU), floorMs = vtkBloomMedian(floorGPU);
   std::printf("\nsum of the passes %.3f ms (%.1f MB); the chain and composite alone %.3f ms "
               "(%.1f MB, %.0f GB/s)\nunprofiled frames (GPU timer): with bloom %.3f ms, float "
@@ -744,23 +746,26 @@ bool OrbitTable(const std::string& scene, int width, int height, int frames)
 std::string PSFStages(vtkBloomFrameTimer& timer, const std::string& label)
 {
   vtkBloomPass* bloom = timer.Bloom;
-  bloom->ProfilePassesOn();
+  vtkBloomPassTesting::SetProfilePasses(bloom, true);
   std::map<std::string, std::vector<double>> ms;
   std::vector<std::string> order;
   for (int f = -1; f < 5; ++f)
   {
     timer.Frame(vtkBloomFrameTimer::BLOOM);
-    for (int i = 0; f >= 0 && i < bloom->GetNumberOfProfiledPasses(); ++i)
+    if (f < 0)
     {
-      const std::string name = bloom->GetProfiledPassName(i);
-      if (ms.find(name) == ms.end())
+      continue; // a first frame, untimed
+    }
+    for (const auto& pass : vtkBloomPassTesting::GetProfile(bloom))
+    {
+      if (ms.find(pass.Name) == ms.end())
       {
-        order.push_back(name);
+        order.push_back(pass.Name);
       }
-      ms[name].push_back(bloom->GetProfiledPassMilliseconds(i));
+      ms[pass.Name].push_back(pass.Milliseconds);
     }
   }
-  bloom->ProfilePassesOff();
+  vtkBloomPassTesting::SetProfilePasses(bloom, false);
   std::string row = "| " + label + " |";
   for (const std::string& name : order)
   {
@@ -901,7 +906,7 @@ bool PSFTable(const std::string& scene, int width, int height, int frames)
       return false;
     }
   }
-  std::printf("\nThe bloom frame's passes (vtkBloomPass::ProfilePasses), medians of 5 frames, ms "
+  std::printf("\nThe bloom frame's passes (the pass's profile), medians of 5 frames, ms "
               "(a split PSF: the spread onto the grid, the tail's FFT there, then the core with "
               "the tail added)\n"
               "| PSF, radius, split, grid | bright pass | rows | columns | multiply | inverse "
@@ -977,28 +982,26 @@ bool SelectiveTable(const std::string& scene, int width, int height, int frames)
     const vtkBloomFrameStatistics bloom(row.GPU);
     // Then the profile of the same frame, run alone.
     std::vector<double> spans[3]; // scene, emitters, chain
-    pass->ProfilePassesOn();
+    vtkBloomPassTesting::SetProfilePasses(pass, true);
     for (int f = -1; f < std::min(frames, 20); ++f)
     {
       row.Timer->Frame(row.Kind);
       double sum[3] = { 0.0, 0.0, 0.0 };
-      for (int i = 0; i < pass->GetNumberOfProfiledPasses(); ++i)
+      for (const auto& entry : vtkBloomPassTesting::GetProfile(pass))
       {
-        const std::string name = pass->GetProfiledPassName(i);
+        const std::string& name = entry.Name;
         if (name == "depth" || name == "fxaa")
         {
           continue; // after the chain, outside this table's three spans
         }
-        sum[name == "scene"      ? 0
-            : name == "emitters" ? 1
-                                 : 2] += pass->GetProfiledPassMilliseconds(i);
+        sum[name == "scene" ? 0 : name == "emitters" ? 1 : 2] += entry.Milliseconds;
       }
       for (int k = 0; f >= 0 && k < 3; ++k)
       {
         spans[k].push_back(sum[k]);
       }
     }
-    pass->ProfilePassesOff();
+    vtkBloomPassTesting::SetProfilePasses(pass, false);
     std::printf("| %s | %d | %.3f | %.3f | %.3f | %.3f | %+.3f | %.3f | %.3f | %.3f |\n", row.Name,
       pass->GetLastEmissionInSceneRender() || row.Kind == vtkBloomFrameTimer::ALTERNATIVE ? 1 : 2,
       bloom.Median, bloom.Mean, bloom.P99, bloom.Max, bloom.Mean - whole.Mean,
@@ -1044,10 +1047,10 @@ bool RenderersTable(const std::string& scene, int width, int height, int frames)
     pass->SetParameters(defaults);
     pass->SetDelegatePass(steps);
     pass->SetUseComputeShaders(!Fragment);
-    pass->SetFuseSeparablePasses(!Pairs);
+    vtkBloomPassTesting::SetFuseSeparablePasses(pass, !Pairs);
     if (SingleDraw >= 0)
     {
-      pass->SetSingleDrawSamples(SingleDraw);
+      vtkBloomPassTesting::SetSingleDrawSamples(pass, SingleDraw);
     }
     renderers.push_back(renderer);
     passes.push_back(pass);

@@ -73,10 +73,10 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   settings.Parameters = self->Parameters;
   settings.Restrict = self->Parameters->GetRestrictToBrightRegion();
   settings.UseCompute = self->UseComputeShaders;
-  settings.SimulateComputeFailure = self->SimulateComputeShaderFailure;
-  settings.SingleDrawSamples = self->SingleDrawSamples;
-  settings.FuseSeparablePasses = self->FuseSeparablePasses;
-  settings.Profiling = self->ProfilePasses;
+  settings.SimulateComputeFailure = this->Switches.SimulateComputeShaderFailure;
+  settings.SingleDrawSamples = this->Switches.SingleDrawSamples;
+  settings.FuseSeparablePasses = this->Switches.FuseSeparablePasses;
+  settings.Profiling = this->Switches.ProfilePasses;
   this->Runner.BeginFrame(settings);
   // An image (ApplyToImage): thresholded whole, its own background, into its own target.
   this->Light.InAlpha = false;
@@ -300,7 +300,6 @@ vtkBloomPass::vtkBloomPass()
   , LastPSFGrid{ 0, 0 }
   , NumberOfPasses(0)
   , LastBloomSkipped(false)
-  , ProfilePasses(false)
   , Internals(new vtkInternals(this))
 {
 }
@@ -434,7 +433,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   in.PlanWhatBlooms(this, s, selective);
   // The called framebuffer's depth buffer, shared with the scene's render, must cover the
   // same pixels; the emitters' second render needs the scene's depth as the pass's own texture.
-  in.ShareDepth = in.ShareWindowDepth && x == 0 && y == 0 && !(selective && !inScene);
+  in.ShareDepth = in.Switches.ShareWindowDepth && x == 0 && y == 0 && !(selective && !inScene);
   if (this->CaptureResult)
   {
     res.Result.Allocate(window, w, h, GL_RGBA32F);
@@ -444,7 +443,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   state->PushFramebufferBindings();
   // The delegate writes the float colour and a 32-bit depth once (the profile's lower bound).
   const double sceneBytes = (res.Format == GL_RGBA32F ? 20.0 : 12.0) * w * h;
-  in.BeginSpan(this);
+  in.BeginSpan();
   in.RenderDelegate(this, s, res.Scene, props, count,
     inScene ? vtkInternals::SCENE_AND_EMISSION : vtkInternals::SCENE);
   if (res.BackgroundMode == vtkBloomPassResources::BACKGROUND_TEXTURE)
@@ -452,14 +451,14 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     vtkBloomPassBackground::Draw(res, r, x, y, w, h);
   }
   this->SceneRendered(s, res.Scene.Color);
-  in.EndSpan(this, "scene", w, h, sceneBytes);
+  in.EndSpan("scene", w, h, sceneBytes);
   if (selective && !inScene)
   {
     std::vector<vtkProp*>& emitters = in.Emission.SecondRender;
-    in.BeginSpan(this);
+    in.BeginSpan();
     in.RenderDelegate(this, s, res.Emitter, emitters.data(), static_cast<int>(emitters.size()),
       vtkInternals::EMITTERS);
-    in.EndSpan(this, "emitters", w, h, sceneBytes);
+    in.EndSpan("emitters", w, h, sceneBytes);
   }
 
   // 2. The chain into the pass's own targets; for a tile of a kept frame (KeptFrameMode), that
@@ -486,9 +485,9 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // label mapper hides the labels of points the scene covers), a pass around this one.
   if (!in.DepthShared)
   {
-    in.BeginSpan(this);
+    in.BeginSpan();
     in.Depth.Write(window, res.Scene.Depth, x, y, w, h, tile.Inner);
-    in.EndSpan(this, "depth", w, h, 8.0 * w * h);
+    in.EndSpan("depth", w, h, 8.0 * w * h);
   }
   // The renderer's viewport again (the scene's render had the part's, a tile with its band),
   // for what follows and reads it: the FXAA, the annotations.
@@ -499,15 +498,15 @@ void vtkBloomPass::Render(const vtkRenderState* s)
   // Inside other passes (ParaView's own FXAA pass, a tone mapping) FXAA is theirs to apply.
   if (fxaa)
   {
-    in.BeginSpan(this);
+    in.BeginSpan();
     in.ApplyFXAA(static_cast<vtkOpenGLRenderer*>(r));
-    in.EndSpan(this, "fxaa", w, h, 8.0 * w * h);
+    in.EndSpan("fxaa", w, h, 8.0 * w * h);
   }
   // 5. The annotations, over the bloom; the delegate's steps as they were.
   this->NumberOfRenderedProps += in.Steps.RenderOverlay(s, x, y, w, h);
   in.Report(this);
   this->NumberOfPasses = in.Runner.GetPasses();
-  if (this->ProfilePasses)
+  if (in.Switches.ProfilePasses)
   {
     in.Runner.ResolveProfile();
   }
@@ -718,11 +717,6 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "LastEmissionInSceneRender: " << (this->LastEmissionInSceneRender ? "On" : "Off")
      << "\n";
   os << indent << "UseComputeShaders: " << (this->UseComputeShaders ? "On" : "Off") << "\n";
-  os << indent
-     << "SimulateComputeShaderFailure: " << (this->SimulateComputeShaderFailure ? "On" : "Off")
-     << "\n";
-  os << indent << "SingleDrawSamples: " << this->SingleDrawSamples << "\n";
-  os << indent << "FuseSeparablePasses: " << (this->FuseSeparablePasses ? "On" : "Off") << "\n";
   os << indent << "ThresholdSamples: " << (this->ThresholdSamples ? "On" : "Off") << "\n";
   os << indent << "LastComputePasses: " << this->LastComputePasses << "\n";
   os << indent << "CaptureResult: " << (this->CaptureResult ? "On" : "Off") << "\n";
@@ -733,7 +727,6 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
      << this->LastBrightRegion[1] << " " << this->LastBrightRegion[2] << " "
      << this->LastBrightRegion[3] << "\n";
   os << indent << "LastChainCoverage: " << this->LastChainCoverage << "\n";
-  os << indent << "ProfilePasses: " << (this->ProfilePasses ? "On" : "Off") << "\n";
   os << indent << "Parameters:\n";
   this->Parameters->PrintSelf(os, indent.GetNextIndent());
 }

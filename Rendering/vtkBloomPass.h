@@ -45,7 +45,7 @@
 #include "vtkSmartPointer.h"         // For the parameters
 
 #include <memory> // For the internal state
-#include <string> // For the profile's pass names
+#include <string> // For the shader replacements
 
 class vtkActor;
 class vtkImageData;
@@ -129,32 +129,6 @@ public:
 
   ///@{
   /**
-   * A pass of the chain with at most this many output samples runs as one draw (one compute
-   * dispatch), its operators evaluated from their tables; a larger pass is drawn in pieces (the
-   * operators' periodic interiors and their borders). Both give the same bits (tested). Default
-   * -1, automatic: 2^21 on a GPU (every pass of a 1920 x 1080 frame), 0 on a CPU rasterizer
-   * (llvmpipe, softpipe, SwiftShader), where a table fetch per tap costs more than a draw; 0:
-   * every pass in pieces. The measurements behind the default: docs/gpu.md.
-   */
-  vtkSetClampMacro(SingleDrawSamples, int, -1, VTK_INT_MAX);
-  vtkGetMacro(SingleDrawSamples, int);
-  ///@}
-
-  ///@{
-  /**
-   * A separable pair of passes (a term's x half into a scratch target, then its y half) that is
-   * one draw (SingleDrawSamples) of compute shaders runs as one dispatch, whose 16 x 16 work
-   * groups sum the source rows they read once, in shared memory. The same sums in the same
-   * order, so the same bits (tested); the default chain's 32 dependent dispatches become 11
-   * (docs/gpu.md). Default on.
-   */
-  vtkSetMacro(FuseSeparablePasses, bool);
-  vtkGetMacro(FuseSeparablePasses, bool);
-  vtkBooleanMacro(FuseSeparablePasses, bool);
-  ///@}
-
-  ///@{
-  /**
    * Where the scene is multisampled (the framebuffer the pass renders into has samples), the
    * bright pass thresholds each sample and takes their mean, before the chain's resample,
    * instead of thresholding the resolved pixel. A thin line or point covering part of a pixel
@@ -168,16 +142,6 @@ public:
   vtkSetMacro(ThresholdSamples, bool);
   vtkGetMacro(ThresholdSamples, bool);
   vtkBooleanMacro(ThresholdSamples, bool);
-  ///@}
-
-  ///@{
-  /**
-   * For tests: make every compute program fail to build, as a driver's compiler might. A
-   * compute variant that does not build is not fatal: the pass warns once and runs that
-   * variant's passes as fragment passes, with the same result. Default off.
-   */
-  vtkSetMacro(SimulateComputeShaderFailure, bool);
-  vtkGetMacro(SimulateComputeShaderFailure, bool);
   ///@}
 
   /// The passes of the last evaluation that ran as compute shaders (of GetNumberOfPasses()).
@@ -308,39 +272,6 @@ public:
   /// (0 untiled); the scene and emission read-backs hold the tile and its band.
   vtkGetVector2Macro(LastTileGuardBand, int);
 
-  /**
-   * One bloomed frame for all the tiles of a frame larger than the window, where a tile cannot
-   * be rendered with a guard band: ParaView under IceT, which composites the window's size
-   * only, renders the frame whole first (at the window resized to it), then the tiles.
-   * - KEPT_FRAME_KEEP: a render also keeps the frame it writes: the renderer's pixels after
-   *   the composite (before the FXAA and the annotations), what lay below included where the
-   *   composite blends over it, read back as float RGBA (16 bytes a pixel on the CPU, so that
-   *   it outlives the context: an OSMesa window's resize releases every GPU resource).
-   * - KEPT_FRAME_SERVE: a render of a tile (the window's TileScale above 1) of a frame the kept
-   *   one's size writes the kept frame's part instead of blooming: no chain runs, and no guard
-   *   band is rendered, but the scene is (its delegate's render may be a collective one); the
-   *   kept pixels replace the tile's, and the FXAA and the annotations follow as in any
-   *   render. Where no frame of that size is kept, the tile blooms alone, said once.
-   * - KEPT_FRAME_OFF (the default): neither. The kept frame stays until ReleaseKeptFrame().
-   */
-  enum KeptFrameModes
-  {
-    KEPT_FRAME_OFF = 0,
-    KEPT_FRAME_KEEP = 1,
-    KEPT_FRAME_SERVE = 2
-  };
-  ///@{
-  /// See KeptFrameModes; other values are refused with an error.
-  void SetKeptFrameMode(int mode);
-  vtkGetMacro(KeptFrameMode, int);
-  ///@}
-  /// Free the kept frame; the window's context must be current.
-  void ReleaseKeptFrame();
-  /// The kept frame's size, 0 x 0 when none is kept.
-  void GetKeptFrameSize(int size[2]);
-  /// Whether the last render wrote a part of the kept frame (KEPT_FRAME_SERVE).
-  vtkGetMacro(LastTileFromKeptFrame, bool);
-
   ///@{
   /// The shader replacement that writes the emission (vtkOpenGLRenderPass's API).
   bool PreReplaceShaderValues(std::string& vertexShader, std::string& geometryShader,
@@ -445,40 +376,6 @@ public:
    */
   double GetLastChainMilliseconds();
 
-  ///@{
-  /**
-   * Per-pass GPU profile, for benchmarks (off by default). With ProfilePasses on, every GPU
-   * pass of a render (the delegate's scene, the emitters, each pass of the chain and the
-   * composite, the depth's write where the scene could not render into the window's depth
-   * buffer, the renderer's FXAA) is bracketed by two GL timestamp queries (glQueryCounter with
-   * GL_TIMESTAMP, OpenGL 3.3 or ARB_timer_query), and the end of Render() waits for the GPU to read
-   * them, so a profiled frame is slower than an unprofiled one: profile in frames that are not
-   * timed otherwise. Timestamps rather than GL_TIME_ELAPSED, so that a caller may still time the
-   * whole frame with a GL_TIME_ELAPSED query. Off, it costs one test per pass. The profile
-   * holds the entries of the last render; it is empty when profiling is off.
-   */
-  vtkSetMacro(ProfilePasses, bool);
-  vtkGetMacro(ProfilePasses, bool);
-  vtkBooleanMacro(ProfilePasses, bool);
-  ///@}
-
-  ///@{
-  /**
-   * The entries of the last profiled render, in the order the GPU ran them: a name such as
-   * "scene", "bright L0", "blur-x L3" or "composite"; the size in pixels the entry wrote; its
-   * GPU time in milliseconds; and its compulsory memory traffic in bytes (every texture it
-   * reads read once, its target written once and read again when it blends; for "scene" and
-   * "emitters", the float colour and the 32-bit depth written once; "depth" and "fxaa" outside
-   * the chain, after the composite). An index out of range
-   * gives an empty name and zeros.
-   */
-  int GetNumberOfProfiledPasses();
-  std::string GetProfiledPassName(int i);
-  void GetProfiledPassSize(int i, int size[2]);
-  double GetProfiledPassMilliseconds(int i);
-  double GetProfiledPassBytes(int i);
-  ///@}
-
 protected:
   vtkBloomPass();
   ~vtkBloomPass() override;
@@ -499,6 +396,40 @@ protected:
    */
   void SetSceneBackground(const double rgba[4]);
 
+  /**
+   * For a subclass that serves every tile of a frame larger than the window from one bloomed
+   * frame, where a tile cannot be rendered with a guard band: ParaView's vtkPVBloomPass under
+   * IceT, which composites the window's size only, renders the frame whole first (at the
+   * window resized to it), then the tiles. A subclass makes these public where it needs them.
+   * - KEPT_FRAME_KEEP: a render also keeps the frame it writes: the renderer's pixels after
+   *   the composite (before the FXAA and the annotations), what lay below included where the
+   *   composite blends over it, read back as float RGBA (16 bytes a pixel on the CPU, so that
+   *   it outlives the context: an OSMesa window's resize releases every GPU resource).
+   * - KEPT_FRAME_SERVE: a render of a tile (the window's TileScale above 1) of a frame the kept
+   *   one's size writes the kept frame's part instead of blooming: no chain runs, and no guard
+   *   band is rendered, but the scene is (its delegate's render may be a collective one); the
+   *   kept pixels replace the tile's, and the FXAA and the annotations follow as in any
+   *   render. Where no frame of that size is kept, the tile blooms alone, said once.
+   * - KEPT_FRAME_OFF (the default): neither. The kept frame stays until ReleaseKeptFrame().
+   */
+  enum KeptFrameModes
+  {
+    KEPT_FRAME_OFF = 0,
+    KEPT_FRAME_KEEP = 1,
+    KEPT_FRAME_SERVE = 2
+  };
+  ///@{
+  /// See KeptFrameModes; other values are refused with an error.
+  void SetKeptFrameMode(int mode);
+  vtkGetMacro(KeptFrameMode, int);
+  ///@}
+  /// Free the kept frame; the window's context must be current.
+  void ReleaseKeptFrame();
+  /// The kept frame's size, 0 x 0 when none is kept.
+  void GetKeptFrameSize(int size[2]);
+  /// Whether the last render wrote a part of the kept frame (KEPT_FRAME_SERVE).
+  vtkGetMacro(LastTileFromKeptFrame, bool);
+
   vtkSmartPointer<vtkBloomParameters> Parameters;
   vtkPropCollection* Emitters;
   int FloatPrecision;
@@ -515,9 +446,6 @@ protected:
   int KeptFrameMode = KEPT_FRAME_OFF;
   bool LastTileFromKeptFrame = false;
   bool UseComputeShaders;
-  bool SimulateComputeShaderFailure = false;
-  int SingleDrawSamples = -1;
-  bool FuseSeparablePasses = true;
   bool ThresholdSamples = true;
   int LastComputePasses;
   bool CaptureResult;
@@ -526,7 +454,6 @@ protected:
   int LastPSFGrid[2];
   int NumberOfPasses;
   bool LastBloomSkipped;
-  bool ProfilePasses;
 
 private:
   vtkBloomPass(const vtkBloomPass&) = delete;

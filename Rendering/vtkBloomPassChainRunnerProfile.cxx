@@ -1,6 +1,6 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 // SPDX-License-Identifier: BSD-3-Clause
-// The opt-in per-pass profile of vtkBloomPassChainRunner (vtkBloomPass::ProfilePasses): a
+// The opt-in per-pass profile of vtkBloomPassChainRunner (vtkBloomPassTesting::SetProfilePasses): a
 // timestamp query at each end of a pass, the pass's size and its compulsory memory traffic, and
 // the resolution of the queries once the frame is done. The chain itself is in
 // vtkBloomPassChainRunner.cxx; Pass() calls in here only when profiling is on.

@@ -129,8 +129,8 @@ public:
    */
   bool Prepare(vtkOpenGLRenderWindow* context, int width, int height, std::string& why);
 
-  /// Optional timing of Convolve's stages (vtkBloomPass::ProfilePasses): Begin before each
-  /// stage, End after it with the stage's name and its compulsory memory traffic in bytes.
+  /// Optional timing of Convolve's stages (vtkBloomPassTesting::SetProfilePasses): Begin before
+  /// each stage, End after it with the stage's name and its compulsory memory traffic in bytes.
   struct StageTimer
   {
     std::function<void()> Begin;

@@ -102,7 +102,7 @@ bool vtkBloomPass::ApplyToImage(
   in.Report(this);
   state->PopFramebufferBindings();
   this->NumberOfPasses = in.Runner.GetPasses();
-  if (this->ProfilePasses)
+  if (this->Internals->Switches.ProfilePasses)
   {
     in.Runner.ResolveProfile();
   }
@@ -184,39 +184,4 @@ bool vtkBloomPass::ReadResultImage(vtkImageData* image)
     return false;
   }
   return res.Result.Read(res.Context, image);
-}
-//------------------------------------------------------------------------------
-int vtkBloomPass::GetNumberOfProfiledPasses()
-{
-  return static_cast<int>(this->Internals->Runner.GetProfile().size());
-}
-
-//------------------------------------------------------------------------------
-std::string vtkBloomPass::GetProfiledPassName(int i)
-{
-  const auto& profile = this->Internals->Runner.GetProfile();
-  return i >= 0 && i < static_cast<int>(profile.size()) ? profile[i].Name : std::string();
-}
-
-//------------------------------------------------------------------------------
-void vtkBloomPass::GetProfiledPassSize(int i, int size[2])
-{
-  const auto& profile = this->Internals->Runner.GetProfile();
-  const bool in = i >= 0 && i < static_cast<int>(profile.size());
-  size[0] = in ? profile[i].Size[0] : 0;
-  size[1] = in ? profile[i].Size[1] : 0;
-}
-
-//------------------------------------------------------------------------------
-double vtkBloomPass::GetProfiledPassMilliseconds(int i)
-{
-  const auto& profile = this->Internals->Runner.GetProfile();
-  return i >= 0 && i < static_cast<int>(profile.size()) ? profile[i].Milliseconds : 0.0;
-}
-
-//------------------------------------------------------------------------------
-double vtkBloomPass::GetProfiledPassBytes(int i)
-{
-  const auto& profile = this->Internals->Runner.GetProfile();
-  return i >= 0 && i < static_cast<int>(profile.size()) ? profile[i].Bytes : 0.0;
 }

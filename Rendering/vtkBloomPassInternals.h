@@ -125,13 +125,22 @@ public:
     }
     this->FXAA->Execute(renderer);
   }
+  /// The switches that only tests and benchmarks set (vtkBloomPassTesting.h says what each
+  /// does).
+  struct
+  {
+    bool SimulateComputeShaderFailure = false;
+    int SingleDrawSamples = -1; ///< automatic
+    bool FuseSeparablePasses = true;
+    bool ProfilePasses = false;
+    bool ShareWindowDepth = true;
+  } Switches;
   vtkBloomPassDepth Depth; ///< the scene's depth where the frame is composited
   /// The framebuffer the pass was called with (its GL name), whose depth buffer the scene's
   /// render may write (vtkBloomPassDepth::Share), and whether this frame's did: DepthShared
   /// says whether a Depth.Write() is still owed.
   unsigned int CalledFramebuffer = 0;
-  bool ShareWindowDepth = true; ///< off only for tests (vtkBloomPassTesting)
-  bool ShareDepth = false;      ///< this frame may share it
+  bool ShareDepth = false; ///< this frame may share it
   bool DepthShared = false;
   vtkBloomPassFFT FFT;           ///< PSF mode's convolution
   vtkBloomPassPSFSplit PSFSplit; ///< a split PSF's (PSFTailScale > 1, a tail left)
@@ -236,17 +245,18 @@ public:
     count = static_cast<int>(this->TileProps.size());
   }
 
-  /// A span of the frame in the profile (vtkBloomPass::ProfilePasses), outside the chain.
-  void BeginSpan(vtkBloomPass* self)
+  /// A span of the frame in the profile (vtkBloomPassTesting::SetProfilePasses), outside the
+  /// chain.
+  void BeginSpan()
   {
-    if (self->ProfilePasses)
+    if (this->Switches.ProfilePasses)
     {
       this->Runner.BeginProfiledSpan();
     }
   }
-  void EndSpan(vtkBloomPass* self, const char* name, int w, int h, double bytes)
+  void EndSpan(const char* name, int w, int h, double bytes)
   {
-    if (self->ProfilePasses)
+    if (this->Switches.ProfilePasses)
     {
       this->Runner.EndProfiledSpan(name, w, h, bytes);
     }

@@ -88,7 +88,7 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self)
     return false;
   }
   std::string why;
-  if (self->SimulateComputeShaderFailure)
+  if (this->Switches.SimulateComputeShaderFailure)
   {
     why = "PSF bloom's compute programs did not build (simulated for a test).";
   }
@@ -120,13 +120,14 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self)
   {
     return false;
   }
-  // With ProfilePasses each stage of the convolution is a profiled span, sized as the grid.
+  // Profiled (vtkBloomPassTesting::SetProfilePasses), each stage of the convolution is a profiled
+  // span, sized as the grid.
   vtkBloomPassFFT::StageTimer timer;
   timer.Begin = [this] { this->Runner.BeginProfiledSpan(); };
   timer.End = [this, grid](const char* name, double bytes)
   { this->Runner.EndProfiledSpan(name, grid[0], grid[1], bytes); };
   const bool reflect = self->Parameters->GetPSFBorderMode() == vtkImageSeparableGaussian::REFLECT;
-  vtkBloomPassFFT::StageTimer* stages = self->ProfilePasses ? &timer : nullptr;
+  vtkBloomPassFFT::StageTimer* stages = this->Switches.ProfilePasses ? &timer : nullptr;
   if (this->UsePSFSplit)
   {
     this->PSFSplit.Convolve(res.PSFBright.Color, res.PSFBloom.Color, reflect, stages);

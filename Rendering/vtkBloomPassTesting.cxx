@@ -1,18 +1,66 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 // SPDX-License-Identifier: BSD-3-Clause
-// The tests' switches of vtkBloomPass (see vtkBloomPassTesting.h).
+// The tests' switches of vtkBloomPass and its profile (see vtkBloomPassTesting.h).
 #include "vtkBloomPassTesting.h"
 
 #include "vtkBloomPassInternals.h"
 
+#include <algorithm>
+
 //------------------------------------------------------------------------------
 void vtkBloomPassTesting::SetShareWindowDepth(vtkBloomPass* pass, bool share)
 {
-  pass->Internals->ShareWindowDepth = share;
+  pass->Internals->Switches.ShareWindowDepth = share;
+  pass->Modified();
 }
 
 //------------------------------------------------------------------------------
 bool vtkBloomPassTesting::GetShareWindowDepth(vtkBloomPass* pass)
 {
-  return pass->Internals->ShareWindowDepth;
+  return pass->Internals->Switches.ShareWindowDepth;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassTesting::SetSimulateComputeShaderFailure(vtkBloomPass* pass, bool fail)
+{
+  pass->Internals->Switches.SimulateComputeShaderFailure = fail;
+  pass->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassTesting::SetSingleDrawSamples(vtkBloomPass* pass, int samples)
+{
+  pass->Internals->Switches.SingleDrawSamples = std::max(-1, samples);
+  pass->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassTesting::SetFuseSeparablePasses(vtkBloomPass* pass, bool fuse)
+{
+  pass->Internals->Switches.FuseSeparablePasses = fuse;
+  pass->Modified();
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassTesting::SetProfilePasses(vtkBloomPass* pass, bool profile)
+{
+  pass->Internals->Switches.ProfilePasses = profile;
+  pass->Modified();
+}
+
+//------------------------------------------------------------------------------
+std::vector<vtkBloomPassTesting::ProfiledPass> vtkBloomPassTesting::GetProfile(vtkBloomPass* pass)
+{
+  std::vector<ProfiledPass> profile;
+  for (const auto& entry : pass->Internals->Runner.GetProfile())
+  {
+    ProfiledPass copy;
+    copy.Name = entry.Name;
+    copy.Size[0] = entry.Size[0];
+    copy.Size[1] = entry.Size[1];
+    copy.Milliseconds = entry.Milliseconds;
+    copy.Bytes = entry.Bytes;
+    profile.push_back(copy);
+  }
+  return profile;
 }

@@ -19,7 +19,7 @@
 #                    over the plain frame and over the cheapest float copy by the mean, and the
 #                    bloom frame's median, mean, p99 and maximum
 #   fusion.md        the default preset's frame time and four renderers with
-#                    vtkBloomPass::FuseSeparablePasses off (BloomPassFrameTime --pairs)
+#                    vtkBloomPassTesting::SetFuseSeparablePasses off (BloomPassFrameTime --pairs)
 #   samples.md       the default preset in a window of 4 samples, each sample thresholded
 #                    (vtkBloomPass::ThresholdSamples), then after the resolve (--resolved)
 #   renderers.md     four bloomed renderers in one window (2 x 2 viewports) against the same

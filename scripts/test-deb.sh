@@ -79,7 +79,7 @@ $SUDO unshare -m --propagation private -- /bin/bash -c '
   exec chroot "$root" /usr/bin/env -i HOME=/root PATH=/usr/local/bin:/usr/bin:/bin:/usr/sbin:/sbin \
     LANG=C.UTF-8 TERM="${TERM:-dumb}" /bin/bash "$@"
 ' test-deb "$bare" "$run" "$root" "$archives" \
-  "$root/scripts/lib/deb-test-in-root.sh" "$debs" || status=$?
+  "$root/scripts/lib/deb-test-in-root.sh" "$debs" "$suite" || status=$?
 if [ "$status" -eq 0 ]; then
   echo "test-deb: $suite: all passed ($((SECONDS - start)) s)"
 else

@@ -28,8 +28,9 @@
 #                                  in a clean Debian 12 root (made once and cached) and runs
 #                                  the tool, the Python package, a find_package(VTKBloom)
 #                                  consumer, the ParaView plugin in pvbatch and lintian there.
-#                                  `--deb --sid`: the same for Debian sid (build-deb-sid/). .ci/run
-#                                  runs --deb.
+#                                  `--deb --sid`: the same for Debian sid (build-deb-sid/), where
+#                                  PyVista 0.49 finds plotter.bloom and pyvista.read('x.exr')
+#                                  with no import of vtkbloom. .ci/run runs both.
 #   bash scripts/test.sh --asan    AddressSanitizer + UndefinedBehaviorSanitizer build in
 #                                  build-asan/ (system VTK, under Xvfb)
 #   bash scripts/test.sh --valgrind the hostile-file tests (damaged corpus, hostile headers,

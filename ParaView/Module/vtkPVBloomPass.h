@@ -41,6 +41,19 @@ public:
   /// Whether the last render bloomed IceT's float composite.
   vtkGetMacro(LastSceneWasComposited, bool);
 
+  ///@{
+  /// The kept frame (vtkBloomPass::KeptFrameModes), through which the view serves each tile of
+  /// a screenshot larger than the window from one bloomed frame (vtkPVBloomRenderView).
+  using vtkBloomPass::GetKeptFrameMode;
+  using vtkBloomPass::GetKeptFrameSize;
+  using vtkBloomPass::GetLastTileFromKeptFrame;
+  using vtkBloomPass::KEPT_FRAME_KEEP;
+  using vtkBloomPass::KEPT_FRAME_OFF;
+  using vtkBloomPass::KEPT_FRAME_SERVE;
+  using vtkBloomPass::ReleaseKeptFrame;
+  using vtkBloomPass::SetKeptFrameMode;
+  ///@}
+
 protected:
   vtkPVBloomPass();
   ~vtkPVBloomPass() override;

@@ -34,7 +34,7 @@
  * the screenshot has no seams. Under IceT (several ranks) IceT composites the window's size, one
  * tile at a time, so a tile cannot have a guard band: at the first
  * tile every rank renders the whole frame once, at the window resized to it, and the root keeps
- * its bloomed frame; each tile then writes its part of it (vtkBloomPass::KeptFrameMode). A
+ * its bloomed frame; each tile then writes its part of it (vtkPVBloomPass::SetKeptFrameMode). A
  * parallel server does the same, with its client's last camera (see RenderWholeFrame).
  *
  * With ParaView's tone mapping on (UseToneMapping), the tone mapping pass stays outermost and
@@ -117,7 +117,7 @@ protected:
   /**
    * A screenshot in tiles under IceT (TilesFromWholeFrame): at the first tile every rank
    * renders the whole frame first, at the window resized to it (RenderWholeFrame), and the
-   * root's pass keeps it; the tiles are served from it (vtkBloomPass::KeptFrameMode). A
+   * root's pass keeps it; the tiles are served from it (vtkPVBloomPass::SetKeptFrameMode). A
    * server's root renders it without its client (RenderWithoutClient), with the client's last
    * camera, and checks that camera when the first tile's arrives (CheckFirstTileCamera).
    */

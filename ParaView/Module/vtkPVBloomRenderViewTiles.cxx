@@ -90,7 +90,7 @@ void vtkPVBloomRenderView::Render(bool interactive, bool skip_rendering)
     this->RenderWholeFrame(interactive);
   }
   this->BloomPass->SetKeptFrameMode(
-    served ? vtkBloomPass::KEPT_FRAME_SERVE : vtkBloomPass::KEPT_FRAME_OFF);
+    served ? vtkPVBloomPass::KEPT_FRAME_SERVE : vtkPVBloomPass::KEPT_FRAME_OFF);
   this->Superclass::Render(interactive, skip_rendering);
   this->CheckFirstTileCamera();
   // The last tile (vtkWindowToImageFilter renders the top right one last), or any other render:
@@ -133,7 +133,7 @@ void vtkPVBloomRenderView::RenderWholeFrame(bool interactive)
   window->SetSize(size[0] * scale[0], size[1] * scale[1]);
   // The root keeps the frame its bloom writes (the composite, before FXAA and annotations);
   // IceT composites it in float, as a view of that size would be.
-  this->BloomPass->SetKeptFrameMode(vtkBloomPass::KEPT_FRAME_KEEP);
+  this->BloomPass->SetKeptFrameMode(vtkPVBloomPass::KEPT_FRAME_KEEP);
   this->RenderWithoutClient(interactive);
   window->SetSize(size[0], size[1]);
   window->SetTileViewport(tile);

@@ -40,7 +40,7 @@
   writes the rows to a target and reads them back in a second dispatch. Here each 16 x 16 work
   group first sums the at most TILE_ROWS source rows its outputs read, for its 16 columns, into
   shared memory, then each output sums its column's rows through the y operator: the same sums
-  in the same order as the separable pair (vtkBloomPass::FuseSeparablePasses), kept in 32-bit
+  in the same order as the separable pair (vtkBloomPassTesting::SetFuseSeparablePasses), kept in 32-bit
   floats as the exact mode's targets keep them: the same bits.
 
   TILE2: a second separable term of the same output, from its own source and operators (both

@@ -242,6 +242,37 @@ class Accessor(unittest.TestCase):
             grey.bloom.apply()
 
 
+def docstring_frames(source, plain):
+    """The frames a docstring's examples grab (plotter.screenshot), run as one script, as
+    client_examples.py runs PyVista's own; `plain` runs them with plotter.bloom's enable and
+    add_emitter doing nothing: the frame the same lines give without bloom. Each frame is kept
+    with whether the plotter's passes ran their chain (the frame had light)."""
+    from vtkbloom import pyvista_plugin as plugin
+
+    frames, screenshot = [], pv.Plotter.screenshot
+    kept = {name: getattr(plugin.PlotterBloom, name) for name in ("enable", "add_emitter")}
+
+    def grab(plotter, *args, **kwargs):
+        image = screenshot(plotter, *args, **kwargs)
+        passes = vtkbloom.get_bloom(plotter)
+        passes = passes if isinstance(passes, list) else [passes]
+        light = any(p is not None and not p.GetLastBloomSkipped() for p in passes)
+        frames.append((np.array(image, copy=True), light))
+        return image
+
+    pv.Plotter.screenshot = grab
+    if plain:
+        plugin.PlotterBloom.enable = lambda self, *a, **k: None
+        plugin.PlotterBloom.add_emitter = lambda self, *a, **k: None
+    try:
+        exec(compile(source, "<docstring>", "exec"), {"__name__": "__docstring__"})
+    finally:
+        pv.Plotter.screenshot = screenshot
+        for name, method in kept.items():
+            setattr(plugin.PlotterBloom, name, method)
+    return frames
+
+
 class Examples(unittest.TestCase):
     def test_every_docstring_example_runs(self):
         import vtkbloom.pyvista_plugin as plugin
@@ -249,6 +280,39 @@ class Examples(unittest.TestCase):
         result = doctest.testmod(plugin, optionflags=doctest.ELLIPSIS)
         self.assertGreaterEqual(result.attempted, 20)
         self.assertEqual(result.failed, 0)
+
+    def test_docstring_frames_compared_as_client_examples_does(self):
+        # client_examples.py's comparison: the plain frame renders the same twice, and so does
+        # the bloomed one; a frame without light is the plain frame within a level; a frame with
+        # light glows over areas, not at thin edges (client_examples' hint at a wrong
+        # composite: lines and text). Not "only brighter": the default preset mixes the bloom
+        # into the scene (energy-conserving), so a bright emitter's core darkens.
+        import client_examples
+        import vtkbloom.pyvista_plugin as plugin
+
+        compared = 0
+        for test in doctest.DocTestFinder(exclude_empty=True).find(plugin):
+            source = "".join(e.source for e in test.examples)
+            if "screenshot(" not in source:
+                continue
+            with self.subTest(test.name):
+                plain = [docstring_frames(source, plain=True) for _ in range(2)]
+                bloomed = [docstring_frames(source, plain=False) for _ in range(2)]
+                self.assertGreater(len(plain[0]), 0)
+                self.assertEqual(len({len(f) for f in plain + bloomed}), 1)
+                for (a, _), (b, _), (c, light), (d, _) in zip(*plain, *bloomed):
+                    np.testing.assert_array_equal(a, b)
+                    np.testing.assert_array_equal(c, d)
+                    result = client_examples.compare(a, c)
+                    if "bloom.add_emitter(" in source:
+                        self.assertTrue(light, "an emitter was added, and nothing glowed")
+                    if light:
+                        self.assertGreater(result["changed_fraction"], 0.01, result)
+                        self.assertLess(result["thin_share"], 0.05, result)
+                    else:
+                        self.assertLessEqual(result["max_diff"], 1, result)
+                    compared += 1
+        self.assertGreaterEqual(compared, 1)
 
 
 if __name__ == "__main__":

@@ -7,6 +7,7 @@
 #include "vtkBloomExampleScenes.h"
 #include "vtkBloomPass.h"
 #include "vtkBloomPassTestWindow.h"
+#include "vtkBloomPassTesting.h"
 #include "vtkBloomTestSupport.h"
 
 #include "vtkActor.h"
@@ -359,9 +360,9 @@ TEST(RenderingBloomPass, NoErrorsOrGrowthOverManyFramesWithResizes)
 }
 
 //------------------------------------------------------------------------------
-// ProfilePasses lists every GPU pass of the render (the delegate's scene and emitters, the
-// chain, the composite and the captured copy) with its size, traffic and GPU time, and changes
-// nothing in the image; off, the profile is empty.
+// The profile (vtkBloomPassTesting::SetProfilePasses) lists every GPU pass of the render (the
+// delegate's scene and emitters, the chain, the composite and the captured copy) with its
+// size, traffic and GPU time, and changes nothing in the image; off, the profile is empty.
 TEST(RenderingBloomPass, ProfilesEveryPassWithoutChangingTheImage)
 {
   for (const char* scene : { "lit-spheres", "scalar-field", "scalar-field two renders" })
@@ -379,9 +380,9 @@ TEST(RenderingBloomPass, ProfilesEveryPassWithoutChangingTheImage)
     const bool selective = w.Bloom->GetEmissionSource() == vtkBloomPass::EMISSION_EMITTERS &&
       !w.Bloom->GetLastEmissionInSceneRender();
     ASSERT_TRUE(w.Bloom->ReadResultImage(plain));
-    EXPECT_EQ(w.Bloom->GetNumberOfProfiledPasses(), 0);
+    EXPECT_TRUE(vtkBloomPassTesting::GetProfile(w.Bloom).empty());
 
-    w.Bloom->ProfilePassesOn();
+    vtkBloomPassTesting::SetProfilePasses(w.Bloom, true);
     w.Window->Render();
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << scene;
     ASSERT_TRUE(w.Bloom->ReadResultImage(profiled));
@@ -393,44 +394,40 @@ TEST(RenderingBloomPass, ProfilesEveryPassWithoutChangingTheImage)
 
     // The chain's passes, then the frame's own spans: the scene (and the emitters) before,
     // the depth's write after it where the scene did not render into the window's depth.
-    int n = w.Bloom->GetNumberOfProfiledPasses();
-    if (n > 0 && w.Bloom->GetProfiledPassName(n - 1) == "depth")
+    std::vector<vtkBloomPassTesting::ProfiledPass> profile =
+      vtkBloomPassTesting::GetProfile(w.Bloom);
+    if (!profile.empty() && profile.back().Name == "depth")
     {
-      --n;
+      profile.pop_back();
     }
+    const int n = static_cast<int>(profile.size());
     ASSERT_EQ(n, w.Bloom->GetNumberOfPasses() + (selective ? 2 : 1)) << scene;
     EXPECT_GT(w.Bloom->GetNumberOfPasses(), 10) << scene;
-    EXPECT_EQ(w.Bloom->GetProfiledPassName(0), "scene");
-    EXPECT_EQ(w.Bloom->GetProfiledPassName(1), selective ? "emitters" : "bright L0");
-    EXPECT_EQ(w.Bloom->GetProfiledPassName(n - 2), "composite");
-    EXPECT_EQ(w.Bloom->GetProfiledPassName(n - 1), "copy");
+    EXPECT_EQ(profile[0].Name, "scene");
+    EXPECT_EQ(profile[1].Name, selective ? "emitters" : "bright L0");
+    EXPECT_EQ(profile[n - 2].Name, "composite");
+    EXPECT_EQ(profile[n - 1].Name, "copy");
     double total = 0.0;
     for (int i = 0; i < n; ++i)
     {
-      int size[2];
-      w.Bloom->GetProfiledPassSize(i, size);
-      EXPECT_FALSE(w.Bloom->GetProfiledPassName(i).empty()) << i;
-      EXPECT_GT(size[0], 0) << i;
-      EXPECT_GT(size[1], 0) << i;
-      EXPECT_LE(size[0], 200) << i;
-      EXPECT_LE(size[1], 120) << i;
+      const vtkBloomPassTesting::ProfiledPass& pass = profile[i];
+      EXPECT_FALSE(pass.Name.empty()) << i;
+      EXPECT_GT(pass.Size[0], 0) << i;
+      EXPECT_GT(pass.Size[1], 0) << i;
+      EXPECT_LE(pass.Size[0], 200) << i;
+      EXPECT_LE(pass.Size[1], 120) << i;
       // At least the target written once, in RGBA32F.
-      EXPECT_GE(w.Bloom->GetProfiledPassBytes(i), 16.0 * size[0] * size[1]) << i;
-      const double ms = w.Bloom->GetProfiledPassMilliseconds(i);
-      EXPECT_TRUE(std::isfinite(ms) && ms >= 0.0 && ms < 1e4) << i << " " << ms;
-      total += ms;
+      EXPECT_GE(pass.Bytes, 16.0 * pass.Size[0] * pass.Size[1]) << i;
+      EXPECT_TRUE(
+        std::isfinite(pass.Milliseconds) && pass.Milliseconds >= 0.0 && pass.Milliseconds < 1e4)
+        << i << " " << pass.Milliseconds;
+      total += pass.Milliseconds;
     }
     EXPECT_GT(total, 0.0) << scene;
-    int size[2];
-    const int all = w.Bloom->GetNumberOfProfiledPasses();
-    w.Bloom->GetProfiledPassSize(all, size);
-    EXPECT_EQ(w.Bloom->GetProfiledPassName(all), "");
-    EXPECT_EQ(size[0], 0);
-    EXPECT_EQ(w.Bloom->GetProfiledPassMilliseconds(-1), 0.0);
 
-    w.Bloom->ProfilePassesOff();
+    vtkBloomPassTesting::SetProfilePasses(w.Bloom, false);
     w.Window->Render();
-    EXPECT_EQ(w.Bloom->GetNumberOfProfiledPasses(), 0);
+    EXPECT_TRUE(vtkBloomPassTesting::GetProfile(w.Bloom).empty());
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR)) << scene;
   }
 }

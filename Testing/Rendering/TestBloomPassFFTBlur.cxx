@@ -10,6 +10,7 @@
 #include "vtkBloomParameters.h"
 #include "vtkBloomPass.h"
 #include "vtkBloomPassTestWindow.h"
+#include "vtkBloomPassTesting.h"
 #include "vtkBloomTestSupport.h"
 
 #include "vtkBloomVTKCompat.h"
@@ -76,9 +77,9 @@ vtkSmartPointer<vtkImageData> SpotImage(int width, int height)
 std::vector<std::string> PassNames(vtkBloomPass* bloom)
 {
   std::vector<std::string> names;
-  for (int i = 0; !bloom->GetProfiledPassName(i).empty(); ++i)
+  for (const auto& pass : vtkBloomPassTesting::GetProfile(bloom))
   {
-    names.push_back(bloom->GetProfiledPassName(i));
+    names.push_back(pass.Name);
   }
   return names;
 }
@@ -131,7 +132,7 @@ Result Agreement(const std::string& which, int mode, int width, int height, bool
   w.Bloom->GetParameters()->SetConvolutionMode(mode);
   w.Bloom->SetFloatPrecision(precision);
   w.Bloom->SetUseComputeShaders(compute);
-  w.Bloom->ProfilePassesOn();
+  vtkBloomPassTesting::SetProfilePasses(w.Bloom, true);
   vtkSmartPointer<vtkImageData> input = SpotImage(width, height);
   vtkNew<vtkImageData> gpu;
   Result r;

@@ -198,20 +198,18 @@ void ExpectWithin(const std::string& scene, int viewports, int samples, const Bu
   std::vector<std::string> full;
   for (const auto& pass : w.Passes)
   {
-    pass->ProfilePassesOn();
+    vtkBloomPassTesting::SetProfilePasses(pass, true);
     w.Window->Render();
     const double part = static_cast<double>(Width) / viewports * Height;
-    for (int i = 0; i < pass->GetNumberOfProfiledPasses(); ++i)
+    for (const auto& entry : vtkBloomPassTesting::GetProfile(pass))
     {
-      int size[2];
-      pass->GetProfiledPassSize(i, size);
-      bytes += pass->GetProfiledPassBytes(i);
-      if (static_cast<double>(size[0]) * size[1] >= 0.99 * part)
+      bytes += entry.Bytes;
+      if (static_cast<double>(entry.Size[0]) * entry.Size[1] >= 0.99 * part)
       {
-        full.push_back(pass->GetProfiledPassName(i));
+        full.push_back(entry.Name);
       }
     }
-    pass->ProfilePassesOff();
+    vtkBloomPassTesting::SetProfilePasses(pass, false);
   }
   std::string names;
   for (const std::string& name : full)

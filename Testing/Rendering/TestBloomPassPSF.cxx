@@ -9,6 +9,7 @@
 #include "vtkBloomParameters.h"
 #include "vtkBloomPass.h"
 #include "vtkBloomPassTestWindow.h"
+#include "vtkBloomPassTesting.h"
 #include "vtkBloomTestSupport.h"
 
 #include "vtkBloomVTKCompat.h"
@@ -528,13 +529,13 @@ TEST(RenderingBloomPassPSF, ADeltaBloomsIntoThePSFItself)
 //------------------------------------------------------------------------------
 TEST(RenderingBloomPassPSF, WithoutComputeShadersTheSceneRendersUnbloomedWithOneError)
 {
-  // vtkBloomPass::SimulateComputeShaderFailure stands for a context without OpenGL 4.3.
+  // vtkBloomPassTesting::SetSimulateComputeShaderFailure stands for a context without OpenGL 4.3.
   BloomWindow w(120, 90);
   ASSERT_TRUE(vtkBloomBuildExampleScene("lit-spheres", w.Renderer, w.Bloom));
   w.Bloom->SetEmissionSourceToScene();
   w.Bloom->SetFloatPrecisionTo32Bit();
   w.Bloom->GetParameters()->SetBloomModeToPSF();
-  w.Bloom->SetSimulateComputeShaderFailure(true);
+  vtkBloomPassTesting::SetSimulateComputeShaderFailure(w.Bloom, true);
   w.Bloom->CaptureResultOn();
   vtkNew<vtkBloomTest::EventCounter> errors;
   w.Bloom->AddObserver(vtkCommand::ErrorEvent, errors);

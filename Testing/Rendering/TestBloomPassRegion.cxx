@@ -7,6 +7,7 @@
 #include "vtkBloomOpenGLEnvironment.h"
 #include "vtkBloomParameters.h"
 #include "vtkBloomPass.h"
+#include "vtkBloomPassTesting.h"
 #include "vtkBloomTestSupport.h"
 
 #include "vtkBloomVTKCompat.h"
@@ -242,10 +243,10 @@ TEST(RenderingBloomPassRegion, RenderedFrameIsBitIdentical)
 }
 
 //------------------------------------------------------------------------------
-// A small pass in one draw, its operators from their tables (SingleDrawSamples, the default at
-// this size on a GPU), and every pass in pieces (periodic interiors from uniform weights, borders
-// from the tables): the same weights, taps and order, so the same bits, for every preset, as
-// compute and as fragment passes.
+// A small pass in one draw, its operators from their tables
+// (vtkBloomPassTesting::SetSingleDrawSamples, the default at this size on a GPU), and every pass in
+// pieces (periodic interiors from uniform weights, borders from the tables): the same weights, taps
+// and order, so the same bits, for every preset, as compute and as fragment passes.
 TEST(RenderingBloomPassRegion, SingleDrawsGiveTheSameBits)
 {
   vtkSmartPointer<vtkImageData> input =
@@ -258,9 +259,10 @@ TEST(RenderingBloomPassRegion, SingleDrawsGiveTheSameBits)
       UsePreset(gpu.Pass, preset);
       gpu.Pass->SetFloatPrecisionTo32Bit();
       gpu.Pass->SetUseComputeShaders(compute);
-      gpu.Pass->SetSingleDrawSamples(512 * 512); // the automatic value is 0 on llvmpipe
+      vtkBloomPassTesting::SetSingleDrawSamples(
+        gpu.Pass, 512 * 512); // the automatic value is 0 on llvmpipe
       vtkSmartPointer<vtkImageData> single = gpu.Apply(input);
-      gpu.Pass->SetSingleDrawSamples(0);
+      vtkBloomPassTesting::SetSingleDrawSamples(gpu.Pass, 0);
       vtkSmartPointer<vtkImageData> pieces = gpu.Apply(input);
       EXPECT_TRUE(SameBits(single, pieces)) << preset << (compute ? ", compute" : ", fragment");
     }
@@ -268,11 +270,11 @@ TEST(RenderingBloomPassRegion, SingleDrawsGiveTheSameBits)
 }
 
 //------------------------------------------------------------------------------
-// A separable pair of passes as one tiled compute dispatch (FuseSeparablePasses: the x sums in
-// shared memory) and as two passes through a target: the same bits, for every preset, with
-// either precision of the scene (the exact chain's own targets are 32-bit floats), full and
-// restricted to the bright region (whose tiles start at the region, not at 0); and the default
-// chain runs in fewer passes.
+// A separable pair of passes as one tiled compute dispatch
+// (vtkBloomPassTesting::SetFuseSeparablePasses: the x sums in shared memory) and as two passes
+// through a target: the same bits, for every preset, with either precision of the scene (the exact
+// chain's own targets are 32-bit floats), full and restricted to the bright region (whose tiles
+// start at the region, not at 0); and the default chain runs in fewer passes.
 TEST(RenderingBloomPassRegion, FusedSeparablePassesGiveTheSameBits)
 {
   vtkSmartPointer<vtkImageData> input =
@@ -289,11 +291,12 @@ TEST(RenderingBloomPassRegion, FusedSeparablePassesGiveTheSameBits)
         UsePreset(gpu.Pass, preset);
         gpu.Pass->SetFloatPrecision(precision);
         gpu.Pass->GetParameters()->SetRestrictToBrightRegion(restrict);
-        gpu.Pass->SetSingleDrawSamples(512 * 512); // the automatic value is 0 on llvmpipe
-        gpu.Pass->FuseSeparablePassesOn();
+        vtkBloomPassTesting::SetSingleDrawSamples(
+          gpu.Pass, 512 * 512); // the automatic value is 0 on llvmpipe
+        vtkBloomPassTesting::SetFuseSeparablePasses(gpu.Pass, true);
         vtkSmartPointer<vtkImageData> fused = gpu.Apply(input);
         const int fusedPasses = gpu.Pass->GetNumberOfPasses();
-        gpu.Pass->FuseSeparablePassesOff();
+        vtkBloomPassTesting::SetFuseSeparablePasses(gpu.Pass, false);
         vtkSmartPointer<vtkImageData> pairs = gpu.Apply(input);
         const int pairPasses = gpu.Pass->GetNumberOfPasses();
         EXPECT_TRUE(SameBits(fused, pairs)) << what;
@@ -644,7 +647,7 @@ TEST(RenderingBloomPassCompute, FailedComputeProgramFallsBackToFragments)
     LitSpheres run;
     ASSERT_TRUE(run.Build());
     run.Bloom->SetUseComputeShaders(simulate); // off: the reference fragment passes
-    run.Bloom->SetSimulateComputeShaderFailure(simulate);
+    vtkBloomPassTesting::SetSimulateComputeShaderFailure(run.Bloom, simulate);
     vtkNew<WarningLog> warnings;
     run.Bloom->AddObserver(vtkCommand::WarningEvent, warnings);
     run.Bloom->AddObserver(vtkCommand::ErrorEvent, warnings);

@@ -325,6 +325,24 @@ double LargestDifference(const Frame& a, const Frame& b)
 
 }
 
+// The kept frame is protected in vtkBloomPass, for a subclass: this one makes it public as
+// ParaView's vtkPVBloomPass does.
+class vtkKeepingBloomPass : public vtkBloomPass
+{
+public:
+  static vtkKeepingBloomPass* New();
+  vtkTypeMacro(vtkKeepingBloomPass, vtkBloomPass);
+  using vtkBloomPass::GetKeptFrameMode;
+  using vtkBloomPass::GetKeptFrameSize;
+  using vtkBloomPass::GetLastTileFromKeptFrame;
+  using vtkBloomPass::KEPT_FRAME_KEEP;
+  using vtkBloomPass::KEPT_FRAME_OFF;
+  using vtkBloomPass::KEPT_FRAME_SERVE;
+  using vtkBloomPass::ReleaseKeptFrame;
+  using vtkBloomPass::SetKeptFrameMode;
+};
+vtkStandardNewMacro(vtkKeepingBloomPass);
+
 //------------------------------------------------------------------------------
 // ParaView's way under IceT (vtkPVBloomRenderView), where a tile cannot have a guard band: the
 // frame rendered whole at the window resized to it and kept (KEPT_FRAME_KEEP), then the tiles
@@ -343,7 +361,7 @@ TEST(RenderingBloomPassTiles, TilesServedFromAKeptFrameAreThatFrame)
     vtkNew<vtkRenderer> renderer;
     const double dark[3] = { 0.05, 0.05, 0.08 };
     Populate(renderer, dark);
-    vtkNew<vtkBloomPass> pass;
+    vtkNew<vtkKeepingBloomPass> pass;
     vtkNew<vtkRenderStepsPass> steps;
     pass->SetDelegatePass(steps);
     pass->SetSeamlessTiles(false);
@@ -351,7 +369,7 @@ TEST(RenderingBloomPassTiles, TilesServedFromAKeptFrameAreThatFrame)
     window->AddRenderer(renderer);
 
     window->SetSize(w * scale, h * scale);
-    pass->SetKeptFrameMode(vtkBloomPass::KEPT_FRAME_KEEP);
+    pass->SetKeptFrameMode(vtkKeepingBloomPass::KEPT_FRAME_KEEP);
     window->Render();
     const Frame whole = Grab(window, 1);
     int kept[2];
@@ -360,7 +378,7 @@ TEST(RenderingBloomPassTiles, TilesServedFromAKeptFrameAreThatFrame)
     EXPECT_EQ(kept[1], h * scale);
 
     window->SetSize(w, h);
-    pass->SetKeptFrameMode(vtkBloomPass::KEPT_FRAME_SERVE);
+    pass->SetKeptFrameMode(vtkKeepingBloomPass::KEPT_FRAME_SERVE);
     const Frame served = Grab(window, scale);
     EXPECT_TRUE(pass->GetLastTileFromKeptFrame());
     const double off = LargestDifference(served, whole);
@@ -385,11 +403,11 @@ TEST(RenderingBloomPassTiles, TilesServedFromAKeptFrameAreThatFrame)
 //------------------------------------------------------------------------------
 TEST(RenderingBloomPassTiles, AnUnknownKeptFrameModeIsRefused)
 {
-  vtkNew<vtkBloomPass> pass;
+  vtkNew<vtkKeepingBloomPass> pass;
   vtkNew<vtkBloomTest::EventCounter> errors;
   pass->AddObserver(vtkCommand::ErrorEvent, errors);
   pass->SetKeptFrameMode(3);
   pass->SetKeptFrameMode(-1);
   EXPECT_EQ(errors->Count, 2);
-  EXPECT_EQ(pass->GetKeptFrameMode(), vtkBloomPass::KEPT_FRAME_OFF);
+  EXPECT_EQ(pass->GetKeptFrameMode(), vtkKeepingBloomPass::KEPT_FRAME_OFF);
 }
