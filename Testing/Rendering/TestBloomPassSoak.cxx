@@ -321,7 +321,13 @@ void ExpectFlat(const char* what, int renderers, int width, int height,
   // the bound keeps 128 MiB of slack and still catches it; the release build has none.
   const double slack = 128.0 * 1024.0;
 #else
-  const double slack = 0.0;
+  // Without it, the resident memory of a session that holds nothing still moves by its
+  // allocators' plateaus (glibc's heap, and on a CPU rasterizer llvmpipe's textures, which are
+  // host memory): the tiles, renderers and windows soak measured -7.1 to +11.7 MiB on CI's two
+  // cores (VTK 9.1 under Xvfb, VTK 9.6 through EGL and through X), against a bound of one set
+  // of 10.4 MiB. A leak of one target per event (a swap, a grab, a toggle: 20 or more per
+  // soak) is tens of sets, so 16 MiB of slack keeps the check and loses the noise.
+  const double slack = 16.0 * 1024.0;
 #endif
   EXPECT_LT(bloom.Host - std::max(plain.Host, 0.0), bound + slack)
     << what << ": the bloom's session grew by more than one set of the pass's targets";
