@@ -391,126 +391,171 @@ void vtkBloomPass::Render(const vtkRenderState* s)
     vtkErrorMacro(<< "vtkBloomPass needs a vtkOpenGLRenderWindow.");
     return;
   }
-  int x, y, w, h;
-  RenderedPart(s, x, y, w, h);
-  if (w <= 0 || h <= 0)
+  vtkInternals::Frame frame;
+  RenderedPart(s, frame.X, frame.Y, frame.Width, frame.Height);
+  if (frame.Width <= 0 || frame.Height <= 0)
+  {
+    return;
+  }
+  const vtkBloomPassSavedState saved(window->GetState());
+  vtkInternals& in = *this->Internals;
+  if (!in.PlanFrame(this, s, window, frame))
   {
     return;
   }
   vtkOpenGLState* state = window->GetState();
-  const vtkBloomPassSavedState saved(state);
-  vtkInternals& in = *this->Internals;
-  vtkBloomPassResources& res = in.Resources;
+  state->PushFramebufferBindings();
+  in.RenderScene(this, s, frame);
+  const bool bloom = in.BloomIntoTargets(this, state, frame);
+  state->PopFramebufferBindings();
+  in.CompositeIntoFramebuffer(this, window, frame, bloom);
+  in.FinishFrame(this, s, frame);
+  vtkOpenGLCheckErrorMacro("failed after vtkBloomPass::Render");
+}
+
+//------------------------------------------------------------------------------
+bool vtkBloomPass::vtkInternals::PlanFrame(
+  vtkBloomPass* self, const vtkRenderState* s, vtkOpenGLRenderWindow* window, Frame& frame)
+{
+  vtkRenderer* r = s->GetRenderer();
   GLint called = 0;
   glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &called);
-  in.CalledFramebuffer = static_cast<unsigned int>(called);
+  this->CalledFramebuffer = static_cast<unsigned int>(called);
   // Multisampling is kept: where the framebuffer the pass was called with has samples, the
   // scene renders with as many.
   GLint samples = 0;
   glGetIntegerv(GL_SAMPLES, &samples);
   // The part rendered: the renderer's tile, with its guard band where the frame is tiled, and
   // the props it shows.
-  vtkProp** props = s->GetPropArray();
-  int count = s->GetPropArrayCount();
-  in.PlanTile(this, r, w, h, props, count);
-  const vtkBloomPassTile& tile = in.Tile;
+  frame.Props = s->GetPropArray();
+  frame.Count = s->GetPropArrayCount();
+  this->PlanTile(self, r, frame.Width, frame.Height, frame.Props, frame.Count);
   // Selective bloom: in the scene's own render where it can be, else the emitters again.
-  const bool selective = this->EmissionSource == EMISSION_EMITTERS;
-  const bool inScene = selective &&
-    in.Emission.Plan(this->Emitters, props, count, this->DelegatePass, this->EmitInSceneRender);
-  this->LastEmissionInSceneRender = inScene;
+  frame.Selective = self->EmissionSource == EMISSION_EMITTERS;
+  frame.InScene = frame.Selective &&
+    this->Emission.Plan(
+      self->Emitters, frame.Props, frame.Count, self->DelegatePass, self->EmitInSceneRender);
+  frame.TwoRenders = frame.Selective && !frame.InScene;
+  self->LastEmissionInSceneRender = frame.InScene;
   // The renderer's FXAA, applied here, or a pass around this one processes the frame further.
-  const bool fxaa = r->GetUseFXAA() && r->GetPass() == this;
-  const bool processed = fxaa || r->GetPass() != this;
-  const int precision = this->FloatPrecision != FLOAT_AUTOMATIC ? this->FloatPrecision
+  frame.FXAA = r->GetUseFXAA() && r->GetPass() == self;
+  const bool processed = frame.FXAA || r->GetPass() != self;
+  const int precision = self->FloatPrecision != FLOAT_AUTOMATIC ? self->FloatPrecision
     : processed                                                 ? FLOAT32
                                                                 : FLOAT16;
-  if (!in.Prepare(
-        this, window, tile.Size[0], tile.Size[1], samples, selective && !inScene, precision))
+  if (!this->Prepare(
+        self, window, this->Tile.Size[0], this->Tile.Size[1], samples, frame.TwoRenders, precision))
   {
-    return;
+    return false;
   }
-  in.PlanWhatBlooms(this, s, selective);
+  this->PlanWhatBlooms(self, s, frame.Selective);
   // The called framebuffer's depth buffer, shared with the scene's render, must cover the
   // same pixels; the emitters' second render needs the scene's depth as the pass's own texture.
-  in.ShareDepth = in.Switches.ShareWindowDepth && x == 0 && y == 0 && !(selective && !inScene);
-  if (this->CaptureResult)
+  this->ShareDepth =
+    this->Switches.ShareWindowDepth && frame.X == 0 && frame.Y == 0 && !frame.TwoRenders;
+  if (self->CaptureResult)
   {
-    res.Result.Allocate(window, w, h, GL_RGBA32F);
+    this->Resources.Result.Allocate(window, frame.Width, frame.Height, GL_RGBA32F);
   }
+  return true;
+}
 
-  // 1. The scene (and, in one render, its emission), then any emitters on their own, in float.
-  state->PushFramebufferBindings();
+//------------------------------------------------------------------------------
+// 1. The scene (and, in one render, its emission), then any emitters on their own, in float.
+void vtkBloomPass::vtkInternals::RenderScene(
+  vtkBloomPass* self, const vtkRenderState* s, const Frame& frame)
+{
+  vtkBloomPassResources& res = this->Resources;
+  const int w = frame.Width, h = frame.Height;
   // The delegate writes the float colour and a 32-bit depth once (the profile's lower bound).
   const double sceneBytes = (res.Format == GL_RGBA32F ? 20.0 : 12.0) * w * h;
-  in.BeginSpan();
-  in.RenderDelegate(this, s, res.Scene, props, count,
-    inScene ? vtkInternals::SCENE_AND_EMISSION : vtkInternals::SCENE);
+  this->BeginSpan();
+  this->RenderDelegate(
+    self, s, res.Scene, frame.Props, frame.Count, frame.InScene ? SCENE_AND_EMISSION : SCENE);
   if (res.BackgroundMode == vtkBloomPassResources::BACKGROUND_TEXTURE)
   {
-    vtkBloomPassBackground::Draw(res, r, x, y, w, h);
+    vtkBloomPassBackground::Draw(res, s->GetRenderer(), frame.X, frame.Y, w, h);
   }
-  this->SceneRendered(s, res.Scene.Color);
-  in.EndSpan("scene", w, h, sceneBytes);
-  if (selective && !inScene)
+  self->SceneRendered(s, res.Scene.Color);
+  this->EndSpan("scene", w, h, sceneBytes);
+  if (frame.TwoRenders)
   {
-    std::vector<vtkProp*>& emitters = in.Emission.SecondRender;
-    in.BeginSpan();
-    in.RenderDelegate(this, s, res.Emitter, emitters.data(), static_cast<int>(emitters.size()),
-      vtkInternals::EMITTERS);
-    in.EndSpan("emitters", w, h, sceneBytes);
+    std::vector<vtkProp*>& emitters = this->Emission.SecondRender;
+    this->BeginSpan();
+    this->RenderDelegate(
+      self, s, res.Emitter, emitters.data(), static_cast<int>(emitters.size()), EMITTERS);
+    this->EndSpan("emitters", w, h, sceneBytes);
   }
+}
 
-  // 2. The chain into the pass's own targets; for a tile of a kept frame (KeptFrameMode), that
-  // frame's part staged instead. 3. Then into the framebuffer the pass was called with.
+//------------------------------------------------------------------------------
+// 2. The chain into the pass's own targets; for a tile of a kept frame (KeptFrameMode), that
+// frame's part staged instead.
+bool vtkBloomPass::vtkInternals::BloomIntoTargets(
+  vtkBloomPass* self, vtkOpenGLState* state, const Frame& frame)
+{
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  const bool twoRenders = selective && !inScene;
-  this->LastTileFromKeptFrame = in.StageServedTile(this, w, h);
-  const bool bloom = !this->LastTileFromKeptFrame && in.RunChain(this, inScene, twoRenders);
-  state->PopFramebufferBindings();
-  if (this->LastTileFromKeptFrame)
+  self->LastTileFromKeptFrame = this->StageServedTile(self, frame.Width, frame.Height);
+  return !self->LastTileFromKeptFrame && this->RunChain(self, frame.InScene, frame.TwoRenders);
+}
+
+//------------------------------------------------------------------------------
+// 3. Into the framebuffer the pass was called with, and the scene's depth under it where the
+// scene's render did not write that framebuffer's own.
+void vtkBloomPass::vtkInternals::CompositeIntoFramebuffer(
+  vtkBloomPass* self, vtkOpenGLRenderWindow* window, const Frame& frame, bool bloom)
+{
+  vtkOpenGLState* state = window->GetState();
+  const int x = frame.X, y = frame.Y, w = frame.Width, h = frame.Height;
+  if (self->LastTileFromKeptFrame)
   {
-    in.ServeTile(x, y);
+    this->ServeTile(x, y);
   }
   else
   {
-    in.Composite(this, x, y, bloom);
+    this->Composite(self, x, y, bloom);
   }
-  if (this->KeptFrameMode == KEPT_FRAME_KEEP)
+  if (self->KeptFrameMode == KEPT_FRAME_KEEP)
   {
-    in.KeepFramebuffer(state, x, y, w, h);
+    this->KeepFramebuffer(state, x, y, w, h);
   }
   // The scene's depth under the composited frame, for what reads it next: the annotations (a
   // label mapper hides the labels of points the scene covers), a pass around this one.
-  if (!in.DepthShared)
+  if (!this->DepthShared)
   {
-    in.BeginSpan();
-    in.Depth.Write(window, res.Scene.Depth, x, y, w, h, tile.Inner);
-    in.EndSpan("depth", w, h, 8.0 * w * h);
+    this->BeginSpan();
+    this->Depth.Write(window, this->Resources.Scene.Depth, x, y, w, h, this->Tile.Inner);
+    this->EndSpan("depth", w, h, 8.0 * w * h);
   }
   // The renderer's viewport again (the scene's render had the part's, a tile with its band),
   // for what follows and reads it: the FXAA, the annotations.
   state->vtkglViewport(x, y, w, h);
   state->vtkglScissor(x, y, w, h);
-  // 4. The renderer's FXAA, which VTK applies only where a renderer has no pass: where this
-  // pass is the renderer's, as the renderer applies it, to the frame without its annotations.
-  // Inside other passes (ParaView's own FXAA pass, a tone mapping) FXAA is theirs to apply.
-  if (fxaa)
+}
+
+//------------------------------------------------------------------------------
+// 4. The renderer's FXAA, which VTK applies only where a renderer has no pass: where this pass
+// is the renderer's, as the renderer applies it, to the frame without its annotations. Inside
+// other passes (ParaView's own FXAA pass, a tone mapping) FXAA is theirs to apply. 5. The
+// annotations, over the bloom; the delegate's steps as they were. Then what the frame did.
+void vtkBloomPass::vtkInternals::FinishFrame(
+  vtkBloomPass* self, const vtkRenderState* s, const Frame& frame)
+{
+  if (frame.FXAA)
   {
-    in.BeginSpan();
-    in.ApplyFXAA(static_cast<vtkOpenGLRenderer*>(r));
-    in.EndSpan("fxaa", w, h, 8.0 * w * h);
+    this->BeginSpan();
+    this->ApplyFXAA(static_cast<vtkOpenGLRenderer*>(s->GetRenderer()));
+    this->EndSpan("fxaa", frame.Width, frame.Height, 8.0 * frame.Width * frame.Height);
   }
-  // 5. The annotations, over the bloom; the delegate's steps as they were.
-  this->NumberOfRenderedProps += in.Steps.RenderOverlay(s, x, y, w, h);
-  in.Report(this);
-  this->NumberOfPasses = in.Runner.GetPasses();
-  if (in.Switches.ProfilePasses)
+  self->NumberOfRenderedProps +=
+    this->Steps.RenderOverlay(s, frame.X, frame.Y, frame.Width, frame.Height);
+  this->Report(self);
+  self->NumberOfPasses = this->Runner.GetPasses();
+  if (this->Switches.ProfilePasses)
   {
-    in.Runner.ResolveProfile();
+    this->Runner.ResolveProfile();
   }
-  vtkOpenGLCheckErrorMacro("failed after vtkBloomPass::Render");
 }
 
 //------------------------------------------------------------------------------

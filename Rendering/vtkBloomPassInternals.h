@@ -162,6 +162,27 @@ public:
   bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples,
     bool emitters, int precision);
 
+  /// What one Render() decides at its top, and its steps read.
+  struct Frame
+  {
+    int X = 0, Y = 0, Width = 0, Height = 0; ///< the renderer's part of the framebuffer
+    vtkProp** Props = nullptr;               ///< what the scene's render shows (a tile's own)
+    int Count = 0;
+    bool Selective = false;  ///< only the emitters bloom
+    bool InScene = false;    ///< their emission written in the scene's own render
+    bool TwoRenders = false; ///< the emitters rendered again, on their own
+    bool FXAA = false;       ///< the renderer's FXAA, applied by this pass
+  };
+  /// The frame's plan, the targets made ready for it; false where it cannot bloom (said).
+  bool PlanFrame(
+    vtkBloomPass* self, const vtkRenderState* s, vtkOpenGLRenderWindow* window, Frame& frame);
+  /// Render()'s steps, in their order.
+  void RenderScene(vtkBloomPass* self, const vtkRenderState* s, const Frame& frame);
+  bool BloomIntoTargets(vtkBloomPass* self, vtkOpenGLState* state, const Frame& frame);
+  void CompositeIntoFramebuffer(
+    vtkBloomPass* self, vtkOpenGLRenderWindow* window, const Frame& frame, bool bloom);
+  void FinishFrame(vtkBloomPass* self, const vtkRenderState* s, const Frame& frame);
+
   /// The part of the frame the coming render renders: the renderer's tiled size, or, in a
   /// tiled frame (SeamlessTiles), the tile and its guard band.
   vtkBloomPassTile Tile;
