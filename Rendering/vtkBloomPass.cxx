@@ -1,10 +1,11 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 // SPDX-License-Identifier: BSD-3-Clause
-// vtkBloomPass's render: the scene, the chain, the composite and the overlay, in Render() and
-// the internals' steps it calls (vtkBloomPassInternals.h), the kept frame of tiled screenshots
-// (KeptFrameMode) and the parameter plumbing. PSF mode's bright pass and convolution are in
-// vtkBloomPassPSFMode.cxx; ApplyToImage, the read-backs and the profile in
-// vtkBloomPassImages.cxx; the emitter API in vtkBloomPassEmitters.cxx.
+// vtkBloomPass's render: Render() plans the frame (PlanFrame), then the internals' steps
+// (vtkBloomPassInternals.h) render the scene, run the chain, composite and draw the overlay;
+// also the kept frame of tiled screenshots (KeptFrameMode) and the parameter plumbing. PSF
+// mode's bright pass and convolution are in vtkBloomPassPSFMode.cxx; ApplyToImage and the
+// read-backs in vtkBloomPassImages.cxx; the emitter API in vtkBloomPassEmitters.cxx; the
+// tests' switches and the profile in vtkBloomPassTesting.cxx.
 #include "vtkBloomPassInternals.h"
 
 #include "vtkDataArray.h"
