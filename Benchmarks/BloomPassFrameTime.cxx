@@ -212,7 +212,7 @@ bool TimeFrames(const std::string& scene, const std::string& preset, int width, 
               "%+.3f | %+.3f | %d | %.3f | %.3f | %.3f / %.3f | %+.3f | %+.3f |\n",
     scene.c_str(), preset.c_str(), width, height, plain.Mean, copy.Mean, blit.Mean, bloom.Median,
     bloom.Mean, bloom.P99, bloom.Max, bloom.Mean - plain.Mean, bloom.Mean - copy.Mean,
-    bloom.Median - copy.Median, timer.Bloom->GetNumberOfPasses(), plainCPU.Mean, copyCPU.Mean,
+    bloom.Median - copy.Median, timer.Bloom->GetLastFrame()->GetNumberOfPasses(), plainCPU.Mean, copyCPU.Mean,
     bloomCPU.Mean, bloomCPU.P99, bloomCPU.Mean - plainCPU.Mean, bloomCPU.Mean - copyCPU.Mean);
   std::fflush(stdout);
   return true;
@@ -400,7 +400,7 @@ bool ProfilePasses(
               "composite (the profile also lists the scene render)\n\n",
     scene.c_str(), preset.c_str(), Fragment ? " (fragment passes)" : "", width, height,
     bloom->GetFloatPrecision() == vtkBloomPass::FLOAT32 ? "float32" : "float16",
-    bloom->GetNumberOfPasses());
+    bloom->GetLastFrame()->GetNumberOfPasses());
   std::printf("| # | pass | size | GPU time | MB | GB/s |\n|---|---|---|---|---|---|\n");
   double total = 0.0, chain = 0.0, bytes = 0.0, chainBytes = 0.0;
   for (std::size_t i = 0; i < medians.size() && i < last.size(); ++i)
@@ -524,7 +524,7 @@ void QualityRow(vtkBloomFrameTimer& timer, const std::string& label, int frames,
   Errors(result, cpu->GetOutput(), l2, peak);
   double ms[3];
   TimeTwo(timer, frames, ms, 2);
-  const int passes = timer.Bloom->GetNumberOfPasses();
+  const int passes = timer.Bloom->GetLastFrame()->GetNumberOfPasses();
   std::printf(
     "| %s | %+.3f ms | %d | %.2e | %.2e |\n", label.c_str(), ms[1] - ms[0], passes, l2, peak);
   if (out.is_open())
@@ -621,7 +621,7 @@ bool SyncTable(const std::string& scene, int width, int height, int frames)
       const double floorMs = 1e3 * timer.LastGPUSeconds;
       const double floorSubmitMs = 1e3 * timer.LastSubmitSeconds;
       timer.Frame(vtkBloomFrameTimer::BLOOM);
-      measured += f >= 0 && timer.Bloom->GetLastChainCoverage() < 1.0 ? 1 : 0;
+      measured += f >= 0 && timer.Bloom->GetLastFrame()->GetChainCoverage() < 1.0 ? 1 : 0;
       if (f >= 0)
       {
         floorGPU.push_back(floorMs);
@@ -637,12 +637,12 @@ bool SyncTable(const std::string& scene, int width, int height, int frames)
     }
     std::printf("| %s | %+.3f ms | %.3f ms | %d |\n", names[mode],
       vtkBloomMedian(gpu) - vtkBloomMedian(floorGPU), vtkBloomMedian(submit),
-      timer.Bloom->GetNumberOfPasses());
+      timer.Bloom->GetLastFrame()->GetNumberOfPasses());
     if (mode == 0)
     {
       costs = "content-aware: " + std::to_string(measured) + " of " + std::to_string(frames) +
-        " frames restricted; measured cost " + std::to_string(timer.Bloom->GetRegionCost()) +
-        " ms with the region, " + std::to_string(timer.Bloom->GetFullCost()) +
+        " frames restricted; measured cost " + std::to_string(timer.Bloom->GetLastFrame()->GetRegionCost()) +
+        " ms with the region, " + std::to_string(timer.Bloom->GetLastFrame()->GetFullCost()) +
         " ms with the full chain (GPU, the chain's start to the composite's end)\n";
     }
     std::fflush(stdout);
@@ -676,12 +676,12 @@ bool SparseTable(int width, int height, int frames)
     double ms[3];
     TimeTwo(timer, frames, ms);
     int region[4];
-    timer.Alternative->GetLastBrightRegion(region);
+    timer.Alternative->GetLastFrame()->GetBrightRegion(region);
     std::printf(
       "| %g %% | %.3f ms | %+.3f ms | %+.3f ms | %.3f ms | %dx%d | %.3f | %d / %d | %s |\n",
       100.0 * fraction, ms[0], ms[1] - ms[0], ms[2] - ms[0], ms[1] - ms[2], region[1] - region[0],
-      region[3] - region[2], timer.Alternative->GetLastChainCoverage(),
-      timer.Bloom->GetNumberOfPasses(), timer.Alternative->GetNumberOfPasses(),
+      region[3] - region[2], timer.Alternative->GetLastFrame()->GetChainCoverage(),
+      timer.Bloom->GetLastFrame()->GetNumberOfPasses(), timer.Alternative->GetLastFrame()->GetNumberOfPasses(),
       same ? "yes" : "NO");
     std::fflush(stdout);
   }
@@ -691,7 +691,7 @@ bool SparseTable(int width, int height, int frames)
 // Stutter: FRAMES frames of an orbiting camera (half a degree a frame), after 16 of warm-up
 // (the first frames compile programs and learn what the bright region costs). The bloom's cost
 // per frame is the pass's own GPU time, from the bright pass to the end of the composite
-// (vtkBloomPass::GetLastChainMilliseconds), so the scene's own variation is not in it; its
+// (vtkBloomFrameReport::GetChainMilliseconds), so the scene's own variation is not in it; its
 // median, mean, p99 and maximum, and how many frames cost more than 1.5 times the median.
 bool OrbitTable(const std::string& scene, int width, int height, int frames)
 {
@@ -700,11 +700,12 @@ bool OrbitTable(const std::string& scene, int width, int height, int frames)
   {
     return false;
   }
+  vtkBloomPassTesting::SetTimeChains(timer.Bloom, true);
   std::vector<double> cost;
   for (int f = -16; f < frames; ++f)
   {
     timer.Frame(vtkBloomFrameTimer::BLOOM); // waits for the frame to complete
-    const double ms = timer.Bloom->GetLastChainMilliseconds();
+    const double ms = timer.Bloom->GetLastFrame()->GetChainMilliseconds();
     if (f >= 0 && ms >= 0.0)
     {
       cost.push_back(ms);
@@ -850,7 +851,7 @@ bool PSFRow(const std::string& scene, int width, int height, int frames, const P
       }
     }
   }
-  const int* grid = timer.Bloom->GetLastPSFGrid();
+  const int* grid = timer.Bloom->GetLastFrame()->GetPSFGrid();
   const vtkBloomFrameStatistics plain(gpu[0]), copy(gpu[1]), bloom(gpu[2]);
   const std::string gridText = grid[0] > 0 ? std::to_string(grid[0]) + "x" + std::to_string(grid[1])
                                            : std::string("refused: no bloom");
@@ -1003,7 +1004,7 @@ bool SelectiveTable(const std::string& scene, int width, int height, int frames)
     }
     vtkBloomPassTesting::SetProfilePasses(pass, false);
     std::printf("| %s | %d | %.3f | %.3f | %.3f | %.3f | %+.3f | %.3f | %.3f | %.3f |\n", row.Name,
-      pass->GetLastEmissionInSceneRender() || row.Kind == vtkBloomFrameTimer::ALTERNATIVE ? 1 : 2,
+      pass->GetLastFrame()->GetEmissionInSceneRender() || row.Kind == vtkBloomFrameTimer::ALTERNATIVE ? 1 : 2,
       bloom.Median, bloom.Mean, bloom.P99, bloom.Max, bloom.Mean - whole.Mean,
       vtkBloomMedian(spans[0]), vtkBloomMedian(spans[1]), vtkBloomMedian(spans[2]));
   }

@@ -1,11 +1,9 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 // SPDX-License-Identifier: BSD-3-Clause
 // vtkBloomPass's render: Render() plans the frame (PlanFrame), then the internals' steps
-// (vtkBloomPassInternals.h) render the scene, run the chain, composite and draw the overlay;
-// also the kept frame of tiled screenshots (KeptFrameMode) and the parameter plumbing. PSF
-// mode's bright pass and convolution are in vtkBloomPassPSFMode.cxx; ApplyToImage and the
-// read-backs in vtkBloomPassImages.cxx; the emitter API in vtkBloomPassEmitters.cxx; the
-// tests' switches and the profile in vtkBloomPassTesting.cxx.
+// (vtkBloomPassInternals.h) render the scene, run the chain, composite and draw the overlay,
+// and write what the frame did (vtkBloomFrameReport); also the kept frame of tiled screenshots
+// (KeptFrameMode) and the parameter plumbing. docs/architecture.md maps the pass's other files.
 #include "vtkBloomPassInternals.h"
 
 #include "vtkDataArray.h"
@@ -62,7 +60,7 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
     first->PopContext();
   }
   res.Context = window;
-  self->LastFloatPrecision = precision;
+  this->Report->FloatPrecision = precision;
   const unsigned int format = precision == FLOAT32 ? GL_RGBA32F : GL_RGBA16F;
   if (format != res.Format)
   {
@@ -125,7 +123,7 @@ void vtkBloomPass::vtkInternals::PlanTile(
   vtkBloomPassTile& tile = this->Tile;
   tile.Locate(r, w, h);
   std::fill(this->Output.Window, this->Output.Window + 4, 0);
-  std::fill(self->LastTileGuardBand, self->LastTileGuardBand + 2, 0);
+  std::fill(this->Report->TileGuardBand, this->Report->TileGuardBand + 2, 0);
   this->Serving = tile.Tiled && self->KeptFrameMode == KEPT_FRAME_SERVE;
   if (this->Serving)
   {
@@ -181,15 +179,15 @@ void vtkBloomPass::vtkInternals::PlanTile(
   window[1] = tile.Inner[0] + tile.TileSize[0];
   window[2] = tile.Inner[1];
   window[3] = tile.Inner[1] + tile.TileSize[1];
-  self->LastTileGuardBand[0] = tile.Size[0] - w;
-  self->LastTileGuardBand[1] = tile.Size[1] - h;
+  this->Report->TileGuardBand[0] = tile.Size[0] - w;
+  this->Report->TileGuardBand[1] = tile.Size[1] - h;
   this->PropsOfTile(r, props, count);
 }
 
 //------------------------------------------------------------------------------
 bool vtkBloomPass::vtkInternals::RunBloom(vtkBloomPass* self, vtkTextureObject* source, bool mask)
 {
-  self->LastPSFGrid[0] = self->LastPSFGrid[1] = 0;
+  this->Report->PSFGrid[0] = this->Report->PSFGrid[1] = 0;
   // A multisampled scene's samples, for a bright pass that thresholds each (the runner's bright
   // pass says where it applies: whole-scene bloom, with a threshold).
   const vtkBloomPassResources& res = this->Resources;
@@ -294,13 +292,7 @@ vtkBloomPass::vtkBloomPass()
   , FloatPrecision(FLOAT_AUTOMATIC)
   , EmissionSource(EMISSION_SCENE)
   , UseComputeShaders(true)
-  , LastComputePasses(0)
   , CaptureResult(false)
-  , LastBrightRegion{ 0, 0, 0, 0 }
-  , LastChainCoverage(1.0)
-  , LastPSFGrid{ 0, 0 }
-  , NumberOfPasses(0)
-  , LastBloomSkipped(false)
   , Internals(new vtkInternals(this))
 {
 }
@@ -368,7 +360,7 @@ void vtkBloomPass::Render(const vtkRenderState* s)
 {
   vtkOpenGLClearErrorMacro();
   this->NumberOfRenderedProps = 0;
-  this->NumberOfPasses = 0;
+  this->Internals->Report->NumberOfPasses = 0;
   if (!this->DelegatePass)
   {
     vtkWarningMacro(<< "No delegate in vtkBloomPass.");
@@ -437,7 +429,7 @@ bool vtkBloomPass::vtkInternals::PlanFrame(
     this->Emission.Plan(
       self->Emitters, frame.Props, frame.Count, self->DelegatePass, self->EmitInSceneRender);
   frame.TwoRenders = frame.Selective && !frame.InScene;
-  self->LastEmissionInSceneRender = frame.InScene;
+  this->Report->EmissionInSceneRender = frame.InScene;
   // The renderer's FXAA, applied here, or a pass around this one processes the frame further.
   frame.FXAA = r->GetUseFXAA() && r->GetPass() == self;
   const bool processed = frame.FXAA || r->GetPass() != self;
@@ -497,8 +489,8 @@ bool vtkBloomPass::vtkInternals::BloomIntoTargets(
 {
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
-  self->LastTileFromKeptFrame = this->StageServedTile(self, frame.Width, frame.Height);
-  return !self->LastTileFromKeptFrame && this->RunChain(self, frame.InScene, frame.TwoRenders);
+  this->Report->TileFromKeptFrame = this->StageServedTile(self, frame.Width, frame.Height);
+  return !this->Report->TileFromKeptFrame && this->RunChain(self, frame.InScene, frame.TwoRenders);
 }
 
 //------------------------------------------------------------------------------
@@ -509,7 +501,7 @@ void vtkBloomPass::vtkInternals::CompositeIntoFramebuffer(
 {
   vtkOpenGLState* state = window->GetState();
   const int x = frame.X, y = frame.Y, w = frame.Width, h = frame.Height;
-  if (self->LastTileFromKeptFrame)
+  if (this->Report->TileFromKeptFrame)
   {
     this->ServeTile(x, y);
   }
@@ -551,8 +543,7 @@ void vtkBloomPass::vtkInternals::FinishFrame(
   }
   self->NumberOfRenderedProps +=
     this->Steps.RenderOverlay(s, frame.X, frame.Y, frame.Width, frame.Height);
-  this->Report(self);
-  self->NumberOfPasses = this->Runner.GetPasses();
+  this->ReportChain();
   if (this->Switches.ProfilePasses)
   {
     this->Runner.ResolveProfile();
@@ -568,7 +559,7 @@ bool vtkBloomPass::vtkInternals::RunChain(vtkBloomPass* self, bool inScene, bool
   this->Output.EmissionInAlpha = inScene;
   const bool bloom =
     this->RunBloom(self, twoRenders ? res.Emitter.Color : res.Scene.Color, twoRenders);
-  self->LastBloomSkipped = !bloom;
+  this->Report->BloomSkipped = !bloom;
   // Into a multisampled framebuffer, the samples at anti-aliased edges are then composited from
   // the scene's own samples, as the renderer would have drawn them
   // (vtkBloomPassChainRunner::Output::SceneSamples). With two renders the multisampled target
@@ -634,7 +625,7 @@ bool vtkBloomPass::vtkInternals::StageServedTile(vtkBloomPass* self, int w, int 
   glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, first);
   glPixelStorei(GL_UNPACK_ROW_LENGTH, 0);
   staging.Color->Deactivate();
-  self->LastBloomSkipped = false;
+  this->Report->BloomSkipped = false;
   return true;
 }
 
@@ -712,27 +703,18 @@ bool vtkBloomPass::SetShaderParameters(vtkShaderProgram* program, vtkAbstractMap
 }
 
 //------------------------------------------------------------------------------
-double vtkBloomPass::GetRegionCost() const
+vtkBloomFrameReport* vtkBloomPass::GetLastFrame()
 {
-  return this->Internals->Runner.GetRegionCost();
-}
-
-//------------------------------------------------------------------------------
-double vtkBloomPass::GetFullCost() const
-{
-  return this->Internals->Runner.GetFullCost();
-}
-
-//------------------------------------------------------------------------------
-double vtkBloomPass::GetLastChainMilliseconds()
-{
-  vtkBloomPassResources& res = this->Internals->Resources;
-  if (!res.Context)
+  vtkInternals& in = *this->Internals;
+  vtkOpenGLRenderWindow* context = in.Resources.Context;
+  if (context && in.Runner.GetTimeEveryChain())
   {
-    return -1.0;
+    // The timestamps that have arrived since the frame, never waited for.
+    context->MakeCurrent();
+    in.Runner.CollectCostTimings();
+    in.ReportTimes();
   }
-  res.Context->MakeCurrent();
-  return this->Internals->Runner.CollectLastChainMilliseconds();
+  return in.Report;
 }
 
 //------------------------------------------------------------------------------
@@ -747,7 +729,6 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
 {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "FloatPrecision: " << this->FloatPrecision << "\n";
-  os << indent << "LastFloatPrecision: " << this->LastFloatPrecision << "\n";
   os << indent
      << "EmissionSource: " << (this->EmissionSource == EMISSION_EMITTERS ? "Emitters" : "Scene")
      << "\n";
@@ -758,21 +739,11 @@ void vtkBloomPass::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "BloomAnnotations: " << (this->BloomAnnotations ? "On" : "Off") << "\n";
   os << indent << "SeamlessTiles: " << (this->SeamlessTiles ? "On" : "Off") << "\n";
   os << indent << "KeptFrameMode: " << this->KeptFrameMode << "\n";
-  os << indent << "LastAnnotationsOverBloom: " << (this->LastAnnotationsOverBloom ? "On" : "Off")
-     << "\n";
-  os << indent << "LastEmissionInSceneRender: " << (this->LastEmissionInSceneRender ? "On" : "Off")
-     << "\n";
   os << indent << "UseComputeShaders: " << (this->UseComputeShaders ? "On" : "Off") << "\n";
   os << indent << "ThresholdSamples: " << (this->ThresholdSamples ? "On" : "Off") << "\n";
-  os << indent << "LastComputePasses: " << this->LastComputePasses << "\n";
   os << indent << "CaptureResult: " << (this->CaptureResult ? "On" : "Off") << "\n";
-  os << indent << "LastPSFGrid: " << this->LastPSFGrid[0] << " " << this->LastPSFGrid[1] << "\n";
-  os << indent << "NumberOfPasses: " << this->NumberOfPasses << "\n";
-  os << indent << "LastBloomSkipped: " << (this->LastBloomSkipped ? "On" : "Off") << "\n";
-  os << indent << "LastBrightRegion: " << this->LastBrightRegion[0] << " "
-     << this->LastBrightRegion[1] << " " << this->LastBrightRegion[2] << " "
-     << this->LastBrightRegion[3] << "\n";
-  os << indent << "LastChainCoverage: " << this->LastChainCoverage << "\n";
   os << indent << "Parameters:\n";
   this->Parameters->PrintSelf(os, indent.GetNextIndent());
+  os << indent << "LastFrame:\n";
+  this->Internals->Report->PrintSelf(os, indent.GetNextIndent());
 }

@@ -39,7 +39,8 @@
 #ifndef vtkBloomPass_h
 #define vtkBloomPass_h
 
-#include "vtkBloomParameters.h" // For GetParameters
+#include "vtkBloomFrameReport.h" // For GetLastFrame
+#include "vtkBloomParameters.h"  // For GetParameters
 #include "vtkImageProcessingPass.h"
 #include "vtkRenderingBloomModule.h" // For export macro
 #include "vtkSmartPointer.h"         // For the parameters
@@ -98,7 +99,7 @@ public:
    * 32-bit floats where the frame is processed further, by a pass around this one (tone
    * mapping's curve) or by the renderer's FXAA (its edge search), which would turn a half
    * float's rounding into steps of several levels. Any other value is refused with an error.
-   * GetLastFloatPrecision() is what the last render used (16 or 32).
+   * GetLastFrame()->GetFloatPrecision() is what the last render used (16 or 32).
    */
   enum
   {
@@ -111,7 +112,6 @@ public:
   void SetFloatPrecisionToAutomatic() { this->SetFloatPrecision(FLOAT_AUTOMATIC); }
   void SetFloatPrecisionTo16Bit() { this->SetFloatPrecision(FLOAT16); }
   void SetFloatPrecisionTo32Bit() { this->SetFloatPrecision(FLOAT32); }
-  vtkGetMacro(LastFloatPrecision, int);
   ///@}
 
   ///@{
@@ -143,9 +143,6 @@ public:
   vtkGetMacro(ThresholdSamples, bool);
   vtkBooleanMacro(ThresholdSamples, bool);
   ///@}
-
-  /// The passes of the last evaluation that ran as compute shaders (of GetNumberOfPasses()).
-  vtkGetMacro(LastComputePasses, int);
 
   ///@{
   /// What may bloom: the whole scene (default) or only the emitter props.
@@ -212,9 +209,6 @@ public:
   vtkBooleanMacro(EmitInSceneRender, bool);
   ///@}
 
-  /// Whether the last render with EMISSION_EMITTERS wrote the emission in the scene's render.
-  vtkGetMacro(LastEmissionInSceneRender, bool);
-
   ///@{
   /**
    * Whether the bright pass's threshold applies to the emitters (EMISSION_EMITTERS). Off (the
@@ -250,9 +244,6 @@ public:
   vtkBooleanMacro(BloomAnnotations, bool);
   ///@}
 
-  /// Whether the last render drew the delegate's annotations over the bloom.
-  vtkGetMacro(LastAnnotationsOverBloom, bool);
-
   ///@{
   /**
    * Tiled frames (vtkWindowToImageFilter with a scale, a ParaView screenshot larger than its
@@ -267,10 +258,6 @@ public:
   vtkGetMacro(SeamlessTiles, bool);
   vtkBooleanMacro(SeamlessTiles, bool);
   ///@}
-
-  /// The guard band the last render added to the renderer's tile, in samples along x and y
-  /// (0 untiled); the scene and emission read-backs hold the tile and its band.
-  vtkGetVector2Macro(LastTileGuardBand, int);
 
   ///@{
   /// The shader replacement that writes the emission (vtkOpenGLRenderPass's API).
@@ -320,61 +307,11 @@ public:
   bool ApplyToImage(vtkOpenGLRenderWindow* window, vtkImageData* input, vtkImageData* output);
 
   /**
-   * Number of GPU passes the last evaluation ran, the composite included (a pass may be drawn
-   * as several rectangles: the operators' interiors and their borders). It is 2 (the bright
-   * pass and the composite; 3 with CaptureResult) when nothing passed the bright pass.
+   * What the last render (or ApplyToImage) did: its passes, whether the chain was skipped, the
+   * bright region and the chain's coverage, the PSF grid, the precision, the tile's guard band,
+   * the GPU times (vtkBloomFrameReport). Never null; read-only, and rewritten by each render.
    */
-  vtkGetMacro(NumberOfPasses, int);
-
-  /**
-   * Whether the last evaluation skipped the bloom chain, as vtkImageBloom::GetLastBloomSkipped:
-   * no level fits the image, the effect is off (SkipDisabledEffects) or nothing passed the
-   * bright pass (SkipEmptyBloom; on the GPU an occlusion query counts the bright pass's
-   * non-zero samples). The output is then keep * scene, bit for bit as the chain would give.
-   */
-  vtkGetMacro(LastBloomSkipped, bool);
-
-  /**
-   * The last evaluation's bright region, with RestrictToBrightRegion on: the bounding box of
-   * the bright pass's non-zero samples in samples of the first pyramid level, as x0 x1 y0 y1
-   * (x1 and y1 past the end). All zero when nothing was bright, when the region was not
-   * measured (RestrictToBrightRegion off, or a render between two measurements of a region that
-   * covered much of the chain) or when the bloom was skipped otherwise.
-   */
-  vtkGetVector4Macro(LastBrightRegion, int);
-
-  /**
-   * The samples the last evaluation's chain passes (after the bright pass, before the
-   * composite) computed, over those the full chain computes: 1 unless restricted.
-   */
-  vtkGetMacro(LastChainCoverage, double);
-
-  /**
-   * The padded FFT grid (NX, NY) of the last evaluation in PSF mode (a split PSF: its tail's
-   * grid); (0, 0) when it did not run the convolution (pyramid mode, or PSF mode refused).
-   */
-  vtkGetVector2Macro(LastPSFGrid, int);
-
-  /**
-   * What the content-aware chain has measured of its own cost: the average GPU milliseconds of
-   * an evaluation, from the start of the chain to the end of the composite, with the bright
-   * region measured (its read-back's wait included) and with the full chain; negative until
-   * timed (GPU timestamps, read frames later without waiting). Where the full chain is the
-   * cheaper, the region is not measured again on this context (docs/rendering.md).
-   */
-  double GetRegionCost() const;
-  double GetFullCost() const;
-
-  /**
-   * The GPU milliseconds of the bloom itself in the latest render whose GPU timestamps have
-   * arrived: from the bright pass to the end of the composite, the scene's render excluded;
-   * negative until one has. It never waits: after a render has completed (glFinish), it is that
-   * render's. For benchmarks: the cost of the bloom frame by frame, where a difference of two
-   * frame times would add the scene's own variation. The renders are timed (two GL timestamp
-   * queries each) from the first call on; before it, only while the bright region's cost is
-   * being learned (GetRegionCost), so a frame that nobody times issues no query.
-   */
-  double GetLastChainMilliseconds();
+  vtkBloomFrameReport* GetLastFrame();
 
 protected:
   vtkBloomPass();
@@ -427,33 +364,20 @@ protected:
   void ReleaseKeptFrame();
   /// The kept frame's size, 0 x 0 when none is kept.
   void GetKeptFrameSize(int size[2]);
-  /// Whether the last render wrote a part of the kept frame (KEPT_FRAME_SERVE).
-  vtkGetMacro(LastTileFromKeptFrame, bool);
 
   vtkSmartPointer<vtkBloomParameters> Parameters;
   vtkPropCollection* Emitters;
   int FloatPrecision;
-  int LastFloatPrecision = FLOAT16;
   int EmissionSource;
   bool EmitInSceneRender = true;
-  bool LastEmissionInSceneRender = false;
   bool ThresholdEmitters = false;
   bool BloomBackground = false;
   bool BloomAnnotations = false;
-  bool LastAnnotationsOverBloom = false;
   bool SeamlessTiles = true;
-  int LastTileGuardBand[2] = { 0, 0 };
   int KeptFrameMode = KEPT_FRAME_OFF;
-  bool LastTileFromKeptFrame = false;
   bool UseComputeShaders;
   bool ThresholdSamples = true;
-  int LastComputePasses;
   bool CaptureResult;
-  int LastBrightRegion[4];
-  double LastChainCoverage;
-  int LastPSFGrid[2];
-  int NumberOfPasses;
-  bool LastBloomSkipped;
 
 private:
   vtkBloomPass(const vtkBloomPass&) = delete;

@@ -203,11 +203,14 @@ public:
 
   /**
    * GPU milliseconds of the latest evaluation whose timestamps have arrived (from the bright
-   * pass to the end of the composite); negative until one has. Collects what has arrived,
-   * without waiting; the context must be current. From the first call on, every evaluation is
-   * timed.
+   * pass to the end of the composite); negative until one has. CollectCostTimings() takes what
+   * has arrived, without waiting (the context must be current); every evaluation is timed while
+   * TimeEveryChain is on, else only those RegionPays learns from.
    */
-  double CollectLastChainMilliseconds();
+  double GetLastChainMilliseconds() const { return this->LastChainMilliseconds; }
+  void CollectCostTimings();
+  void SetTimeEveryChain(bool time) { this->TimeEveryChain = time; }
+  bool GetTimeEveryChain() const { return this->TimeEveryChain; }
 
   /**
    * One profiled pass (Settings::Profiling): its name, the size it wrote, its compulsory
@@ -265,8 +268,8 @@ private:
   double RegionCost = -1.0;
   double FullCost = -1.0;
   double LastChainMilliseconds = -1.0;
-  /// Every evaluation is timed (set once CollectLastChainMilliseconds is asked); else only
-  /// those RegionPays learns from.
+  /// Every evaluation is timed (vtkBloomPassTesting::SetTimeChains); else only those
+  /// RegionPays learns from.
   bool TimeEveryChain = false;
   std::vector<ProfiledPass> Profile;
 
@@ -505,7 +508,6 @@ private:
   bool RegionPays() const;
   void BeginCostTiming(bool measured);
   void EndCostTiming();
-  void CollectCostTimings();
   bool CostTimingSupported();
   void ReleaseCostTiming();
   struct CostSlot

@@ -96,12 +96,11 @@ bool vtkBloomPass::ApplyToImage(
   state->vtkglDisable(GL_DEPTH_TEST);
   state->vtkglDisable(GL_SCISSOR_TEST);
   const bool bloom = in.RunBloom(this, res.Scene.Color, false);
-  this->LastBloomSkipped = !bloom;
+  in.Report->BloomSkipped = !bloom;
   const int zero[2] = { 0, 0 };
   in.Runner.Composite(in.Output, &res.Result, zero, bloom);
-  in.Report(this);
+  in.ReportChain();
   state->PopFramebufferBindings();
-  this->NumberOfPasses = in.Runner.GetPasses();
   if (this->Internals->Switches.ProfilePasses)
   {
     in.Runner.ResolveProfile();

@@ -2,14 +2,14 @@
 // SPDX-License-Identifier: BSD-3-Clause
 /**
  * @file   vtkBloomPassInternals.h
- * @brief  (private to vtkBloomPass) the pass's internals, shared by its source files:
- *         vtkBloomPass.cxx (the render), vtkBloomPassPSFMode.cxx (PSF mode's bright pass and
- *         convolution) and vtkBloomPassImages.cxx (ApplyToImage, the read-backs, the profile).
+ * @brief  (private to vtkBloomPass) the pass's internals, shared by the pass's own source files
+ *         (docs/architecture.md lists them).
  */
 
 #ifndef vtkBloomPassInternals_h
 #define vtkBloomPassInternals_h
 
+#include "vtkBloomFrameReport.h"
 #include "vtkBloomPass.h"
 #include "vtkBloomPassBackground.h"
 #include "vtkBloomPassChainRunner.h"
@@ -22,6 +22,7 @@
 #include "vtkBloomPassTile.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkImageData.h"
+#include "vtkNew.h"
 #include "vtkOpenGLFXAAFilter.h"
 #include "vtkOpenGLFramebufferObject.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -92,7 +93,7 @@ public:
     this->Output.GlowAlpha = true;
     this->Light.Threshold = !selective || self->ThresholdEmitters;
     this->Output.Over = r->Transparent();
-    self->LastAnnotationsOverBloom =
+    this->Report->AnnotationsOverBloom =
       !self->BloomAnnotations && this->Steps.DetachOverlay(self->DelegatePass) > 0;
     // The renderer removes hidden lines and draws translucency through depth peeling or OIT
     // only where it has no pass: where this pass is its own, the pass does it in its place.
@@ -293,13 +294,25 @@ public:
   void RenderDelegate(vtkBloomPass* self, const vtkRenderState* s, vtkBloomPassSceneTarget& target,
     vtkProp** props, int count, Content content);
 
-  // The last evaluation's content-aware figures.
-  void Report(vtkBloomPass* self)
+  /// What the frame did (GetLastFrame), the pass's only record of it.
+  vtkNew<vtkBloomFrameReport> Report;
+  /// The chain's figures, into the report, after the composite.
+  void ReportChain()
   {
+    vtkBloomFrameReport* report = this->Report;
     const int* region = this->Runner.GetBrightRegion();
-    std::copy(region, region + 4, self->LastBrightRegion);
-    self->LastChainCoverage = this->Runner.GetCoverage();
-    self->LastComputePasses = this->Runner.GetComputePasses();
+    std::copy(region, region + 4, report->BrightRegion);
+    report->ChainCoverage = this->Runner.GetCoverage();
+    report->ComputePasses = this->Runner.GetComputePasses();
+    report->NumberOfPasses = this->Runner.GetPasses();
+    this->ReportTimes();
+  }
+  void ReportTimes()
+  {
+    vtkBloomFrameReport* report = this->Report;
+    report->ChainMilliseconds = this->Runner.GetLastChainMilliseconds();
+    report->RegionCost = this->Runner.GetRegionCost();
+    report->FullCost = this->Runner.GetFullCost();
   }
 
   /// Release everything in the context of the window that holds it, if it is still alive,

@@ -115,7 +115,7 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self)
   }
   this->PSFError.clear();
   const int* grid = this->UsePSFSplit ? this->PSFSplit.GetGridSize() : this->FFT.GetGridSize();
-  std::copy(grid, grid + 2, self->LastPSFGrid);
+  std::copy(grid, grid + 2, this->Report->PSFGrid);
   if (!this->Runner.BrightPassPSF(this->Light, res.PSFBright))
   {
     return false;

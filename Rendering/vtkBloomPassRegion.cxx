@@ -280,14 +280,6 @@ void vtkBloomPassChainRunner::EndCostTiming()
 }
 
 //------------------------------------------------------------------------------
-double vtkBloomPassChainRunner::CollectLastChainMilliseconds()
-{
-  this->TimeEveryChain = true;
-  this->CollectCostTimings();
-  return this->LastChainMilliseconds;
-}
-
-//------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::CollectCostTimings()
 {
   for (CostSlot& slot : this->CostTimings)

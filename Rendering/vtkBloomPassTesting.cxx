@@ -49,6 +49,12 @@ void vtkBloomPassTesting::SetProfilePasses(vtkBloomPass* pass, bool profile)
 }
 
 //------------------------------------------------------------------------------
+void vtkBloomPassTesting::SetTimeChains(vtkBloomPass* pass, bool time)
+{
+  pass->Internals->Runner.SetTimeEveryChain(time);
+}
+
+//------------------------------------------------------------------------------
 std::vector<vtkBloomPassTesting::ProfiledPass> vtkBloomPassTesting::GetProfile(vtkBloomPass* pass)
 {
   std::vector<ProfiledPass> profile;

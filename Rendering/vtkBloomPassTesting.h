@@ -70,6 +70,14 @@ public:
    */
   static void SetProfilePasses(vtkBloomPass* pass, bool profile);
 
+  /**
+   * Time every chain with two GL timestamp queries, for benchmarks (off by default): the pass's
+   * GetLastFrame() then gives, without waiting, the GPU milliseconds of the latest frame whose
+   * timestamps have arrived (vtkBloomFrameReport::GetChainMilliseconds). Off, only the frames
+   * the bright region's cost is learned from are timed.
+   */
+  static void SetTimeChains(vtkBloomPass* pass, bool time);
+
   /// One entry of the profile.
   struct ProfiledPass
   {

@@ -160,7 +160,7 @@ int RenderScene(const std::string& scene, const std::string& output, const Rende
   if (!options.Quiet)
   {
     std::cerr << "vtk-bloom: rendered " << scene << " (" << options.Size[0] << "x"
-              << options.Size[1] << ", " << stage.Pass->GetNumberOfPasses() << " GPU passes) to "
+              << options.Size[1] << ", " << stage.Pass->GetLastFrame()->GetNumberOfPasses() << " GPU passes) to "
               << output << "\n";
   }
   return 0;

@@ -92,7 +92,7 @@ void BM_GPUFrame(
     }
     state.SetIterationTime(result.Times[2].back());
   }
-  result.Passes = timer.Bloom->GetNumberOfPasses();
+  result.Passes = timer.Bloom->GetLastFrame()->GetNumberOfPasses();
   const double plain = result.Ms(0);
   state.counters["without_ms"] = plain;
   state.counters["float_copy_ms"] = result.Ms(1);

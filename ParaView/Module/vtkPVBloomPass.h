@@ -46,7 +46,6 @@ public:
   /// a screenshot larger than the window from one bloomed frame (vtkPVBloomRenderView).
   using vtkBloomPass::GetKeptFrameMode;
   using vtkBloomPass::GetKeptFrameSize;
-  using vtkBloomPass::GetLastTileFromKeptFrame;
   using vtkBloomPass::KEPT_FRAME_KEEP;
   using vtkBloomPass::KEPT_FRAME_OFF;
   using vtkBloomPass::KEPT_FRAME_SERVE;

@@ -18,8 +18,9 @@ every frame renders. A frame is the wall time of a still render on rank 0 up to 
   image, in IceT's draw callback), ICET_COMPOSITE_TIME (compression, exchange and blending),
   ICET_COLLECT_TIME (gathering the tiles to rank 0), ICET_TOTAL_DRAW_TIME and ICET_BYTES_SENT
   (what rank 0 sent that frame);
-- the bloom's GPU time (vtkBloomPass::GetLastChainMilliseconds: GPU timestamps from the bright
-  pass to the end of the composite, the scene's render excluded), through ctypes on the plugin's
+- the bloom's GPU time (vtkBloomFrameReport::GetChainMilliseconds of the pass's GetLastFrame(),
+  with vtkBloomPassTesting::SetTimeChains on: GPU timestamps from the bright pass to the end of
+  the composite, the scene's render excluded), through ctypes on the plugin's
   libvtkRenderingBloom.so, the pass found on the renderer's pass chain.
 
 Prints one line per mode, `timing-json {...}`: mean, median, p99 (the 99th of 100 sorted) and
@@ -75,13 +76,22 @@ def bloom_pass():
 bloom_library = loaded('libvtkRenderingBloom.so')
 chain_ms = None
 if bloom_library is not None:
-    chain_ms = bloom_library._ZN12vtkBloomPass24GetLastChainMillisecondsEv
-    chain_ms.restype, chain_ms.argtypes = ctypes.c_double, [ctypes.c_void_p]
+    # The library's own symbols (vtkBloomPassTesting.h and vtkBloomFrameReport.h): no wrapping
+    # of vtk-bloom is built against ParaView's VTK.
+    time_chains = bloom_library._ZN19vtkBloomPassTesting13SetTimeChainsEP12vtkBloomPassb
+    time_chains.restype, time_chains.argtypes = None, [ctypes.c_void_p, ctypes.c_bool]
+    last_frame = bloom_library._ZN12vtkBloomPass12GetLastFrameEv
+    last_frame.restype, last_frame.argtypes = ctypes.c_void_p, [ctypes.c_void_p]
+    report_ms = bloom_library._ZNK19vtkBloomFrameReport20GetChainMillisecondsEv
+    report_ms.restype, report_ms.argtypes = ctypes.c_double, [ctypes.c_void_p]
     # How many of the chain's passes ran as compute shaders, of how many (the last frame's).
-    compute_passes = bloom_library._ZN12vtkBloomPass20GetLastComputePassesEv
-    all_passes = bloom_library._ZN12vtkBloomPass17GetNumberOfPassesEv
-    for getter in (compute_passes, all_passes):
+    report_compute = bloom_library._ZNK19vtkBloomFrameReport16GetComputePassesEv
+    report_all = bloom_library._ZNK19vtkBloomFrameReport17GetNumberOfPassesEv
+    for getter in (report_compute, report_all):
         getter.restype, getter.argtypes = ctypes.c_int, [ctypes.c_void_p]
+    chain_ms = lambda address: report_ms(last_frame(address))  # noqa: E731
+    compute_passes = lambda address: report_compute(last_frame(address))  # noqa: E731
+    all_passes = lambda address: report_all(last_frame(address))  # noqa: E731
 icet = loaded('libvtkIceTCore-pv*.so*') if ranks > 1 else None
 if icet is not None:
     icet.icetGetDoublev.argtypes = [ctypes.c_uint, ctypes.POINTER(ctypes.c_double)]
@@ -118,8 +128,11 @@ for mode, use_bloom, float_composite in (('plain', 0, 1), ('bloom-8bit', 1, 0),
         window.WaitForCompletion()
         elapsed = (time.perf_counter() - start) * 1000.0
         if use_bloom and chain_ms is not None:
-            address = address or bloom_pass()
-            bloom = chain_ms(address) if address else -1.0  # the first call starts the timing
+            if not address:
+                address = bloom_pass()
+                if address:
+                    time_chains(address, True)  # from the next frame on
+            bloom = chain_ms(address) if address else -1.0
         if frame < 3:
             continue
         series['frame'].append(elapsed)

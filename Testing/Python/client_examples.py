@@ -170,7 +170,7 @@ def light_in(plotter):
 
     passes = vtkbloom.get_bloom(plotter)
     passes = passes if isinstance(passes, list) else [passes]
-    return any(p is not None and not p.GetLastBloomSkipped() for p in passes)
+    return any(p is not None and not p.GetLastFrame().GetBloomSkipped() for p in passes)
 
 
 def save_images(folder, stem, plain, bloomed):

@@ -256,7 +256,7 @@ def docstring_frames(source, plain):
         image = screenshot(plotter, *args, **kwargs)
         passes = vtkbloom.get_bloom(plotter)
         passes = passes if isinstance(passes, list) else [passes]
-        light = any(p is not None and not p.GetLastBloomSkipped() for p in passes)
+        light = any(p is not None and not p.GetLastFrame().GetBloomSkipped() for p in passes)
         frames.append((np.array(image, copy=True), light))
         return image
 

@@ -123,6 +123,37 @@ class AddBloom(unittest.TestCase):
         self.assertIsNone(renderer.GetPass())
         np.testing.assert_array_equal(grab(window), plain)
 
+    def test_what_a_frame_did_is_one_read_only_record(self):
+        window, (actor,) = scene()
+        bloom = vtkbloom.add_bloom(window, strength=1.0)
+        grab(window)
+        frame = bloom.GetLastFrame()
+        self.assertEqual(frame.GetClassName(), "vtkBloomFrameReport")
+        # Nothing is light: the chain is skipped; the bright pass, the bright region's
+        # reduction and the composite (its multisampled edges) ran.
+        self.assertTrue(frame.GetBloomSkipped())
+        self.assertGreaterEqual(frame.GetNumberOfPasses(), 2)
+        self.assertLessEqual(frame.GetNumberOfPasses(), 4)
+        self.assertEqual(frame.GetBrightRegion(), (0, 0, 0, 0))
+        vtkbloom.add_emitter(window, actor)
+        grab(window)
+        # The same record, rewritten by the frame.
+        self.assertIs(bloom.GetLastFrame(), frame)
+        self.assertFalse(frame.GetBloomSkipped())
+        self.assertGreater(frame.GetNumberOfPasses(), 10)
+        self.assertLessEqual(frame.GetComputePasses(), frame.GetNumberOfPasses())
+        self.assertIn(frame.GetFloatPrecision(), (16, 32))
+        self.assertTrue(frame.GetEmissionInSceneRender())
+        self.assertEqual(frame.GetTileGuardBand(), (0, 0))
+        self.assertEqual(frame.GetPSFGrid(), (0, 0))
+        # Read-only: Python has no setter for what a frame did.
+        for name in ("BloomSkipped", "NumberOfPasses", "ComputePasses", "BrightRegion",
+                     "ChainCoverage", "PSFGrid", "FloatPrecision", "ChainMilliseconds"):
+            self.assertFalse(hasattr(frame, "Set" + name), name)
+        # The pass no longer has the getters the record replaced.
+        self.assertFalse(hasattr(bloom, "GetLastBloomSkipped"))
+        self.assertFalse(hasattr(bloom, "GetNumberOfPasses"))
+
     def test_a_renderer_only_its_window_holds(self):
         # No Python reference to the renderer: each fetch makes a new wrapper of it.
         window, (actor,) = scene()

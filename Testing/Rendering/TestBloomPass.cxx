@@ -77,7 +77,7 @@ double PresetAgreement(const std::string& preset, int precision, const std::stri
   vtkNew<vtkImageData> sceneImage, gpu;
   EXPECT_TRUE(w.Bloom->ReadSceneImage(sceneImage));
   EXPECT_TRUE(w.Bloom->ReadResultImage(gpu));
-  EXPECT_GT(w.Bloom->GetNumberOfPasses(), 0);
+  EXPECT_GT(w.Bloom->GetLastFrame()->GetNumberOfPasses(), 0);
 
   // The scene must actually be HDR, or the test would not exercise the float path.
   EXPECT_GT(MaxChannel(sceneImage, 0), 1.5) << "the scene has nothing above 1";
@@ -151,11 +151,11 @@ TEST(RenderingBloomPass, SkipsAnEmptyBloomExactly)
     p->SetRestrictToBrightRegion(false);
     w.Window->Render();
     EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-    EXPECT_EQ(w.Bloom->GetLastBloomSkipped(), skip);
+    EXPECT_EQ(w.Bloom->GetLastFrame()->GetBloomSkipped(), skip);
     if (skip)
     {
       // The bright pass, the composite and the copy of the captured result.
-      EXPECT_EQ(w.Bloom->GetNumberOfPasses(), 3);
+      EXPECT_EQ(w.Bloom->GetLastFrame()->GetNumberOfPasses(), 3);
       ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
       ASSERT_TRUE(w.Bloom->ReadResultImage(skipped));
       vtkNew<vtkImageBloom> cpu;
@@ -167,7 +167,7 @@ TEST(RenderingBloomPass, SkipsAnEmptyBloomExactly)
     }
     else
     {
-      EXPECT_GT(w.Bloom->GetNumberOfPasses(), 10);
+      EXPECT_GT(w.Bloom->GetLastFrame()->GetNumberOfPasses(), 10);
       ASSERT_TRUE(w.Bloom->ReadResultImage(computed));
     }
   }
@@ -308,13 +308,13 @@ TEST(RenderingBloomPass, ChainsWithToneMapping)
     }
     if (bloom)
     {
-      EXPECT_GT(w.Bloom->GetNumberOfPasses(), 10);
+      EXPECT_GT(w.Bloom->GetLastFrame()->GetNumberOfPasses(), 10);
     }
     else
     {
       // Strength 0 switches the effect off: no chain, only the composite (SkipDisabledEffects).
-      EXPECT_TRUE(w.Bloom->GetLastBloomSkipped());
-      EXPECT_EQ(w.Bloom->GetNumberOfPasses(), 1);
+      EXPECT_TRUE(w.Bloom->GetLastFrame()->GetBloomSkipped());
+      EXPECT_EQ(w.Bloom->GetLastFrame()->GetNumberOfPasses(), 1);
     }
   }
   // Tone mapping compresses highlights, so the glow must still show as added light.
@@ -345,10 +345,10 @@ TEST(RenderingBloomPass, NoErrorsOrGrowthOverManyFramesWithResizes)
     if (frame == 199)
     {
       rssAfterWarmUp = vtkBloomTest::ResidentKiB();
-      passes = w.Bloom->GetNumberOfPasses();
+      passes = w.Bloom->GetLastFrame()->GetNumberOfPasses();
     }
   }
-  EXPECT_EQ(w.Bloom->GetNumberOfPasses(), passes);
+  EXPECT_EQ(w.Bloom->GetLastFrame()->GetNumberOfPasses(), passes);
   // AddressSanitizer keeps freed blocks in its quarantine (capped at 32 MB for these tests by
   // Testing/CMakeLists.txt), which shows as resident memory; a leak would be ~160 MB.
 #ifdef __SANITIZE_ADDRESS__
@@ -378,7 +378,7 @@ TEST(RenderingBloomPass, ProfilesEveryPassWithoutChangingTheImage)
     // A second render of the emitters is profiled as "emitters" (scalar-field's emission is
     // written in the scene's render, unless that is off).
     const bool selective = w.Bloom->GetEmissionSource() == vtkBloomPass::EMISSION_EMITTERS &&
-      !w.Bloom->GetLastEmissionInSceneRender();
+      !w.Bloom->GetLastFrame()->GetEmissionInSceneRender();
     ASSERT_TRUE(w.Bloom->ReadResultImage(plain));
     EXPECT_TRUE(vtkBloomPassTesting::GetProfile(w.Bloom).empty());
 
@@ -401,8 +401,8 @@ TEST(RenderingBloomPass, ProfilesEveryPassWithoutChangingTheImage)
       profile.pop_back();
     }
     const int n = static_cast<int>(profile.size());
-    ASSERT_EQ(n, w.Bloom->GetNumberOfPasses() + (selective ? 2 : 1)) << scene;
-    EXPECT_GT(w.Bloom->GetNumberOfPasses(), 10) << scene;
+    ASSERT_EQ(n, w.Bloom->GetLastFrame()->GetNumberOfPasses() + (selective ? 2 : 1)) << scene;
+    EXPECT_GT(w.Bloom->GetLastFrame()->GetNumberOfPasses(), 10) << scene;
     EXPECT_EQ(profile[0].Name, "scene");
     EXPECT_EQ(profile[1].Name, selective ? "emitters" : "bright L0");
     EXPECT_EQ(profile[n - 2].Name, "composite");

@@ -165,7 +165,7 @@ TEST(RenderingBloomPassLight, AWhiteFigureIsThePlainFrame)
   Figure figure(white, false);
   const std::vector<int> plain = figure.Render(false);
   EXPECT_LE(LargestDifference(figure.Render(true), plain), 1);
-  EXPECT_TRUE(figure.W.Bloom->GetLastAnnotationsOverBloom());
+  EXPECT_TRUE(figure.W.Bloom->GetLastFrame()->GetAnnotationsOverBloom());
 
   figure.W.Bloom->GetParameters()->SetThresholdMode(vtkImageBloomThreshold::SMOOTHSTEP_KNEE);
   figure.W.Bloom->BloomBackgroundOn();
@@ -296,10 +296,10 @@ TEST(RenderingBloomPassLight, AnLDREmitterGlows)
   figure.W.Bloom->AddEmitter(emitter);
   const std::vector<int> plain = figure.Render(false);
   EXPECT_GT(figure.HaloContrast(figure.Render(true), plain), 5.0);
-  EXPECT_FALSE(figure.W.Bloom->GetLastBloomSkipped());
+  EXPECT_FALSE(figure.W.Bloom->GetLastFrame()->GetBloomSkipped());
   figure.W.Bloom->ThresholdEmittersOn();
   EXPECT_LE(LargestDifference(figure.Render(true), plain), 1);
-  EXPECT_TRUE(figure.W.Bloom->GetLastBloomSkipped());
+  EXPECT_TRUE(figure.W.Bloom->GetLastFrame()->GetBloomSkipped());
 }
 
 //------------------------------------------------------------------------------

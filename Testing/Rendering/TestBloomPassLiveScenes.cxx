@@ -137,7 +137,7 @@ vtkSmartPointer<vtkImageData> RenderLineFan(int samples, bool bloom)
   }
   w.Bloom->GetParameters()->SetThreshold(1e30);
   w.Window->Render();
-  EXPECT_EQ(w.Bloom->GetLastBloomSkipped(), bloom);
+  EXPECT_EQ(w.Bloom->GetLastFrame()->GetBloomSkipped(), bloom);
   vtkNew<vtkWindowToImageFilter> grab;
   grab->SetInput(w.Window);
   grab->ReadFrontBufferOff();

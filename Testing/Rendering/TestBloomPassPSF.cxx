@@ -106,10 +106,10 @@ Agreement PSFAgreement(PSFKind kind, int radius, int border, int width, int heig
   vtkNew<vtkImageData> scene, gpu;
   EXPECT_TRUE(w.Bloom->ReadSceneImage(scene));
   EXPECT_TRUE(w.Bloom->ReadResultImage(gpu));
-  EXPECT_FALSE(w.Bloom->GetLastBloomSkipped());
+  EXPECT_FALSE(w.Bloom->GetLastFrame()->GetBloomSkipped());
   if (grid)
   {
-    w.Bloom->GetLastPSFGrid(grid);
+    w.Bloom->GetLastFrame()->GetPSFGrid(grid);
   }
 
   vtkNew<vtkImageBloom> cpu;
@@ -246,7 +246,7 @@ FourStepResult FourStepAgreement(
   vtkSmartPointer<vtkImageData> input = Spots(width, height);
   vtkNew<vtkImageData> gpu;
   EXPECT_TRUE(w.Bloom->ApplyToImage(w.GL(), input, gpu));
-  EXPECT_FALSE(w.Bloom->GetLastBloomSkipped());
+  EXPECT_FALSE(w.Bloom->GetLastFrame()->GetBloomSkipped());
   vtkNew<vtkImageBloom> cpu;
   cpu->SetParameters(parameters);
   cpu->SetExecutionMode(vtkImageBloom::REFERENCE);
@@ -544,7 +544,7 @@ TEST(RenderingBloomPassPSF, WithoutComputeShadersTheSceneRendersUnbloomedWithOne
     w.Window->Render();
   }
   EXPECT_EQ(errors->Count, 1);
-  EXPECT_TRUE(w.Bloom->GetLastBloomSkipped());
+  EXPECT_TRUE(w.Bloom->GetLastFrame()->GetBloomSkipped());
   vtkNew<vtkImageData> scene, result;
   ASSERT_TRUE(w.Bloom->ReadSceneImage(scene));
   ASSERT_TRUE(w.Bloom->ReadResultImage(result));
@@ -571,11 +571,11 @@ TEST(RenderingBloomPassPSF, ASplitCoreWiderThanTheGPUsLimitIsRefusedWithOneError
     w.Window->Render();
   }
   EXPECT_EQ(errors->Count, 1);
-  EXPECT_TRUE(w.Bloom->GetLastBloomSkipped());
+  EXPECT_TRUE(w.Bloom->GetLastFrame()->GetBloomSkipped());
   parameters->SetPSFCoreRadius(256);
   w.Window->Render();
   EXPECT_EQ(errors->Count, 1);
-  EXPECT_FALSE(w.Bloom->GetLastBloomSkipped());
+  EXPECT_FALSE(w.Bloom->GetLastFrame()->GetBloomSkipped());
 }
 
 //------------------------------------------------------------------------------

@@ -155,14 +155,14 @@ TEST(RenderingBloomPassRegion, RestrictedChainIsBitIdenticalToTheFullChain)
           p->SetSkipEmptyBloom(false);
           p->SetRestrictToBrightRegion(false);
           vtkSmartPointer<vtkImageData> full = gpu.Apply(input);
-          EXPECT_EQ(gpu.Pass->GetLastChainCoverage(), 1.0) << what;
+          EXPECT_EQ(gpu.Pass->GetLastFrame()->GetChainCoverage(), 1.0) << what;
           p->SetRestrictToBrightRegion(true);
           vtkSmartPointer<vtkImageData> restricted = gpu.Apply(input);
           EXPECT_TRUE(SameBits(full, restricted)) << what;
-          const double coverage = gpu.Pass->GetLastChainCoverage();
+          const double coverage = gpu.Pass->GetLastFrame()->GetChainCoverage();
           EXPECT_LE(coverage, 1.0) << what;
           int region[4];
-          gpu.Pass->GetLastBrightRegion(region);
+          gpu.Pass->GetLastFrame()->GetBrightRegion(region);
           if (p->GetThresholdMode() == vtkImageBloomThreshold::NONE)
           {
             // mip-atlas: every sample is bright.
@@ -204,7 +204,7 @@ TEST(RenderingBloomPassRegion, BrightRegionIsTheBoxOfTheBrightSamples)
     ASSERT_EQ(gpu.Pass->GetParameters()->GetStartLevel(), 0) << preset;
     gpu.Apply(input);
     int region[4];
-    gpu.Pass->GetLastBrightRegion(region);
+    gpu.Pass->GetLastFrame()->GetBrightRegion(region);
     EXPECT_EQ(region[0], 17) << preset;
     EXPECT_EQ(region[1], 205) << preset;
     EXPECT_EQ(region[2], 60) << preset;
@@ -295,10 +295,10 @@ TEST(RenderingBloomPassRegion, FusedSeparablePassesGiveTheSameBits)
           gpu.Pass, 512 * 512); // the automatic value is 0 on llvmpipe
         vtkBloomPassTesting::SetFuseSeparablePasses(gpu.Pass, true);
         vtkSmartPointer<vtkImageData> fused = gpu.Apply(input);
-        const int fusedPasses = gpu.Pass->GetNumberOfPasses();
+        const int fusedPasses = gpu.Pass->GetLastFrame()->GetNumberOfPasses();
         vtkBloomPassTesting::SetFuseSeparablePasses(gpu.Pass, false);
         vtkSmartPointer<vtkImageData> pairs = gpu.Apply(input);
-        const int pairPasses = gpu.Pass->GetNumberOfPasses();
+        const int pairPasses = gpu.Pass->GetLastFrame()->GetNumberOfPasses();
         EXPECT_TRUE(SameBits(fused, pairs)) << what;
         std::cout << "[ fused ] " << what << ": " << fusedPasses << " passes (" << pairPasses
                   << " as pairs)\n";
@@ -332,14 +332,14 @@ TEST(RenderingBloomPassCompute, ComputeAndFragmentPassesAgree)
     gpu.Pass->SetFloatPrecisionTo32Bit();
     gpu.Pass->UseComputeShadersOff();
     vtkSmartPointer<vtkImageData> fragment = gpu.Apply(input);
-    EXPECT_EQ(gpu.Pass->GetLastComputePasses(), 0) << what;
+    EXPECT_EQ(gpu.Pass->GetLastFrame()->GetComputePasses(), 0) << what;
     gpu.Pass->UseComputeShadersOn();
     vtkSmartPointer<vtkImageData> compute = gpu.Apply(input);
     if (vtkBloomTestComputePassesRun())
     {
       // Every pass but the bright pass (under the occlusion query with the content-aware
       // chain off; here it is on) and the composite.
-      EXPECT_GE(gpu.Pass->GetLastComputePasses(), gpu.Pass->GetNumberOfPasses() - 1) << what;
+      EXPECT_GE(gpu.Pass->GetLastFrame()->GetComputePasses(), gpu.Pass->GetLastFrame()->GetNumberOfPasses() - 1) << what;
     }
     EXPECT_LE(vtkBloomTest::ColourRelativeL2(compute, fragment), 1e-6) << what;
     EXPECT_GT(vtkBloomTest::ColourRelativeL2(fragment, input), 1e-3) << what;
@@ -432,7 +432,7 @@ TEST(RenderingBloomPassCompute, CompositeWritesTheWindowAsFragmentsWould)
       // The chain, the composite into the captured result, and the copy into the window: all
       // compute but the copy into the multisampled framebuffer and the composite of its edges'
       // samples that follows it (COMPOSITE_SAMPLES), fragment passes.
-      EXPECT_EQ(bloom->GetLastComputePasses(), bloom->GetNumberOfPasses() - (samples ? 2 : 0))
+      EXPECT_EQ(bloom->GetLastFrame()->GetComputePasses(), bloom->GetLastFrame()->GetNumberOfPasses() - (samples ? 2 : 0))
         << samples;
     }
     bloom->ReleaseGraphicsResources(window);
@@ -463,7 +463,7 @@ TEST(RenderingBloomPassCompute, CompositeIntoAFloatFramebufferIsTheResult)
 
   // The composite straight into vtkFramebufferPass's texture, then into the captured result.
   window->Render();
-  const int passes = bloom->GetNumberOfPasses(), computed = bloom->GetLastComputePasses();
+  const int passes = bloom->GetLastFrame()->GetNumberOfPasses(), computed = bloom->GetLastFrame()->GetComputePasses();
   std::vector<float> direct(static_cast<size_t>(width) * height * 4);
   vtkTextureObject* texture = framebuffer->GetColorTexture();
   ASSERT_EQ(texture->GetWidth(), static_cast<unsigned int>(width));
@@ -508,11 +508,11 @@ TEST(RenderingBloomPassRegion, DenseRegionIsMeasuredEveryEighthRenderWhileItPays
   bool declined = false;
   for (int render = 0; render < 20; ++render)
   {
-    const double regionCost = gpu.Pass->GetRegionCost(), fullCost = gpu.Pass->GetFullCost();
+    const double regionCost = gpu.Pass->GetLastFrame()->GetRegionCost(), fullCost = gpu.Pass->GetLastFrame()->GetFullCost();
     declined = declined || (regionCost >= 0.0 && fullCost >= 0.0 && regionCost > fullCost);
     vtkSmartPointer<vtkImageData> output = gpu.Apply(input);
     int region[4];
-    gpu.Pass->GetLastBrightRegion(region);
+    gpu.Pass->GetLastFrame()->GetBrightRegion(region);
     const bool measured = region[1] > region[0];
     if (render % 8 != 0 || render == 0)
     {
@@ -524,11 +524,11 @@ TEST(RenderingBloomPassRegion, DenseRegionIsMeasuredEveryEighthRenderWhileItPays
     }
     if (measured)
     {
-      EXPECT_GE(gpu.Pass->GetLastChainCoverage(), 0.25) << "render " << render;
+      EXPECT_GE(gpu.Pass->GetLastFrame()->GetChainCoverage(), 0.25) << "render " << render;
     }
     else
     {
-      EXPECT_EQ(gpu.Pass->GetLastChainCoverage(), 1.0) << "render " << render;
+      EXPECT_EQ(gpu.Pass->GetLastFrame()->GetChainCoverage(), 1.0) << "render " << render;
     }
     if (!first)
     {
@@ -553,7 +553,7 @@ TEST(RenderingBloomPassRegion, SmallRegionFollowsItsMeasuredCost)
   {
     vtkSmartPointer<vtkImageData> output = gpu.Apply(input);
     int region[4];
-    gpu.Pass->GetLastBrightRegion(region);
+    gpu.Pass->GetLastFrame()->GetBrightRegion(region);
     const bool measured = region[1] > region[0];
     if (render == 0)
     {
@@ -565,11 +565,11 @@ TEST(RenderingBloomPassRegion, SmallRegionFollowsItsMeasuredCost)
     }
     if (measured)
     {
-      EXPECT_LT(gpu.Pass->GetLastChainCoverage(), 0.25) << "render " << render;
+      EXPECT_LT(gpu.Pass->GetLastFrame()->GetChainCoverage(), 0.25) << "render " << render;
     }
     else
     {
-      EXPECT_EQ(gpu.Pass->GetLastChainCoverage(), 1.0) << "render " << render;
+      EXPECT_EQ(gpu.Pass->GetLastFrame()->GetChainCoverage(), 1.0) << "render " << render;
       ++full;
     }
     if (!first)
@@ -655,7 +655,7 @@ TEST(RenderingBloomPassCompute, FailedComputeProgramFallsBackToFragments)
     {
       run.Window->Render();
       EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-      computePasses[simulate ? 1 : 0] = run.Bloom->GetLastComputePasses();
+      computePasses[simulate ? 1 : 0] = run.Bloom->GetLastFrame()->GetComputePasses();
     }
     EXPECT_EQ(warnings->Count, simulate && ComposesByCompute() ? 1 : 0);
     results[simulate ? 1 : 0] = run.Result();
@@ -689,7 +689,7 @@ TEST(RenderingBloomPassCompute, OlderContextWithTheExtensions)
     version = major * 10 + minor;
     const auto* text = reinterpret_cast<const char*>(glGetString(GL_VERSION));
     mesa = text && std::strstr(text, "Mesa");
-    computePasses[compute ? 1 : 0] = run.Bloom->GetLastComputePasses();
+    computePasses[compute ? 1 : 0] = run.Bloom->GetLastFrame()->GetComputePasses();
     results[compute ? 1 : 0] = run.Result();
   }
   if (version >= 43)

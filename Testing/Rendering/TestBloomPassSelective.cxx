@@ -40,7 +40,7 @@ vtkSmartPointer<vtkImageData> RenderSelective(BloomWindow& w, bool inScene, bool
   w.Bloom->CaptureResultOn();
   w.Window->Render();
   EXPECT_EQ(glGetError(), static_cast<GLenum>(GL_NO_ERROR));
-  EXPECT_EQ(w.Bloom->GetLastEmissionInSceneRender(), expectInScene);
+  EXPECT_EQ(w.Bloom->GetLastFrame()->GetEmissionInSceneRender(), expectInScene);
   auto result = vtkSmartPointer<vtkImageData>::New();
   EXPECT_TRUE(w.Bloom->ReadResultImage(result));
   return result;

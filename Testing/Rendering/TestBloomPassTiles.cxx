@@ -285,12 +285,12 @@ TEST(RenderingBloomPassTiles, TheGuardBandIsWhatTheTilesGlowReads)
   vtkNew<vtkBloomPass> pass;
   Render(160, 120, 1, true, true, 1, pass);
   int band[2];
-  pass->GetLastTileGuardBand(band);
+  pass->GetLastFrame()->GetTileGuardBand(band);
   EXPECT_EQ(band[0], 0);
   EXPECT_EQ(band[1], 0);
   // The last tile vtkWindowToImageFilter renders is the top right one.
   Render(160, 120, 2, true, true, 1, pass);
-  pass->GetLastTileGuardBand(band);
+  pass->GetLastFrame()->GetTileGuardBand(band);
   EXPECT_GT(band[0], 8);
   EXPECT_GT(band[1], 8);
   EXPECT_LE(band[0], 160);
@@ -334,7 +334,6 @@ public:
   vtkTypeMacro(vtkKeepingBloomPass, vtkBloomPass);
   using vtkBloomPass::GetKeptFrameMode;
   using vtkBloomPass::GetKeptFrameSize;
-  using vtkBloomPass::GetLastTileFromKeptFrame;
   using vtkBloomPass::KEPT_FRAME_KEEP;
   using vtkBloomPass::KEPT_FRAME_OFF;
   using vtkBloomPass::KEPT_FRAME_SERVE;
@@ -380,7 +379,7 @@ TEST(RenderingBloomPassTiles, TilesServedFromAKeptFrameAreThatFrame)
     window->SetSize(w, h);
     pass->SetKeptFrameMode(vtkKeepingBloomPass::KEPT_FRAME_SERVE);
     const Frame served = Grab(window, scale);
-    EXPECT_TRUE(pass->GetLastTileFromKeptFrame());
+    EXPECT_TRUE(pass->GetLastFrame()->GetTileFromKeptFrame());
     const double off = LargestDifference(served, whole);
     std::printf("scale %d: tiles served from the kept frame, %g levels off it\n", scale, off);
     EXPECT_EQ(off, 0.0);
@@ -391,7 +390,7 @@ TEST(RenderingBloomPassTiles, TilesServedFromAKeptFrameAreThatFrame)
     window->SetSize(w + 1, h);
     const Frame alone = Grab(window, scale);
     EXPECT_EQ(alone.Width, (w + 1) * scale);
-    EXPECT_FALSE(pass->GetLastTileFromKeptFrame());
+    EXPECT_FALSE(pass->GetLastFrame()->GetTileFromKeptFrame());
     EXPECT_EQ(warnings->Count, 1);
     pass->ReleaseKeptFrame();
     pass->GetKeptFrameSize(kept);

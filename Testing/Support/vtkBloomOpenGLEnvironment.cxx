@@ -51,7 +51,7 @@ int ProbeComputePasses(std::string& context)
     gl->GetOpenGLVersion(major, minor);
   }
   context = "OpenGL " + std::to_string(major) + "." + std::to_string(minor);
-  const int passes = bloom->GetLastComputePasses();
+  const int passes = bloom->GetLastFrame()->GetComputePasses();
   window->ReleaseGraphicsResources(window);
   return passes;
 }
