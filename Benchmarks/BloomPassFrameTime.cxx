@@ -212,8 +212,9 @@ bool TimeFrames(const std::string& scene, const std::string& preset, int width, 
               "%+.3f | %+.3f | %d | %.3f | %.3f | %.3f / %.3f | %+.3f | %+.3f |\n",
     scene.c_str(), preset.c_str(), width, height, plain.Mean, copy.Mean, blit.Mean, bloom.Median,
     bloom.Mean, bloom.P99, bloom.Max, bloom.Mean - plain.Mean, bloom.Mean - copy.Mean,
-    bloom.Median - copy.Median, timer.Bloom->GetLastFrame()->GetNumberOfPasses(), plainCPU.Mean, copyCPU.Mean,
-    bloomCPU.Mean, bloomCPU.P99, bloomCPU.Mean - plainCPU.Mean, bloomCPU.Mean - copyCPU.Mean);
+    bloom.Median - copy.Median, timer.Bloom->GetLastFrame()->GetNumberOfPasses(), plainCPU.Mean,
+    copyCPU.Mean, bloomCPU.Mean, bloomCPU.P99, bloomCPU.Mean - plainCPU.Mean,
+    bloomCPU.Mean - copyCPU.Mean);
   std::fflush(stdout);
   return true;
 }
@@ -641,8 +642,9 @@ bool SyncTable(const std::string& scene, int width, int height, int frames)
     if (mode == 0)
     {
       costs = "content-aware: " + std::to_string(measured) + " of " + std::to_string(frames) +
-        " frames restricted; measured cost " + std::to_string(timer.Bloom->GetLastFrame()->GetRegionCost()) +
-        " ms with the region, " + std::to_string(timer.Bloom->GetLastFrame()->GetFullCost()) +
+        " frames restricted; measured cost " +
+        std::to_string(timer.Bloom->GetLastFrame()->GetRegionCost()) + " ms with the region, " +
+        std::to_string(timer.Bloom->GetLastFrame()->GetFullCost()) +
         " ms with the full chain (GPU, the chain's start to the composite's end)\n";
     }
     std::fflush(stdout);
@@ -681,8 +683,8 @@ bool SparseTable(int width, int height, int frames)
       "| %g %% | %.3f ms | %+.3f ms | %+.3f ms | %.3f ms | %dx%d | %.3f | %d / %d | %s |\n",
       100.0 * fraction, ms[0], ms[1] - ms[0], ms[2] - ms[0], ms[1] - ms[2], region[1] - region[0],
       region[3] - region[2], timer.Alternative->GetLastFrame()->GetChainCoverage(),
-      timer.Bloom->GetLastFrame()->GetNumberOfPasses(), timer.Alternative->GetLastFrame()->GetNumberOfPasses(),
-      same ? "yes" : "NO");
+      timer.Bloom->GetLastFrame()->GetNumberOfPasses(),
+      timer.Alternative->GetLastFrame()->GetNumberOfPasses(), same ? "yes" : "NO");
     std::fflush(stdout);
   }
   return true;
@@ -1004,7 +1006,10 @@ bool SelectiveTable(const std::string& scene, int width, int height, int frames)
     }
     vtkBloomPassTesting::SetProfilePasses(pass, false);
     std::printf("| %s | %d | %.3f | %.3f | %.3f | %.3f | %+.3f | %.3f | %.3f | %.3f |\n", row.Name,
-      pass->GetLastFrame()->GetEmissionInSceneRender() || row.Kind == vtkBloomFrameTimer::ALTERNATIVE ? 1 : 2,
+      pass->GetLastFrame()->GetEmissionInSceneRender() ||
+          row.Kind == vtkBloomFrameTimer::ALTERNATIVE
+        ? 1
+        : 2,
       bloom.Median, bloom.Mean, bloom.P99, bloom.Max, bloom.Mean - whole.Mean,
       vtkBloomMedian(spans[0]), vtkBloomMedian(spans[1]), vtkBloomMedian(spans[2]));
   }

@@ -70,8 +70,8 @@ void vtkBloomFrameReport::PrintSelf(ostream& os, vtkIndent indent)
   os << indent << "NumberOfPasses: " << this->NumberOfPasses << "\n";
   os << indent << "ComputePasses: " << this->ComputePasses << "\n";
   os << indent << "BloomSkipped: " << onOff(this->BloomSkipped) << "\n";
-  os << indent << "BrightRegion: " << this->BrightRegion[0] << " " << this->BrightRegion[1]
-     << " " << this->BrightRegion[2] << " " << this->BrightRegion[3] << "\n";
+  os << indent << "BrightRegion: " << this->BrightRegion[0] << " " << this->BrightRegion[1] << " "
+     << this->BrightRegion[2] << " " << this->BrightRegion[3] << "\n";
   os << indent << "ChainCoverage: " << this->ChainCoverage << "\n";
   os << indent << "PSFGrid: " << this->PSFGrid[0] << " " << this->PSFGrid[1] << "\n";
   os << indent << "EmissionInSceneRender: " << onOff(this->EmissionInSceneRender) << "\n";

@@ -90,7 +90,7 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
     // PSF mode builds no chain: its bright pass and bloom are full-size targets.
     if (res.ChainTime != 0)
     {
-      this->Runner.ReleaseOperators(window);
+      this->ReleaseOperators(window);
       res.ReleaseChain(window);
     }
     res.PSFBright.Allocate(window, w, h, GL_RGBA32F);
@@ -110,7 +110,7 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   if (res.ChainIsStale(self->Parameters, w, h, part))
   {
     // The runner's operator textures belong to the chain about to be rebuilt.
-    this->Runner.ReleaseOperators(window);
+    this->ReleaseOperators(window);
     res.BuildChain(self->Parameters, w, h, tiled ? &this->TileFrame.Chain : nullptr, part);
   }
   return true;

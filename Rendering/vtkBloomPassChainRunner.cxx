@@ -8,7 +8,6 @@
 #include "vtkBloomChain.h"
 #include "vtkBloomKernels.h"
 #include "vtkBloomParameters.h"
-#include "vtkBloomPassFFTBlur.h"
 #include "vtkBloomPassFS.h"
 #include "vtkBloomPassReduceFS.h"
 #include "vtkBloomPassResources.h"
@@ -30,8 +29,9 @@
 #include <sstream>
 
 //------------------------------------------------------------------------------
-vtkBloomPassChainRunner::vtkBloomPassChainRunner(vtkObject* owner, vtkBloomPassResources& resources)
-  : FFTBlur(new vtkBloomPassFFTBlur)
+vtkBloomPassChainRunner::vtkBloomPassChainRunner(
+  vtkObject* owner, vtkBloomPassResources& resources, vtkBloomPassFFTBlur& fftBlur)
+  : FFTBlur(&fftBlur)
   , Owner(owner)
   , Resources(resources)
 {
@@ -51,7 +51,6 @@ void vtkBloomPassChainRunner::ReleaseOperators(vtkWindow* w)
   this->Interiors.clear();
   this->TileRowCounts.clear();
   this->Variants.clear(); // keyed by the operators' addresses, pointing at compute programs
-  this->FFTBlur->ReleaseOperators();
   this->EndProgramGeneration(w);
 }
 
@@ -87,7 +86,6 @@ void vtkBloomPassChainRunner::EndProgramGeneration(vtkWindow* w)
 void vtkBloomPassChainRunner::ReleaseGraphicsResources(vtkWindow* w)
 {
   this->ReleaseOperators(w);
-  this->FFTBlur->ReleaseGraphicsResources(w);
   this->Programs.Clear([w](FragmentProgram& program) { Release(program, w); });
   this->ReleaseCompute();
   this->ReleaseCostTiming();

@@ -48,8 +48,10 @@ class vtkWindow;
 class vtkBloomPassChainRunner
 {
 public:
-  /// `owner` reports the errors; `resources` holds the chain, the context and the targets.
-  vtkBloomPassChainRunner(vtkObject* owner, vtkBloomPassResources& resources);
+  /// `owner` reports the errors; `resources` holds the chain, the context and the targets;
+  /// `fftBlur` runs the wide blurs (FFTBlurPass). The runner owns none of them.
+  vtkBloomPassChainRunner(
+    vtkObject* owner, vtkBloomPassResources& resources, vtkBloomPassFFTBlur& fftBlur);
   ~vtkBloomPassChainRunner();
   vtkBloomPassChainRunner(const vtkBloomPassChainRunner&) = delete;
   vtkBloomPassChainRunner& operator=(const vtkBloomPassChainRunner&) = delete;
@@ -453,7 +455,7 @@ private:
    * line, or a program that does not build.
    */
   bool FFTBlurPass(vtkBloomPassTarget& target, const PassSpec& spec, int axis);
-  std::unique_ptr<vtkBloomPassFFTBlur> FFTBlur;
+  vtkBloomPassFFTBlur* FFTBlur; ///< its owner's (vtkBloomPass::vtkInternals)
 
   // Content-aware evaluation (vtkBloomPassRegion.cxx).
 

@@ -5,7 +5,6 @@
 #include "vtkBloomPassEmission.h"
 
 #include "vtkActor.h"
-#include "vtkBloomPass.h"
 #include "vtkInformation.h"
 #include "vtkInformationDoubleVectorKey.h"
 #include "vtkInformationObjectBaseKey.h"
@@ -34,19 +33,18 @@ bool WritesEmission(vtkProp* prop)
     !actor->IsA("vtkFollower") && vtkOpenGLPolyDataMapper::SafeDownCast(actor->GetMapper()) &&
     !actor->HasTranslucentPolygonalGeometry();
 }
+}
 
-// The source actor and scalar range CreateScalarRangeEmitter recorded on `emitter`, if any.
-vtkProp* RangeSource(vtkProp* emitter, double range[2])
+//------------------------------------------------------------------------------
+vtkProp* vtkBloomPassEmission::RangeSource(vtkProp* emitter, double range[2]) const
 {
   vtkInformation* keys = emitter->GetPropertyKeys();
-  if (!keys || !keys->Has(vtkBloomPass::EMITTER_SOURCE()) ||
-    !keys->Has(vtkBloomPass::EMITTER_SCALAR_RANGE()))
+  if (!keys || !keys->Has(this->SourceKey) || !keys->Has(this->RangeKey))
   {
     return nullptr;
   }
-  keys->Get(vtkBloomPass::EMITTER_SCALAR_RANGE(), range);
-  return vtkProp::SafeDownCast(keys->Get(vtkBloomPass::EMITTER_SOURCE()));
-}
+  keys->Get(this->RangeKey, range);
+  return vtkProp::SafeDownCast(keys->Get(this->SourceKey));
 }
 
 //------------------------------------------------------------------------------

@@ -43,6 +43,8 @@
 #include <vector>
 
 class vtkAbstractMapper;
+class vtkInformationDoubleVectorKey;
+class vtkInformationObjectBaseKey;
 class vtkProp;
 class vtkPropCollection;
 class vtkRenderPass;
@@ -51,6 +53,18 @@ class vtkShaderProgram;
 class vtkBloomPassEmission
 {
 public:
+  /**
+   * `sourceKey` and `rangeKey` are the property keys under which a scalar-range emitter records
+   * the actor it was made from and its range (vtkBloomPass::EMITTER_SOURCE and
+   * EMITTER_SCALAR_RANGE).
+   */
+  vtkBloomPassEmission(
+    vtkInformationObjectBaseKey* sourceKey, vtkInformationDoubleVectorKey* rangeKey)
+    : SourceKey(sourceKey)
+    , RangeKey(rangeKey)
+  {
+  }
+
   /// What a prop emits; the values are the shader's `bloomEmission`.
   enum Kind
   {
@@ -87,6 +101,11 @@ public:
   void SetUniforms(vtkShaderProgram* program, vtkAbstractMapper* mapper, vtkProp* prop) const;
 
 private:
+  vtkInformationObjectBaseKey* SourceKey;
+  vtkInformationDoubleVectorKey* RangeKey;
+  /// The source actor and scalar range recorded on `emitter`, if any.
+  vtkProp* RangeSource(vtkProp* emitter, double range[2]) const;
+
   struct Emission
   {
     Kind What = NONE;

@@ -16,6 +16,7 @@
 #include "vtkBloomPassDepth.h"
 #include "vtkBloomPassEmission.h"
 #include "vtkBloomPassFFT.h"
+#include "vtkBloomPassFFTBlur.h"
 #include "vtkBloomPassPSFSplit.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomPassSteps.h"
@@ -44,11 +45,13 @@ class vtkBloomPass::vtkInternals
 {
 public:
   explicit vtkInternals(vtkBloomPass* owner)
-    : Runner(owner, Resources)
+    : Runner(owner, Resources, FFTBlur)
+    , Emission(vtkBloomPass::EMITTER_SOURCE(), vtkBloomPass::EMITTER_SCALAR_RANGE())
   {
   }
 
   vtkBloomPassResources Resources;
+  vtkBloomPassFFTBlur FFTBlur; ///< the chain's wide blurs, run by the runner's blur passes
   vtkBloomPassChainRunner Runner;
   vtkBloomPassChainRunner::Light Light;   ///< what the runner blooms
   vtkBloomPassChainRunner::Output Output; ///< how the runner writes the frame
@@ -159,6 +162,14 @@ public:
   bool TileWarned = false;              ///< a guard band was cut, said once
   vtkMTimeType KernelsVersion = 0;
   std::string PSFError; ///< the last reason PSF mode could not run, said once
+
+  /// The chain's operators are about to change: what the runner and the FFT blur made of them
+  /// goes.
+  void ReleaseOperators(vtkWindow* w)
+  {
+    this->Runner.ReleaseOperators(w);
+    this->FFTBlur.ReleaseOperators();
+  }
 
   bool Prepare(vtkBloomPass* self, vtkOpenGLRenderWindow* window, int w, int h, int samples,
     bool emitters, int precision);
@@ -339,6 +350,7 @@ public:
     this->FFT.ReleaseGraphicsResources(w);
     this->PSFSplit.ReleaseGraphicsResources(w);
     this->Runner.ReleaseGraphicsResources(w);
+    this->FFTBlur.ReleaseGraphicsResources(w);
     this->Resources.ReleaseAll(w);
   }
 };

@@ -160,8 +160,8 @@ int RenderScene(const std::string& scene, const std::string& output, const Rende
   if (!options.Quiet)
   {
     std::cerr << "vtk-bloom: rendered " << scene << " (" << options.Size[0] << "x"
-              << options.Size[1] << ", " << stage.Pass->GetLastFrame()->GetNumberOfPasses() << " GPU passes) to "
-              << output << "\n";
+              << options.Size[1] << ", " << stage.Pass->GetLastFrame()->GetNumberOfPasses()
+              << " GPU passes) to " << output << "\n";
   }
   return 0;
 }

@@ -339,7 +339,9 @@ TEST(RenderingBloomPassCompute, ComputeAndFragmentPassesAgree)
     {
       // Every pass but the bright pass (under the occlusion query with the content-aware
       // chain off; here it is on) and the composite.
-      EXPECT_GE(gpu.Pass->GetLastFrame()->GetComputePasses(), gpu.Pass->GetLastFrame()->GetNumberOfPasses() - 1) << what;
+      EXPECT_GE(gpu.Pass->GetLastFrame()->GetComputePasses(),
+        gpu.Pass->GetLastFrame()->GetNumberOfPasses() - 1)
+        << what;
     }
     EXPECT_LE(vtkBloomTest::ColourRelativeL2(compute, fragment), 1e-6) << what;
     EXPECT_GT(vtkBloomTest::ColourRelativeL2(fragment, input), 1e-3) << what;
@@ -432,7 +434,8 @@ TEST(RenderingBloomPassCompute, CompositeWritesTheWindowAsFragmentsWould)
       // The chain, the composite into the captured result, and the copy into the window: all
       // compute but the copy into the multisampled framebuffer and the composite of its edges'
       // samples that follows it (COMPOSITE_SAMPLES), fragment passes.
-      EXPECT_EQ(bloom->GetLastFrame()->GetComputePasses(), bloom->GetLastFrame()->GetNumberOfPasses() - (samples ? 2 : 0))
+      EXPECT_EQ(bloom->GetLastFrame()->GetComputePasses(),
+        bloom->GetLastFrame()->GetNumberOfPasses() - (samples ? 2 : 0))
         << samples;
     }
     bloom->ReleaseGraphicsResources(window);
@@ -463,7 +466,8 @@ TEST(RenderingBloomPassCompute, CompositeIntoAFloatFramebufferIsTheResult)
 
   // The composite straight into vtkFramebufferPass's texture, then into the captured result.
   window->Render();
-  const int passes = bloom->GetLastFrame()->GetNumberOfPasses(), computed = bloom->GetLastFrame()->GetComputePasses();
+  const int passes = bloom->GetLastFrame()->GetNumberOfPasses(),
+            computed = bloom->GetLastFrame()->GetComputePasses();
   std::vector<float> direct(static_cast<size_t>(width) * height * 4);
   vtkTextureObject* texture = framebuffer->GetColorTexture();
   ASSERT_EQ(texture->GetWidth(), static_cast<unsigned int>(width));
@@ -508,7 +512,8 @@ TEST(RenderingBloomPassRegion, DenseRegionIsMeasuredEveryEighthRenderWhileItPays
   bool declined = false;
   for (int render = 0; render < 20; ++render)
   {
-    const double regionCost = gpu.Pass->GetLastFrame()->GetRegionCost(), fullCost = gpu.Pass->GetLastFrame()->GetFullCost();
+    const double regionCost = gpu.Pass->GetLastFrame()->GetRegionCost(),
+                 fullCost = gpu.Pass->GetLastFrame()->GetFullCost();
     declined = declined || (regionCost >= 0.0 && fullCost >= 0.0 && regionCost > fullCost);
     vtkSmartPointer<vtkImageData> output = gpu.Apply(input);
     int region[4];

@@ -9,8 +9,8 @@
 
 /**
  * Whether vtkBloomPass runs its chain as compute passes here (OpenGL 4.3, or an older context
- * with the compute extensions): the pass's own decision, seen as GetLastFrame()->GetComputePasses() of a
- * frame with light. Where the CI leg says it must (VTKBLOOM_EXPECT_COMPUTE=1), a context
+ * with the compute extensions): the pass's own decision, seen as GetLastFrame()->GetComputePasses()
+ * of a frame with light. Where the CI leg says it must (VTKBLOOM_EXPECT_COMPUTE=1), a context
  * without them fails the whole suite before its first test, so a compute test cannot pass by
  * skipping there.
  */
