@@ -24,6 +24,7 @@
 #define vtkBloomPassChainRunner_h
 
 #include "vtkBloomPassProgramCache.h" // For the programs
+#include "vtkBloomPassTesting.h"      // For the profile's entries
 #include "vtkSmartPointer.h"          // For the operator textures
 
 #include <array>
@@ -219,13 +220,7 @@ public:
    * memory traffic (every texture it reads read once, its target written once, and read once
    * more when it blends) and its GPU time from two GL timestamp queries.
    */
-  struct ProfiledPass
-  {
-    std::string Name;
-    int Size[2] = { 0, 0 };
-    double Bytes = 0.0;
-    double Milliseconds = 0.0;
-  };
+  using ProfiledPass = vtkBloomPassTesting::ProfiledPass; ///< one entry, as the tests read it
   const std::vector<ProfiledPass>& GetProfile() const { return this->Profile; }
   /// A span of work outside the chain's passes (PSF bloom's FFT stages), profiled as a pass.
   void BeginProfiledSpan();

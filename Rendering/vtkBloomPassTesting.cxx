@@ -57,16 +57,5 @@ void vtkBloomPassTesting::SetTimeChains(vtkBloomPass* pass, bool time)
 //------------------------------------------------------------------------------
 std::vector<vtkBloomPassTesting::ProfiledPass> vtkBloomPassTesting::GetProfile(vtkBloomPass* pass)
 {
-  std::vector<ProfiledPass> profile;
-  for (const auto& entry : pass->Internals->Runner.GetProfile())
-  {
-    ProfiledPass copy;
-    copy.Name = entry.Name;
-    copy.Size[0] = entry.Size[0];
-    copy.Size[1] = entry.Size[1];
-    copy.Milliseconds = entry.Milliseconds;
-    copy.Bytes = entry.Bytes;
-    profile.push_back(copy);
-  }
-  return profile;
+  return pass->Internals->Runner.GetProfile();
 }
