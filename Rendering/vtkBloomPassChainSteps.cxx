@@ -67,8 +67,8 @@ bool vtkBloomPassChainRunner::RunSteps()
   this->CollectCostTimings(); // earlier evaluations' timestamps, never waited for
   regions.Restrict = this->ChooseRestrict();
   // Timed only where the time is used: while RegionPays still decides (content-aware and not
-  // declined), or every evaluation while vtkBloomPassTesting::SetTimeChains is on. A chain that runs
-  // full for good (the region declined, or not asked for) issues no query.
+  // declined), or every evaluation while vtkBloomPassTesting::SetTimeChains is on. A chain that
+  // runs full for good (the region declined, or not asked for) issues no query.
   if ((this->Frame.Restrict && !this->RegionDeclined) || this->TimeEveryChain)
   {
     this->BeginCostTiming(regions.Restrict);
