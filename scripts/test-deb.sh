@@ -6,6 +6,8 @@
 #
 #   bash scripts/test-deb.sh          Debian 12: build-deb/*.deb in a clean bookworm root
 #   bash scripts/test-deb.sh --sid    Debian sid: build-deb-sid/*.deb in a clean sid root
+#   bash scripts/test-deb.sh --prepare [--sid]   only make the clean root (.ci/run does it in
+#                                     the background while the first legs build)
 #
 # The clean root is a debootstrap minbase of the release, made once and cached bare in
 # ~/.cache/vtk-bloom/clean-root-SUITE (VTKBLOOM_CACHE): debootstrap comes from the release's
@@ -20,10 +22,15 @@
 # test's.
 set -euo pipefail
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+prepare=false
+if [ "${1:-}" = --prepare ]; then
+  prepare=true
+  shift
+fi
 case ${1:-} in
   '') suite=bookworm debs=$root/build-deb ;;
   --sid) suite=sid debs=$root/build-deb-sid ;;
-  *) echo "usage: bash scripts/test-deb.sh [--sid]" >&2; exit 2 ;;
+  *) echo "usage: bash scripts/test-deb.sh [--prepare] [--sid]" >&2; exit 2 ;;
 esac
 cache=${VTKBLOOM_CACHE:-$HOME/.cache/vtk-bloom}
 bare=$cache/clean-root-$suite
@@ -49,6 +56,10 @@ bootstrap() {
 }
 [ -x "$bare/usr/bin/apt-get" ] || bootstrap
 mkdir -p "$archives/partial"
+if $prepare; then
+  echo "test-deb: the clean $suite root is ready in $bare ($((SECONDS - start)) s)"
+  exit 0
+fi
 ls "$debs"/*.deb >/dev/null 2>&1 || {
   echo "test-deb: no packages in $debs; run scripts/package-deb.sh${1:+ $1} first" >&2
   exit 1

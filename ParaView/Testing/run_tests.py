@@ -40,7 +40,7 @@ number of failed checks. Run by scripts/test.sh (the ParaView leg).
    3 ranks; the first rank's resident memory (where pvbatch runs the script, and IceT composites)
    grows by less than 16 MiB more than in the same session without bloom (the growth: the
    smallest of its last samples minus the largest of its first). So does every rank's in a
-   Catalyst run of 500 time steps of the wavelet mini-app (bloom_catalyst_soak.py), its bloom
+   Catalyst run of 300 time steps of the wavelet mini-app (bloom_catalyst_soak.py), its bloom
    switched every 5 steps, on 1 and 3 ranks.
 7. Properties: bloom_properties.py sets every property of the Bloom, Separable Gaussian, Bright
    Pass and Pyramid Down/Up proxies that changes the image (a property neither tested nor
@@ -598,7 +598,7 @@ for ranks in (1, 3):
               'long session, %d rank(s): resident growth with bloom %s KiB, without %s KiB'
               ' (bound 16 MiB more)' % (ranks, growth[1], growth[0]))
 
-# In situ: 500 time steps under Catalyst, every rank running the script (--sym).
+# In situ: 300 time steps under Catalyst, every rank running the script (--sym).
 for ranks in (1, 3):
     growth = {}
     for use_bloom in (0, 1):
@@ -606,18 +606,18 @@ for ranks in (1, 3):
         for rank in range(ranks):
             if os.path.exists('%s-%d.txt' % (prefix, rank)):
                 os.remove('%s-%d.txt' % (prefix, rank))
-        status, log = pvbatch(ranks, '--sym', '-m', 'paraview.demos.wavelet_miniapp', '-t', '500',
+        status, log = pvbatch(ranks, '--sym', '-m', 'paraview.demos.wavelet_miniapp', '-t', '300',
                               '--size', '31', '--script-version', '2', '-s',
                               os.path.join(here, 'bloom_catalyst_soak.py'), timeout=600,
                               env={'VTKBLOOM_SOAK_OUT': prefix,
                                    'VTKBLOOM_SOAK_BLOOM': str(use_bloom)})
-        check(status == 0, 'Catalyst, 500 steps, %d rank(s), bloom %s (exit %d)'
+        check(status == 0, 'Catalyst, 300 steps, %d rank(s), bloom %s (exit %d)'
               % (ranks, 'switched' if use_bloom else 'off', status))
         growth[use_bloom] = soak_growth(prefix, ranks) if status == 0 else None
     if growth[0] is not None and growth[1] is not None:
         excess = [b - max(p, 0) for b, p in zip(growth[1], growth[0])]
         check(max(excess) < 16 * 1024,
-              'Catalyst, 500 steps, %d rank(s): resident growth per rank with bloom %s KiB, '
+              'Catalyst, 300 steps, %d rank(s): resident growth per rank with bloom %s KiB, '
               'without %s KiB (bound 16 MiB more)' % (ranks, growth[1], growth[0]))
     else:
         check(False, 'Catalyst soak, %d rank(s): every rank wrote its samples' % ranks)
