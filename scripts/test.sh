@@ -151,19 +151,29 @@ run_in_sid_root() {
     'Python[.]ClientExamples[.]pyvista'
   echo "test: running the suite against VTK 9.6 (no DISPLAY: VTK chooses EGL)"
   LAUNCH=headless run_ctest sid "$root/build-sid"
+  echo "test: the sid leg (its build included) took $SECONDS s"
+  local start=$SECONDS
   echo "test: the tests that open a window, again against VTK 9.6 through X (private Xvfb)"
   LAUNCH=xvfb run_ctest sid-x "$root/build-sid" -R '^(Rendering|CommandLineData[.]View)'
+  echo "test: the sid-x leg took $((SECONDS - start)) s"
+  start=$SECONDS
   bash "$root/scripts/build-paraview-plugin.sh" "$root/build-paraview-sid"
   echo "test: running the ParaView 6.1 plugin's tests (pvbatch, 1 to 4 MPI ranks)"
   VTKBLOOM_PARAVIEW_BUILD="$root/build-paraview-sid" /usr/bin/python3 \
     "$root/ParaView/Testing/run_tests.py" "$root/build-sid" "$root/build-paraview-sid/Testing"
+  echo "test: the ParaView 6.1 leg took $((SECONDS - start)) s"
 }
 
 case "$mode" in
   all)
     run_x11 "$root/build" -DCMAKE_BUILD_TYPE=Release -DVTKBLOOM_WARNINGS_AS_ERRORS=ON
+    echo "test: the X11 leg took $SECONDS s"
+    start=$SECONDS
     run_paraview
+    echo "test: the ParaView 5.11 leg took $((SECONDS - start)) s"
+    start=$SECONDS
     run_headless osmesa
+    echo "test: the OSMesa leg took $((SECONDS - start)) s (the VTK it builds on first use included)"
     ;;
   --paraview)
     run_paraview
