@@ -22,23 +22,33 @@ start=$SECONDS
 
 echo "valgrind: the reader's suites (damaged corpus, hostile headers, crafted files)"
 # (No --track-origins: its shadow memory would break the suites' own 256 MB bound; a report
-# is then rerun by hand with it.)
-for suite in TestOpenEXRDamaged TestOpenEXRHostile TestOpenEXRCrafted; do
-  if ! "${memcheck[@]}" --log-file="$work/logs/$suite.txt" "$build/bin/$suite" \
-    >"$work/logs/$suite.out" 2>&1; then
-    echo "valgrind: $suite failed or memcheck reported errors:" >&2
-    cat "$work/logs/$suite.txt" >&2
-    tail -n 30 "$work/logs/$suite.out" >&2
-    exit 1
+# is then rerun by hand with it.) Memcheck runs a process on one core: each suite runs as two
+# GoogleTest shards (each has tests in both), $jobs processes at a time.
+shards=2
+run_shard() {
+  local suite=$1 shard=$2 name="$1.$2"
+  if ! GTEST_TOTAL_SHARDS=$shards GTEST_SHARD_INDEX=$shard "${memcheck[@]}" \
+    --log-file="$work/logs/$name.txt" "$build/bin/$suite" >"$work/logs/$name.out" 2>&1; then
+    echo "valgrind: $suite (shard $shard of $shards) failed or memcheck reported errors:" >&2
+    cat "$work/logs/$name.txt" >&2
+    tail -n 30 "$work/logs/$name.out" >&2
+    return 1
   fi
   # Every test ran: a skip here (missing data, say) would leave memcheck nothing to check.
-  if grep -q '^\[  SKIPPED \]' "$work/logs/$suite.out" ||
-    ! grep -q '^\[  PASSED  \] [1-9]' "$work/logs/$suite.out"; then
-    echo "valgrind: $suite skipped tests or ran none:" >&2
-    grep -E '^\[  (SKIPPED|PASSED) ' "$work/logs/$suite.out" >&2 || true
-    exit 1
+  if grep -q '^\[  SKIPPED \]' "$work/logs/$name.out" ||
+    ! grep -q '^\[  PASSED  \] [1-9]' "$work/logs/$name.out"; then
+    echo "valgrind: $suite (shard $shard of $shards) skipped tests or ran none:" >&2
+    grep -E '^\[  (SKIPPED|PASSED) ' "$work/logs/$name.out" >&2 || true
+    return 1
   fi
-done
+}
+export -f run_shard
+export work build shards
+export MEMCHECK="${memcheck[*]}"
+# shellcheck disable=SC2016
+for suite in TestOpenEXRDamaged TestOpenEXRHostile TestOpenEXRCrafted; do
+  for ((shard = 0; shard < shards; ++shard)); do echo "$suite $shard"; done
+done | xargs -P "$jobs" -L 1 bash -c 'memcheck=($MEMCHECK); run_shard "$1" "$2"' _
 
 # The files: the crafted ones (committed, and regenerated with this OpenEXR) and the sound
 # files they come from, the hostile headers and the damaged corpus.
@@ -88,8 +98,6 @@ run_one() {
   done
 }
 export -f run_one
-export work build
-export MEMCHECK="${memcheck[*]}"
 # shellcheck disable=SC2016
 find "$work/files" -maxdepth 1 -type f -print0 | sort -z |
   xargs -0 -P "$jobs" -I{} bash -c 'memcheck=($MEMCHECK); run_one "$1"' _ {}

@@ -21,6 +21,7 @@
 
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <map>
 #include <string>
 #include <vector>
@@ -117,15 +118,15 @@ TEST(OpenEXRHostileBounds, ConstantImagesOfEveryCompressionStillRead)
         const vtkOpenEXRTest::ReadResult result = vtkOpenEXRTest::Read(path);
         ASSERT_EQ(result.Errors, 0)
           << "compression " << compression << " pixel type " << pixelType << ": " << result.Message;
-        vtkDataArray* scalars = result.Image->GetPointData()->GetScalars();
+        // The reader's output is float (vtkOpenEXRReader.h); read it as such, since this loop
+        // runs under valgrind's memcheck too.
+        auto* scalars = vtkFloatArray::SafeDownCast(result.Image->GetPointData()->GetScalars());
         ASSERT_NE(scalars, nullptr);
         ASSERT_EQ(scalars->GetNumberOfTuples(), 2048 * 512);
-        double maxError = 0.0;
-        for (vtkIdType v = 0; v < scalars->GetNumberOfValues(); ++v)
-        {
-          maxError = std::max(maxError, std::abs(scalars->GetVariantValue(v).ToDouble() - value));
-        }
-        EXPECT_EQ(maxError, 0.0) << "compression " << compression;
+        const float* values = scalars->GetPointer(0);
+        const vtkIdType count = scalars->GetNumberOfValues();
+        EXPECT_EQ(std::count(values, values + count, static_cast<float>(value)), count)
+          << "compression " << compression;
       }
     }
   }

@@ -101,14 +101,14 @@ class LongSessions(unittest.TestCase):
             scene = Scene()
 
             def step(i):
-                if bloom and i % 5 == 0:
+                if bloom and i % 3 == 0:
                     vtkbloom.remove_bloom(scene.window)
                     scene.window.Render()
                     vtkbloom.add_bloom(scene.window)
                 scene.window.Render()
 
             try:
-                return soak(310, 60, step)
+                return soak(210, 60, step)
             finally:
                 scene.close()
 
@@ -121,8 +121,8 @@ class LongSessions(unittest.TestCase):
                 vtkbloom.add_bloom(scene.window)
 
             def step(i):
-                if bloom and i % 4 == 0:
-                    kind = i // 4 % 4
+                if bloom and i % 2 == 0:
+                    kind = i // 2 % 4
                     if kind == 0:
                         vtkbloom.add_emitter(scene.window, scene.grey)
                     elif kind == 1:
@@ -134,7 +134,7 @@ class LongSessions(unittest.TestCase):
                 scene.window.Render()
 
             try:
-                return soak(280, 80, step)
+                return soak(200, 80, step)
             finally:
                 scene.close()
 
@@ -150,7 +150,7 @@ class LongSessions(unittest.TestCase):
                 out = vtkbloom.bloom(frame) if bloom else frame.copy()
                 self.assertEqual(out.shape, frame.shape)
 
-            return soak(300, 60, step)
+            return soak(200, 60, step)
 
         self.compare("bloom() on numpy arrays", run)
 

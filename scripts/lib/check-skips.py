@@ -9,7 +9,9 @@ JUNIT.xml is ctest's report (ctest --output-junit). Testing/ci-legs.txt lists, f
 the tests it may skip and why ('skip' lines). The leg fails when a test skipped that its list does not
 name (a compute test that found no compute shaders, a suite whose data went missing), or when
 the report holds no test at all. A listed test that ran is reported, not failed: the list says
-what a leg may lack, and a machine may have more. It prints the leg's counts: tests run,
+what a leg may lack, and a machine may have more. A test that the list says another leg covers
+('covered' lines, which scripts/test.sh passes to ctest -E) fails the leg if it is in the
+report: the leg ran what it says it leaves to others. It prints the leg's counts: tests run,
 skipped (each with its reason) and failed."""
 
 import re
@@ -72,6 +74,12 @@ def main():
     for pattern, reason in permitted:
         if not any(pattern.fullmatch(name) and outcome == "skipped" for name, outcome, _ in found):
             print("  listed, and ran here: %s (%s)" % (pattern.pattern, reason))
+    covered = allowed(leg, "covered")
+    stray = [name for name, _, _ in found if any(pattern.fullmatch(name) for pattern, _ in covered)]
+    if stray:
+        print("check-skips: %s: %d test(s) ran that %s leaves to other legs: %s"
+              % (leg, len(stray), LIST.name, ", ".join(stray)), file=sys.stderr)
+        return 1
     if not found:
         print("check-skips: %s: the report %s holds no test" % (leg, report), file=sys.stderr)
         return 1
