@@ -3,9 +3,10 @@
 # SPDX-License-Identifier: BSD-3-Clause
 # The hostile-file tests under valgrind's memcheck, which reports reads of uninitialised memory
 # (AddressSanitizer does not): the OpenEXR reader's suites on the damaged corpus, the generated
-# hostile headers and the crafted files, then the vtk-bloom tool on every one of those files,
-# as the report that found stale heap bytes in written images ran it. Any memcheck report
-# fails the script; leaks are left to the ASan leg.
+# hostile headers and the crafted files, then the vtk-bloom tool as the report that found
+# stale heap bytes in written images ran it, on every one of those files that it reads and one
+# in eight of those it refuses. Any memcheck report fails the script; leaks are left to the
+# ASan leg.
 #
 #   bash scripts/valgrind.sh [BUILD]     BUILD: a configured and built tree (default build/)
 #
@@ -98,8 +99,30 @@ run_one() {
   done
 }
 export -f run_one
+
+# Over the suites above, which read every one of these files under memcheck, the tool adds its
+# options, its error report and its writer, where the stale bytes were. So it runs under
+# memcheck on every file it reads (the writer runs) and on one in eight of those it refuses
+# (the refusal's report), chosen by a run without valgrind (memcheck costs about 5 s a run
+# here, starting the tool's 99 libraries). A file that ends otherwise without valgrind (a
+# crash) is run under memcheck too, and fails there.
+selected=$work/selected.txt
+reads=0 refusals=0 kept=0
+while IFS= read -r -d '' file; do
+  set +e
+  "$build/bin/vtk-bloom" blur --radius 0 --quiet "$file" "$work/out/native.exr" >/dev/null 2>&1
+  status=$?
+  set -e
+  if [ "$status" -eq 1 ]; then
+    refusals=$((refusals + 1))
+    [ $((refusals % 8)) -eq 1 ] || continue
+    kept=$((kept + 1))
+  else
+    reads=$((reads + 1))
+  fi
+  printf '%s\0' "$file"
+done < <(find "$work/files" -maxdepth 1 -type f -print0 | sort -z) >"$selected"
 # shellcheck disable=SC2016
-find "$work/files" -maxdepth 1 -type f -print0 | sort -z |
-  xargs -0 -P "$jobs" -I{} bash -c 'memcheck=($MEMCHECK); run_one "$1"' _ {}
-echo "valgrind: no memcheck report: 3 suites, $count files through vtk-bloom blur (and image)" \
-  "($((SECONDS - start)) s)"
+xargs -0 -P "$jobs" -I{} bash -c 'memcheck=($MEMCHECK); run_one "$1"' _ {} <"$selected"
+echo "valgrind: no memcheck report: 3 suites on $count files; vtk-bloom blur (and image) on the" \
+  "$reads it reads and $kept of the $refusals it refuses ($((SECONDS - start)) s)"

@@ -35,12 +35,12 @@ number of failed checks. Run by scripts/test.sh (the ParaView leg).
 6b. Several views: bloom_view_split.py's layout of two bloom views, each with the wavelet as a
    volume, in the window ParaView shares between them: each view's half shows its volume and
    is the layout with bloom off, no pixel over 8 levels (the rays' jitter moves soft edges).
-6c. Long sessions: bloom_view_soak.py renders the view 300 times with its bloom switched off
+6c. Long sessions: bloom_view_soak.py renders the view 200 times with its bloom switched off
    and on every 5 frames, its preset changed every 20 and the view resized every 30, on 1 and
    3 ranks; the first rank's resident memory (where pvbatch runs the script, and IceT composites)
    grows by less than 16 MiB more than in the same session without bloom (the growth: the
    smallest of its last samples minus the largest of its first). So does every rank's in a
-   Catalyst run of 300 time steps of the wavelet mini-app (bloom_catalyst_soak.py), its bloom
+   Catalyst run of 200 time steps of the wavelet mini-app (bloom_catalyst_soak.py), its bloom
    switched every 5 steps, on 1 and 3 ranks.
 7. Properties: bloom_properties.py sets every property of the Bloom, Separable Gaussian, Bright
    Pass and Pyramid Down/Up proxies that changes the image (a property neither tested nor
@@ -52,6 +52,7 @@ import os
 import signal
 import subprocess
 import sys
+import time
 
 import numpy as np
 
@@ -74,7 +75,18 @@ def check(ok, what):
 
 
 def bounded(command, timeout, env=None):
-    """Run a command in a session of its own; one that hangs is killed with its processes."""
+    """Run a command in a session of its own; one that hangs is killed with its processes. It
+    prints what the command took, so that the leg's log says where its time went."""
+    start = time.monotonic()
+    try:
+        return run_bounded(command, timeout, env)
+    finally:
+        print('  (%.0f s: %s)' % (time.monotonic() - start, ' '.join(
+            os.path.basename(word) for word in command if not word.startswith('--'))[:120]),
+            flush=True)
+
+
+def run_bounded(command, timeout, env):
     with subprocess.Popen(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True,
                           start_new_session=True, env=dict(os.environ, **(env or {}))) as process:
         try:
@@ -587,7 +599,7 @@ for ranks in (1, 3):
     growth = {}
     for use_bloom in (0, 1):
         prefix = os.path.join(out, 'soak-%d-%d' % (ranks, use_bloom))
-        status, log = pvbatch(ranks, 'bloom_view_soak.py', prefix, '300', str(use_bloom))
+        status, log = pvbatch(ranks, 'bloom_view_soak.py', prefix, '200', str(use_bloom))
         check(status == 0, 'bloom_view_soak.py, %d rank(s), bloom %s (exit %d)'
               % (ranks, 'switched' if use_bloom else 'off', status))
         # pvbatch runs the script on the first rank only: its memory is the one sampled.
@@ -598,7 +610,7 @@ for ranks in (1, 3):
               'long session, %d rank(s): resident growth with bloom %s KiB, without %s KiB'
               ' (bound 16 MiB more)' % (ranks, growth[1], growth[0]))
 
-# In situ: 300 time steps under Catalyst, every rank running the script (--sym).
+# In situ: 200 time steps under Catalyst, every rank running the script (--sym).
 for ranks in (1, 3):
     growth = {}
     for use_bloom in (0, 1):
@@ -606,18 +618,18 @@ for ranks in (1, 3):
         for rank in range(ranks):
             if os.path.exists('%s-%d.txt' % (prefix, rank)):
                 os.remove('%s-%d.txt' % (prefix, rank))
-        status, log = pvbatch(ranks, '--sym', '-m', 'paraview.demos.wavelet_miniapp', '-t', '300',
+        status, log = pvbatch(ranks, '--sym', '-m', 'paraview.demos.wavelet_miniapp', '-t', '200',
                               '--size', '31', '--script-version', '2', '-s',
                               os.path.join(here, 'bloom_catalyst_soak.py'), timeout=600,
                               env={'VTKBLOOM_SOAK_OUT': prefix,
                                    'VTKBLOOM_SOAK_BLOOM': str(use_bloom)})
-        check(status == 0, 'Catalyst, 300 steps, %d rank(s), bloom %s (exit %d)'
+        check(status == 0, 'Catalyst, 200 steps, %d rank(s), bloom %s (exit %d)'
               % (ranks, 'switched' if use_bloom else 'off', status))
         growth[use_bloom] = soak_growth(prefix, ranks) if status == 0 else None
     if growth[0] is not None and growth[1] is not None:
         excess = [b - max(p, 0) for b, p in zip(growth[1], growth[0])]
         check(max(excess) < 16 * 1024,
-              'Catalyst, 300 steps, %d rank(s): resident growth per rank with bloom %s KiB, '
+              'Catalyst, 200 steps, %d rank(s): resident growth per rank with bloom %s KiB, '
               'without %s KiB (bound 16 MiB more)' % (ranks, growth[1], growth[0]))
     else:
         check(False, 'Catalyst soak, %d rank(s): every rank wrote its samples' % ranks)
