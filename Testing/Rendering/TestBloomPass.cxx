@@ -323,7 +323,7 @@ TEST(RenderingBloomPass, ChainsWithToneMapping)
 }
 
 //------------------------------------------------------------------------------
-// 1,000 frames with a resize every 50: no GL error, no growth of memory. Every resize remakes
+// 500 frames with a resize every 25: no GL error, no growth of memory. Every resize remakes
 // about 10 MB of targets, so a leak of any of them over the 16 resizes after the warm-up would
 // exceed the bound many times over.
 TEST(RenderingBloomPass, NoErrorsOrGrowthOverManyFramesWithResizes)
@@ -333,8 +333,6 @@ TEST(RenderingBloomPass, NoErrorsOrGrowthOverManyFramesWithResizes)
   w.Bloom->CaptureResultOn();
   long rssAfterWarmUp = 0;
   int passes = 0;
-  // 500 frames, a resize every 25: sixteen resizes after the warm-up, each of which would leak
-  // a set of targets if the resize did not release the last.
   for (int frame = 0; frame < 500; ++frame)
   {
     if (frame % 25 == 0)
