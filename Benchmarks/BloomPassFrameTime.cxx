@@ -36,6 +36,7 @@
 //   BloomPassFrameTime --renderers SCENE WIDTH HEIGHT FRAMES
 //   BloomPassFrameTime --selective SCENE WIDTH HEIGHT FRAMES
 //   BloomPassFrameTime --psf SCENE WIDTH HEIGHT FRAMES
+//   BloomPassFrameTime --formats SCENE WIDTH HEIGHT FRAMES
 //
 // SCENE is a name of vtkBloomExampleSceneNames() or "all" (default lit-spheres); PRESET is
 // "scene" (the scene's own parameters, the default), "default" (vtkBloomParameters' defaults),
@@ -77,14 +78,19 @@
 // full-resolution core and a coarse tail), each split row with its bloom's relative L2
 // against the exact row's on the same frame.
 //
+// --formats: what the scene's colour target costs. The plain render steps into a target of each
+// colour format (RGBA8, R11F_G11F_B10F, RGBA16F, RGBA32F) with a depth texture, blitted to the
+// window (VTK's vtkFramebufferPass), interleaved with the plain frame, the compute copy and the
+// bloom: the 8-bit row is what a target and a blit cost; each float row over it, its format.
+//
 // --sync: the cost of the pass's one wait for the GPU (the bright region's read-back, or
 // SkipEmptyBloom's occlusion query): vtkImageBloom's defaults with the content-aware chain, with
 // the occlusion query only, and with neither (no wait: the CPU submits the whole frame ahead
 // of the GPU), GPU time and the CPU's time in Render().
 //
-// One executable for every GPU timing of scripts/gpu-run.sh (about 1230 lines): each mode is a
+// One executable for every GPU timing of scripts/gpu-run.sh (about 1320 lines): each mode is a
 // function of its own (TimeFrames, ProfilePasses with its breakdown, QualityTable, SparseTable,
-// SyncTable, OrbitTable, SelectiveTable, PSFTable, RenderersTable), and they share the scene
+// SyncTable, OrbitTable, SelectiveTable, PSFTable, RenderersTable, FormatsTable), and they share the scene
 // set-up and the options' flags (SetUp), the frame timing (vtkBloomFrameTimer.h) and the frame
 // statistics, which separate files would have to export for one caller each.
 #include "vtkBloomFrameTimer.h"
@@ -95,6 +101,7 @@
 
 #include "vtkImageBloom.h"
 #include "vtkImageData.h"
+#include "vtkObjectFactory.h"
 #include "vtkPointData.h"
 
 #include <algorithm>
@@ -1101,6 +1108,83 @@ bool RenderersTable(const std::string& scene, int width, int height, int frames)
   return true;
 }
 
+//------------------------------------------------------------------------------
+// VTK's vtkFramebufferPass with a colour target of any internal format: it makes its texture
+// with the format set on it, where no texture was made before.
+class vtkBloomFormatCopyPass : public vtkFramebufferPass
+{
+public:
+  static vtkBloomFormatCopyPass* New();
+  vtkTypeMacro(vtkBloomFormatCopyPass, vtkFramebufferPass);
+  unsigned int InternalFormat = GL_RGBA8;
+
+  void Render(const vtkRenderState* s) override
+  {
+    if (!this->ColorTexture->GetHandle())
+    {
+      this->ColorTexture->SetInternalFormat(this->InternalFormat);
+      this->ColorTexture->SetDataType(this->InternalFormat == GL_RGBA8 ? GL_UNSIGNED_BYTE : GL_FLOAT);
+    }
+    this->Superclass::Render(s);
+  }
+};
+vtkStandardNewMacro(vtkBloomFormatCopyPass);
+
+// The --formats table (see above); false for an unknown scene.
+bool FormatsTable(const std::string& scene, int width, int height, int frames)
+{
+  vtkBloomFrameTimer timer;
+  if (!SetUp(timer, scene, "default", width, height))
+  {
+    return false;
+  }
+  const std::pair<const char*, unsigned int> formats[] = { { "RGBA8", GL_RGBA8 },
+    { "R11F_G11F_B10F", GL_R11F_G11F_B10F }, { "RGBA16F", GL_RGBA16F },
+    { "RGBA32F", GL_RGBA32F } };
+  std::vector<vtkSmartPointer<vtkBloomFormatCopyPass>> copies;
+  std::vector<std::pair<std::string, vtkRenderPass*>> kinds = { { "plain", timer.Steps } };
+  for (const auto& format : formats)
+  {
+    auto copy = vtkSmartPointer<vtkBloomFormatCopyPass>::New();
+    copy->InternalFormat = format.second;
+    copy->SetDelegatePass(timer.Steps);
+    copies.push_back(copy);
+    kinds.emplace_back(std::string(format.first) + " target + VTK blit", copy);
+  }
+  kinds.emplace_back("the bloom pass, no chain (compute copy)", timer.ComputeCopy);
+  kinds.emplace_back("the bloom pass", timer.Bloom);
+  std::vector<std::vector<double>> gpu(kinds.size());
+  for (int f = -2; f < frames; ++f) // two warm-up frames of each
+  {
+    for (size_t k = 0; k < kinds.size(); ++k)
+    {
+      timer.FrameWith(kinds[k].second);
+      if (f >= 0)
+      {
+        gpu[k].push_back(1e3 * timer.LastGPUSeconds);
+      }
+    }
+  }
+  const vtkBloomFrameStatistics plain(gpu[0]), target8(gpu[1]);
+  std::printf("The scene's colour target, %s at %dx%d: GPU time per frame (GL_TIME_ELAPSED), ms, "
+              "%d frames of each kind, interleaved\n"
+              "| frame | median | mean | p99 | over plain, mean | over the RGBA8 target, mean |\n"
+              "|---|---:|---:|---:|---:|---:|\n",
+    scene.c_str(), width, height, frames);
+  for (size_t k = 0; k < kinds.size(); ++k)
+  {
+    const vtkBloomFrameStatistics t(gpu[k]);
+    std::printf("| %s | %.3f | %.3f | %.3f | %+.3f | %+.3f |\n", kinds[k].first.c_str(), t.Median,
+      t.Mean, t.P99, t.Mean - plain.Mean, t.Mean - target8.Mean);
+  }
+  std::fflush(stdout);
+  for (auto& copy : copies)
+  {
+    copy->ReleaseGraphicsResources(timer.Window);
+  }
+  return true;
+}
+
 int main(int argc, char* argv[])
 {
   // Options first; they apply to every table that renders the bloom view.
@@ -1154,6 +1238,11 @@ int main(int argc, char* argv[])
   {
     return SelectiveTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0
                                                                                                : 1;
+  }
+  if (argc > 5 && std::strcmp(argv[1], "--formats") == 0)
+  {
+    return FormatsTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0
+                                                                                              : 1;
   }
   if (argc > 5 && std::strcmp(argv[1], "--psf") == 0)
   {

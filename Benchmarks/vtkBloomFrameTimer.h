@@ -233,7 +233,13 @@ public:
   {
     vtkRenderPass* passes[] = { this->Steps, this->FloatCopy, this->Bloom, this->Alternative,
       this->ComputeCopy };
-    this->Renderer->SetPass(passes[kind]);
+    return this->FrameWith(passes[kind]);
+  }
+
+  /// Frame() with any pass around the renderer (its delegate is the caller's to set).
+  double FrameWith(vtkRenderPass* pass)
+  {
+    this->Renderer->SetPass(pass);
     this->Renderer->GetActiveCamera()->Azimuth(0.5);
     const double wall = this->Timing.Render(this->Window);
     this->LastGPUSeconds = this->Timing.LastGPUSeconds;

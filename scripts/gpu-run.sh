@@ -32,6 +32,10 @@
 #   depthdraw.md     the frame-time table and lit-spheres' profile with the scene's depth drawn
 #                    after the composite (BloomPassFrameTime --depth-draw), as every frame did
 #                    before the scene rendered into the window's depth buffer: its cost
+#   formats.md       the plain scene into a colour target of each format (RGBA8,
+#                    R11F_G11F_B10F, RGBA16F, RGBA32F) blitted to the window, beside the plain
+#                    frame, the compute copy and the bloom (BloomPassFrameTime --formats),
+#                    lit-spheres and field-lines at 1920x1080 and 3840x2160, $FRAMES frames
 #   quality.md       every preset, blurs tap by tap and PSF bloom (exact and split) at
 #                    3840x2160: GPU time over the floor and error against vtkImageBloom
 #                    REFERENCE (and quality.csv, for scripts/plot-gpu-quality.py)
@@ -59,7 +63,7 @@
 #
 # STEPS (default "tests frametime renderers fusion samples profile quality sparse sync orbit
 # selective psf soak stages render")
-# picks the steps (depthdraw only when named). At most 8 files come back from the device tool: pick fewer steps there.
+# picks the steps (depthdraw and formats only when named). At most 8 files come back from the device tool: pick fewer steps there.
 # The script exits with ctest's status. It unpacks the loaders into / (they are absent from a
 # CUDA image) and the pack at the absolute paths it was built with.
 set -uo pipefail
@@ -207,6 +211,19 @@ echo "== the frame with the depth drawn after the composite"
     echo
   done
 } | tee "$OUT/depthdraw.md"
+fi
+
+if step formats; then
+echo "== the scene's colour target, format by format"
+{
+  for size in "1920 1080" "3840 2160"; do
+    for scene in lit-spheres field-lines; do
+      # shellcheck disable=SC2086
+      timeout 300 "$bin/BloomPassFrameTime" --formats $scene $size "$FRAMES"
+      echo
+    done
+  done
+} | tee "$OUT/formats.md"
 fi
 
 if step quality; then
