@@ -23,8 +23,9 @@
 #ifndef vtkBloomPassChainRunner_h
 #define vtkBloomPassChainRunner_h
 
+#include "vtkBloomPassFramePlan.h"    // For the frame's settings, light and output
 #include "vtkBloomPassProgramCache.h" // For the programs
-#include "vtkBloomPassTesting.h"      // For the profile's entries
+#include "vtkBloomPassTypes.h"        // For the boxes, the pass specs and the targets
 #include "vtkSmartPointer.h"          // For the operator textures
 
 #include <array>
@@ -38,7 +39,6 @@
 class vtkBloomLinearOperator;
 class vtkBloomPassFFTBlur;
 class vtkBloomPassResources;
-struct vtkBloomPassTarget;
 class vtkBloomParameters;
 class vtkObject;
 class vtkOpenGLQuadHelper;
@@ -46,9 +46,18 @@ class vtkShaderProgram;
 class vtkTextureObject;
 class vtkWindow;
 
-class vtkBloomPassChainRunner
+// The values (OP_, STEP_) are the runner's own names until the chain's steps move out of it
+// (docs/architecture.md, migration step 9), as are the aliases below.
+class vtkBloomPassChainRunner : public vtkBloomPassShaderValues
 {
 public:
+  using Settings = vtkBloomPassFramePlan::Settings;
+  using Light = vtkBloomPassFramePlan::Light;
+  using Output = vtkBloomPassFramePlan::Output;
+  using Box = vtkBloomPassBox;
+  using Segment = vtkBloomPassSegment;
+  using PassSpec = vtkBloomPassSpec;
+
   /// `owner` reports the errors; `resources` holds the chain, the context and the targets;
   /// `fftBlur` runs the wide blurs (FFTBlurPass). The runner owns none of them.
   vtkBloomPassChainRunner(
@@ -57,66 +66,8 @@ public:
   vtkBloomPassChainRunner(const vtkBloomPassChainRunner&) = delete;
   vtkBloomPassChainRunner& operator=(const vtkBloomPassChainRunner&) = delete;
 
-  /// How the chain runs, fixed for a frame: given to BeginFrame().
-  struct Settings
-  {
-    /// The chain and the point-wise values (threshold, composite); not owned.
-    vtkBloomParameters* Parameters = nullptr;
-    /// Every pass after the bright pass covers only the box its output can be non-zero in
-    /// (vtkBloomParameters::RestrictToBrightRegion, vtkBloomPassRegion.cxx).
-    bool Restrict = false;
-    /**
-     * The chain's passes into its targets as compute shaders where the context runs them
-     * (vtkBloomPassCompute.cxx; vtkBloomPass::UseComputeShaders), the bright region's reduction
-     * as one dispatch, and the composite too where the framebuffer's colour buffer can be
-     * written as an image (FramebufferImage); else fragment passes.
-     */
-    bool UseCompute = true;
-    /// For tests: every compute variant fails to build (the fallback to fragments then runs).
-    bool SimulateComputeFailure = false;
-    /// A pass of at most this many output samples is one draw (vtkBloomPass::SingleDrawSamples;
-    /// negative: automatic, by the rasterizer).
-    int SingleDrawSamples = -1;
-    /**
-     * A separable pair of passes (x into a scratch target, then y) that is one draw is one
-     * compute dispatch instead (vtkBloomPass::FuseSeparablePasses): a 2D pass whose work groups
-     * sum the source rows they read once, in shared memory (TILE in vtkBloomPassFS.glsl).
-     */
-    bool FuseSeparablePasses = true;
-    /**
-     * Every pass, and every span between BeginProfiledSpan and EndProfiledSpan, is bracketed by
-     * timestamp queries (vtkBloomPass::ProfilePasses); ResolveProfile then waits for the GPU
-     * and fills in GetProfile()'s times. Off, a pass pays one test.
-     */
-    bool Profiling = false;
-  };
-
   /// Start a frame with `settings`: the pass counts and the profile start from nothing.
   void BeginFrame(const Settings& settings);
-
-  /// The light that Run() (or BrightPassPSF()) blooms.
-  struct Light
-  {
-    /// The scene's or the emitters' colour.
-    vtkTextureObject* Emission = nullptr;
-    /// Only where the emitters are the visible surface (their depth against the scene's).
-    bool Mask = false;
-    /**
-     * The scene's render wrote selective bloom's emission in its alpha (vtkBloomPassEmission):
-     * the bright pass reads the colour times min(1, max(0, alpha - 1)).
-     */
-    bool InAlpha = false;
-    /// The parameters' threshold applies (true), or the emission is taken whole (false:
-    /// selective bloom's emitters are light whatever their colour).
-    bool Threshold = true;
-    /**
-     * The multisampled scene (its colour before the resolve) and its samples: the bright pass
-     * thresholds each sample and takes their mean (SAMPLE_THRESHOLD in vtkBloomPassFS.glsl;
-     * vtkBloomPass::ThresholdSamples). Null: Emission, as it is.
-     */
-    vtkTextureObject* Samples = nullptr;
-    int SampleCount = 0;
-  };
 
   /**
    * Bloom `light` into the chain's targets. Returns false when the bloom is skipped (no level,
@@ -130,40 +81,6 @@ public:
    * bloom is skipped (a disabled effect, or nothing bright with SkipEmptyBloom).
    */
   bool BrightPassPSF(const Light& light, vtkBloomPassTarget& bright);
-
-  /// How Composite(), Copy() and CompositeEdges() write the frame.
-  struct Output
-  {
-    /// A transparent scene's alpha is raised by the glow (a rendered frame), or kept (an
-    /// image, as vtkImageBloom keeps it).
-    bool GlowAlpha = true;
-    /// The scene's alpha holds the emission (Light::InAlpha): the composite reads it as
-    /// min(alpha, 1).
-    bool EmissionInAlpha = false;
-    /**
-     * The pass into the framebuffer goes over what it holds, premultiplied (GL_ONE,
-     * GL_ONE_MINUS_SRC_ALPHA), instead of replacing it: a renderer on a higher layer, which
-     * clears nothing, blooms over the layers below. Such a pass is always a fragment pass.
-     */
-    bool Over = false;
-    /**
-     * The multisampled scene: where the composite writes a framebuffer of as many samples, each
-     * sample is the composite of the scene's own sample (COMPOSITE_SAMPLES in
-     * vtkBloomPassFS.glsl), so that the window resolves the samples the renderer would have
-     * drawn, as it resolves them (VTK presents a multisampled window through a gamma 2.2
-     * average). Null, or no per-sample shading (GL_ARB_sample_shading): the resolved scene, the
-     * same value in every sample.
-     */
-    vtkTextureObject* SceneSamples = nullptr;
-    int SceneSampleCount = 0;
-    /**
-     * The samples of the chain's frame written, x0 x1 y0 y1 (x1, y1 past the end); all 0: the
-     * whole frame. A tile rendered with its guard band (vtkBloomPassTile) writes the tile only.
-     */
-    int Window[4] = { 0, 0, 0, 0 };
-    /// PSF mode: the full-size bloom term the composite adds, and its size (null: the chain's).
-    vtkBloomPassTarget* PSFBloom = nullptr;
-  };
 
   /**
    * out = keep * scene + Strength * Tint * bloom into `target`, or into the bound framebuffer
@@ -220,30 +137,13 @@ public:
    * memory traffic (every texture it reads read once, its target written once, and read once
    * more when it blends) and its GPU time from two GL timestamp queries.
    */
-  using ProfiledPass = vtkBloomPassTesting::ProfiledPass; ///< one entry, as the tests read it
+  using ProfiledPass = vtkBloomPassProfiledPass;
   const std::vector<ProfiledPass>& GetProfile() const { return this->Profile; }
   /// A span of work outside the chain's passes (PSF bloom's FFT stages), profiled as a pass.
   void BeginProfiledSpan();
   void EndProfiledSpan(const std::string& name, int width, int height, double bytes);
   /// Wait for the GPU and fill in the profile's times.
   void ResolveProfile();
-
-  /**
-   * Compile and link one compute shader; 0 when either fails, with the compiler's log in
-   * `log` (when given). Shared by the chain's compute passes, the region's reduction and
-   * PSF bloom's FFT (vtkBloomPassFFT).
-   */
-  static unsigned int BuildComputeProgram(const char* source, std::string* log);
-
-  /**
-   * Whether the current context runs compute shaders as the pass writes them: OpenGL 4.3, or
-   * an older context that lists GL_ARB_compute_shader, GL_ARB_shader_image_load_store and
-   * GL_ARB_shader_storage_buffer_object; their entry points loaded. `version`: major * 10 +
-   * minor.
-   */
-  static bool ContextRunsCompute(int* version = nullptr);
-  /// Whether the current context lists the extension `name` (glGetStringi).
-  static bool HasExtension(const char* name);
 
   /// Free the operator textures; call it before the chain is rebuilt.
   void ReleaseOperators(vtkWindow* w);
@@ -274,22 +174,6 @@ private:
   /// once per context.
   bool SoftwareRasterizer();
   int Software = 0; ///< 0 not asked, 1 yes, -1 no
-  // Values shared with vtkBloomPassFS.glsl, emitted into the shader as #defines.
-  enum
-  {
-    OP_IDENTITY = 0,
-    OP_TABLE = 1,
-    OP_PERIODIC = 2
-  };
-  enum
-  {
-    STEP_SCALE = 0,
-    STEP_THRESHOLD,
-    STEP_KARIS_TERM,
-    STEP_KARIS_NORMALIZE,
-    STEP_ADD,
-    STEP_COMPOSITE
-  };
   static std::string ShaderConstants();
 
   /**
@@ -313,64 +197,6 @@ private:
 
     /// The #defines of OP_PERIODIC along `axis` ("X" or "Y"); the weights are uniforms.
     std::string Defines(const char* axis) const;
-  };
-
-  /// A box of samples [X0, X1) x [Y0, Y1); empty when X0 >= X1 or Y0 >= Y1.
-  struct Box
-  {
-    int X0 = 0;
-    int X1 = 0;
-    int Y0 = 0;
-    int Y1 = 0;
-    bool Empty() const { return this->X0 >= this->X1 || this->Y0 >= this->Y1; }
-    static Box Whole(int width, int height) { return { 0, width, 0, height }; }
-    /// x0 x1 y0 y1 as a box; all 0: the whole width x height.
-    static Box Window(const int window[4], int width, int height);
-    Box Union(const Box& o) const;
-    Box Intersection(const Box& o) const;
-  };
-
-  // A range of output samples along one axis and how the pass evaluates it.
-  struct Segment
-  {
-    int Begin;
-    int End;
-    int Mode;
-  };
-
-  /// What one pass computes: step(Y X source), see vtkBloomPassFS.glsl.
-  struct PassSpec
-  {
-    vtkTextureObject* Source = nullptr;
-    const int* SourceSize = nullptr;
-    const vtkBloomLinearOperator* X = nullptr; ///< null: identity along x
-    const vtkBloomLinearOperator* Y = nullptr; ///< null: identity along y
-    int Step = STEP_SCALE;
-    double Weight = 1.0;
-    bool Blend = false;       ///< add to the target instead of replacing it
-    bool ReadsSource = false; ///< the chain's source: depth mask and sanitizing apply
-    bool DiscardZero = false; ///< leave zero results unwritten (counted by the query)
-    bool CompositeBloom = true;
-    vtkTextureObject* Addend = nullptr; ///< STEP_ADD
-    const char* Name = "pass";          ///< for the profile
-    int Level = -1;                     ///< the pyramid level it writes, for the profile
-    const Box* Region = nullptr;        ///< restricted: the samples to compute, else all
-    bool ZeroBloom = false; ///< composite where the bloom is known zero (no operator taps)
-    bool Tiled = false;     ///< X and Y both set: the x sums shared by a work group (Fuses)
-    /**
-     * Tiled only: a second separable term of the same output (its Source, SourceSize, X, Y
-     * and Weight), its x sums shared too (TILE2 in vtkBloomPassFS.glsl): the ADD step's addend
-     * (SecondIsAddend), or added to the result times its Weight. What a pass of its own would
-     * have written into a target for this one to read, the same bits (FusesTwo).
-     */
-    const PassSpec* Second = nullptr;
-    bool SecondIsAddend = false;
-    /// The bright pass: the multisampled source, thresholded sample by sample (Light::Samples).
-    vtkTextureObject* Samples = nullptr;
-    int SampleCount = 0;
-    /// The composite: the multisampled scene, composited sample by sample (Output::SceneSamples).
-    vtkTextureObject* SceneSamples = nullptr;
-    int SceneSampleCount = 0;
   };
 
   /// The most samples a pass may have to be one draw (SingleDrawSamples, or its automatic value).

@@ -10,6 +10,7 @@
 #include "vtkBloomPassChainRunner.h"
 
 #include "vtkBloomPassFS.h"
+#include "vtkBloomPassPrograms.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -18,7 +19,6 @@
 #include "vtkTextureObject.h"
 
 #include <algorithm>
-#include <cstring>
 #include <string>
 
 //------------------------------------------------------------------------------
@@ -163,46 +163,11 @@ void vtkBloomPassChainRunner::Uniforms::Floats(const char* name, int count, cons
 }
 
 //------------------------------------------------------------------------------
-bool vtkBloomPassChainRunner::HasExtension(const char* wanted)
-{
-  GLint count = 0;
-  glGetIntegerv(GL_NUM_EXTENSIONS, &count);
-  for (GLint i = 0; i < count; ++i)
-  {
-    const GLubyte* name = glGetStringi(GL_EXTENSIONS, static_cast<GLuint>(i));
-    if (name && std::strcmp(reinterpret_cast<const char*>(name), wanted) == 0)
-    {
-      return true;
-    }
-  }
-  return false;
-}
-
-//------------------------------------------------------------------------------
-bool vtkBloomPassChainRunner::ContextRunsCompute(int* version)
-{
-  GLint major = 0, minor = 0;
-  glGetIntegerv(GL_MAJOR_VERSION, &major);
-  glGetIntegerv(GL_MINOR_VERSION, &minor);
-  if (version)
-  {
-    *version = major * 10 + minor;
-  }
-  // An older context may list what OpenGL 4.3 made core: VTK 9.6's EGL window asks for 3.2,
-  // and NVIDIA's driver gives exactly 3.2, with every extension of the card.
-  const bool extensions = major * 10 + minor >= 43 ||
-    (HasExtension("GL_ARB_compute_shader") && HasExtension("GL_ARB_shader_image_load_store") &&
-      HasExtension("GL_ARB_shader_storage_buffer_object"));
-  return extensions && glDispatchCompute && glBindImageTexture && glMemoryBarrier &&
-    glBindBufferBase;
-}
-
-//------------------------------------------------------------------------------
 bool vtkBloomPassChainRunner::ComputeSupported()
 {
   if (this->ComputeSupport == 0)
   {
-    this->ComputeSupport = ContextRunsCompute(&this->GLVersion) ? 1 : -1;
+    this->ComputeSupport = vtkBloomPassPrograms::ContextRunsCompute(&this->GLVersion) ? 1 : -1;
   }
   return this->ComputeSupport > 0;
 }
@@ -214,7 +179,7 @@ bool vtkBloomPassChainRunner::SampleShadingSupported()
   {
     // The extension, also where OpenGL 4.0 has it in its core: VTK's shaders are GLSL 1.50,
     // which reach gl_SampleID through it.
-    this->SampleShading = HasExtension("GL_ARB_sample_shading") ? 1 : -1;
+    this->SampleShading = vtkBloomPassPrograms::HasExtension("GL_ARB_sample_shading") ? 1 : -1;
   }
   return this->SampleShading > 0;
 }
@@ -372,8 +337,9 @@ vtkBloomPassChainRunner::ComputeProgram* vtkBloomPassChainRunner::Compute(
   vtkShaderProgram::Substitute(text, "//BLOOM::Constants", ShaderConstants());
   vtkShaderProgram::Substitute(text, "//BLOOM::Variant", variant);
   std::string log;
-  const GLuint id =
-    this->Frame.SimulateComputeFailure ? 0 : BuildComputeProgram(text.c_str(), &log);
+  const GLuint id = this->Frame.SimulateComputeFailure
+    ? 0
+    : vtkBloomPassPrograms::BuildComputeProgram(text.c_str(), &log);
   if (!id)
   {
     // Its passes run as fragments from now on; one warning says so, for the first variant.
@@ -391,33 +357,6 @@ vtkBloomPassChainRunner::ComputeProgram* vtkBloomPassChainRunner::Compute(
   program.Id = id;
   this->CompiledProgram = true;
   return &program;
-}
-
-//------------------------------------------------------------------------------
-unsigned int vtkBloomPassChainRunner::BuildComputeProgram(const char* source, std::string* log)
-{
-  const GLuint shader = glCreateShader(GL_COMPUTE_SHADER);
-  glShaderSource(shader, 1, &source, nullptr);
-  glCompileShader(shader);
-  GLint compiled = 0, linked = 0;
-  glGetShaderiv(shader, GL_COMPILE_STATUS, &compiled);
-  GLuint program = glCreateProgram();
-  glAttachShader(program, shader);
-  glLinkProgram(program);
-  glGetProgramiv(program, GL_LINK_STATUS, &linked);
-  if (!compiled || !linked)
-  {
-    if (log)
-    {
-      char text[4096] = { 0 };
-      glGetShaderInfoLog(shader, sizeof(text), nullptr, text);
-      *log = text;
-    }
-    glDeleteProgram(program);
-    program = 0;
-  }
-  glDeleteShader(shader);
-  return program;
 }
 
 //------------------------------------------------------------------------------

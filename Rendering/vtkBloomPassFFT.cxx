@@ -5,8 +5,8 @@
 // glsl/vtkBloomPassFFTCS.glsl.
 #include "vtkBloomPassFFT.h"
 
-#include "vtkBloomPassChainRunner.h"
 #include "vtkBloomPassFFTCS.h"
+#include "vtkBloomPassPrograms.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -219,7 +219,7 @@ unsigned int vtkBloomPassFFT::Program(const std::string& defines, std::string* l
   }
   std::string text = vtkBloomPassFFTCS;
   vtkShaderProgram::Substitute(text, "//VTK::System::Dec", "#version 430 core\n" + defines);
-  const unsigned int id = vtkBloomPassChainRunner::BuildComputeProgram(text.c_str(), log);
+  const unsigned int id = vtkBloomPassPrograms::BuildComputeProgram(text.c_str(), log);
   this->Programs[defines] = id;
   return id;
 }
@@ -264,7 +264,7 @@ bool vtkBloomPassFFT::Prepare(
   }
   this->Context = context;
   int version = 0;
-  if (!vtkBloomPassChainRunner::ContextRunsCompute(&version))
+  if (!vtkBloomPassPrograms::ContextRunsCompute(&version))
   {
     why = "PSF bloom needs OpenGL 4.3 compute shaders; this context has OpenGL " +
       std::to_string(version / 10) + "." + std::to_string(version % 10) + ".";

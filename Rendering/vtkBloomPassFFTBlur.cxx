@@ -9,10 +9,10 @@
 #include "vtkBloomFFTConvolution.h"
 #include "vtkBloomLinearOperator.h"
 #include "vtkBloomParameters.h"
-#include "vtkBloomPassChainRunner.h"
 #include "vtkBloomPassFFT.h"
 #include "vtkBloomPassFFTBlurCS.h"
 #include "vtkBloomPassFFTCS.h"
+#include "vtkBloomPassPrograms.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkShaderProgram.h"
@@ -259,7 +259,7 @@ unsigned int vtkBloomPassFFTBlur::Program(const std::string& defines, bool convo
     vtkShaderProgram::Substitute(text, "//VTK::System::Dec", version + defines);
   }
   std::string log;
-  const unsigned int id = vtkBloomPassChainRunner::BuildComputeProgram(text.c_str(), &log);
+  const unsigned int id = vtkBloomPassPrograms::BuildComputeProgram(text.c_str(), &log);
   this->Programs[key] = id;
   return id;
 }

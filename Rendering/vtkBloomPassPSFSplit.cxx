@@ -4,8 +4,8 @@
 // glsl/vtkBloomPassPSFSplitCS.glsl.
 #include "vtkBloomPassPSFSplit.h"
 
-#include "vtkBloomPassChainRunner.h"
 #include "vtkBloomPassPSFSplitCS.h"
+#include "vtkBloomPassPrograms.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkOpenGLRenderWindow.h"
 #include "vtkOpenGLShaderCache.h"
@@ -139,7 +139,7 @@ unsigned int vtkBloomPassPSFSplit::Program(const std::string& defines, std::stri
     std::string text = vtkBloomPassPSFSplitCS;
     vtkShaderProgram::Substitute(text, "//VTK::System::Dec", "#version 430 core\n" + defines);
     std::string log;
-    const unsigned int id = vtkBloomPassChainRunner::BuildComputeProgram(text.c_str(), &log);
+    const unsigned int id = vtkBloomPassPrograms::BuildComputeProgram(text.c_str(), &log);
     if (!id)
     {
       this->BuildLog = log;

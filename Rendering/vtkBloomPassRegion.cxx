@@ -9,6 +9,7 @@
 #include "vtkBloomPassChainRunner.h"
 
 #include "vtkBloomLinearOperator.h"
+#include "vtkBloomPassPrograms.h"
 #include "vtkBloomPassReduceCS.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomVTKCompat.h"
@@ -48,36 +49,6 @@ void ReachAxis(const vtkBloomLinearOperator* op, int in0, int in1, int size, int
 
 // Output tiles of one reduction step: each covers Tile x Tile input samples.
 const int Tile = 8;
-}
-
-//------------------------------------------------------------------------------
-vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::Box::Union(const Box& o) const
-{
-  if (this->Empty())
-  {
-    return o;
-  }
-  if (o.Empty())
-  {
-    return *this;
-  }
-  return { std::min(this->X0, o.X0), std::max(this->X1, o.X1), std::min(this->Y0, o.Y0),
-    std::max(this->Y1, o.Y1) };
-}
-
-//------------------------------------------------------------------------------
-vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::Box::Intersection(const Box& o) const
-{
-  return { std::max(this->X0, o.X0), std::min(this->X1, o.X1), std::max(this->Y0, o.Y0),
-    std::min(this->Y1, o.Y1) };
-}
-
-//------------------------------------------------------------------------------
-vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::Box::Window(
-  const int window[4], int width, int height)
-{
-  const bool whole = window[0] == 0 && window[1] == 0 && window[2] == 0 && window[3] == 0;
-  return whole ? Whole(width, height) : Box{ window[0], window[1], window[2], window[3] };
 }
 
 //------------------------------------------------------------------------------
@@ -147,7 +118,7 @@ bool vtkBloomPassChainRunner::MeasureBrightRegionByCompute(Box& box)
   if (this->ComputeState == 0)
   {
     this->ComputeState = -1;
-    const GLuint program = BuildComputeProgram(vtkBloomPassReduceCS, nullptr);
+    const GLuint program = vtkBloomPassPrograms::BuildComputeProgram(vtkBloomPassReduceCS, nullptr);
     if (!program)
     {
       return false; // the fragment passes then

@@ -15,11 +15,12 @@
 #ifndef vtkBloomPassResources_h
 #define vtkBloomPassResources_h
 
-#include "vtkBloomChain.h"   // For the chain the targets are sized for
-#include "vtkOpenGLState.h"  // For the scoped savers
-#include "vtkSmartPointer.h" // For the targets' textures and framebuffers
-#include "vtkType.h"         // For vtkMTimeType
-#include "vtkWeakPointer.h"  // For the context
+#include "vtkBloomChain.h"     // For the chain the targets are sized for
+#include "vtkBloomPassTypes.h" // For the targets
+#include "vtkOpenGLState.h"    // For the scoped savers
+#include "vtkSmartPointer.h"   // For the targets' textures and framebuffers
+#include "vtkType.h"           // For vtkMTimeType
+#include "vtkWeakPointer.h"    // For the context
 
 #include <vector>
 
@@ -42,34 +43,6 @@ struct vtkBloomPassSavedState
   vtkOpenGLState::ScopedglClearColor ClearColor;
 
   explicit vtkBloomPassSavedState(vtkOpenGLState* state);
-};
-
-//------------------------------------------------------------------------------
-// A float texture and the framebuffer that renders into it.
-struct vtkBloomPassTarget
-{
-  vtkSmartPointer<vtkTextureObject> Color;
-  vtkSmartPointer<vtkOpenGLFramebufferObject> FBO;
-  int Size[2] = { 0, 0 };
-
-  /**
-   * Content-aware passes (vtkBloomPassRegion.cxx): the texture is zero outside the box
-   * [Dirty[0], Dirty[1]) x [Dirty[2], Dirty[3]). A new texture is dirty everywhere.
-   */
-  int Dirty[4] = { 0, 0, 0, 0 };
-
-  /**
-   * Make the target at width x height in `format`, unless it already has that size and
-   * format.
-   */
-  void Allocate(vtkOpenGLRenderWindow* context, int width, int height, unsigned int format);
-  void Release(vtkWindow* window);
-
-  /**
-   * Read the colour back into `image` as float RGBA (origin 0, spacing 1, row 0 at the
-   * bottom) and return true. The framebuffer bindings are restored afterwards.
-   */
-  bool Read(vtkOpenGLRenderWindow* context, vtkImageData* image);
 };
 
 //------------------------------------------------------------------------------

@@ -12,9 +12,9 @@
 #ifndef vtkBloomPassTesting_h
 #define vtkBloomPassTesting_h
 
+#include "vtkBloomPassTypes.h"       // For the profile's entries
 #include "vtkRenderingBloomModule.h" // For export macro
 
-#include <string> // For the profile's pass names
 #include <vector> // For the profile
 
 class vtkBloomPass;
@@ -78,17 +78,8 @@ public:
    */
   static void SetTimeChains(vtkBloomPass* pass, bool time);
 
-  /// One entry of the profile.
-  struct ProfiledPass
-  {
-    std::string Name;       ///< "scene", "bright L0", "blur-x L3", "composite", ...
-    int Size[2] = { 0, 0 }; ///< the pixels it wrote
-    double Milliseconds = 0.0;
-    /// Its compulsory memory traffic: every texture it reads read once, its target written
-    /// once and read again when it blends; for "scene" and "emitters", the float colour and
-    /// the 32-bit depth written once.
-    double Bytes = 0.0;
-  };
+  /// One entry of the profile (vtkBloomPassTypes.h).
+  using ProfiledPass = vtkBloomPassProfiledPass;
 
   /**
    * The entries of the last profiled render, in the order the GPU ran them ("depth" and "fxaa"
