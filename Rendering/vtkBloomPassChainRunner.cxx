@@ -43,13 +43,7 @@ vtkBloomPassChainRunner::~vtkBloomPassChainRunner() = default;
 //------------------------------------------------------------------------------
 void vtkBloomPassChainRunner::ReleaseOperators(vtkWindow* w)
 {
-  for (auto& op : this->Operators)
-  {
-    op.second->ReleaseGraphicsResources(w);
-  }
-  this->Operators.clear();
-  this->Interiors.clear();
-  this->TileRowCounts.clear();
+  this->Operators.Release(w);
   this->Variants.clear(); // keyed by the operators' addresses, pointing at compute programs
   this->EndProgramGeneration(w);
 }
@@ -193,11 +187,11 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
   }
   if (xMode == OP_PERIODIC)
   {
-    os << this->InteriorOf(*spec.X).Defines("X");
+    os << this->Operators.InteriorOf(*spec.X).Defines("X");
   }
   if (yMode == OP_PERIODIC)
   {
-    os << this->InteriorOf(*spec.Y).Defines("Y");
+    os << this->Operators.InteriorOf(*spec.Y).Defines("Y");
   }
   // Emitters are light whatever their colour: their emission is not thresholded.
   const int mode = this->In.Threshold ? this->Frame.Parameters->GetThresholdMode()
@@ -215,7 +209,7 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
      << (spec.DiscardZero ? 1 : 0) << "\n#define ZERO_BLOOM " << (spec.ZeroBloom ? 1 : 0) << "\n";
   if (spec.Tiled)
   {
-    os << "#define TILE 1\n#define TILE_ROWS " << this->TileRows(*spec.Y) << "\n";
+    os << "#define TILE 1\n#define TILE_ROWS " << this->Operators.TileRows(*spec.Y) << "\n";
   }
   if (spec.Samples)
   {
@@ -227,7 +221,7 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
   }
   if (spec.Tiled && spec.Second)
   {
-    os << "#define TILE2 1\n#define TILE2_ROWS " << this->TileRows(*spec.Second->Y)
+    os << "#define TILE2 1\n#define TILE2_ROWS " << this->Operators.TileRows(*spec.Second->Y)
        << "\n#define TILE2_ADDEND " << (spec.SecondIsAddend ? 1 : 0) << "\n#define X2_WIDTH "
        << spec.Second->X->Width << "\n#define Y2_WIDTH " << spec.Second->Y->Width << "\n";
   }
@@ -453,9 +447,9 @@ std::vector<vtkBloomPassChainRunner::Draw> vtkBloomPassChainRunner::Draws(
   // every axis by its table)...
   const bool single = spec.Tiled || static_cast<double>(width) * height <= this->SingleDrawLimit();
   std::vector<Draw> draws;
-  for (const Segment& sy : this->Segments(spec.Y, spec.SourceSize[1], single))
+  for (const Segment& sy : this->Operators.Segments(spec.Y, spec.SourceSize[1], single))
   {
-    for (const Segment& sx : this->Segments(spec.X, spec.SourceSize[0], single))
+    for (const Segment& sx : this->Operators.Segments(spec.X, spec.SourceSize[0], single))
     {
       const Box cut = Box{ sx.Begin, sx.End, sy.Begin, sy.End }.Intersection(region);
       if (!cut.Empty())
@@ -505,7 +499,7 @@ bool vtkBloomPassChainRunner::Fuses(
   return this->Frame.FuseSeparablePasses && this->Frame.UseCompute &&
     !this->Frame.SimulateComputeFailure && this->ComputeSupported() &&
     static_cast<double>(x.OutputSize) * y.OutputSize <= this->SingleDrawLimit() &&
-    this->TileRows(y) <= MaximumTileRows;
+    this->Operators.TileRows(y) <= MaximumTileRows;
 }
 
 //------------------------------------------------------------------------------
@@ -514,7 +508,8 @@ bool vtkBloomPassChainRunner::FusesTwo(const vtkBloomLinearOperator& x,
   const vtkBloomLinearOperator& y2)
 {
   return x.OutputSize == x2.OutputSize && y.OutputSize == y2.OutputSize && this->Fuses(x, y) &&
-    this->Fuses(x2, y2) && this->TileRows(y) + this->TileRows(y2) <= MaximumTileRows;
+    this->Fuses(x2, y2) &&
+    this->Operators.TileRows(y) + this->Operators.TileRows(y2) <= MaximumTileRows;
 }
 
 //------------------------------------------------------------------------------
@@ -522,8 +517,9 @@ vtkBloomPassChainRunner::PassTextures vtkBloomPassChainRunner::PassTexturesOf(co
 {
   const bool mask = spec.ReadsSource && this->In.Mask;
   PassTextures t;
-  t.Textures = { spec.Source, spec.X ? this->OperatorTexture(*spec.X) : nullptr,
-    spec.Y ? this->OperatorTexture(*spec.Y) : nullptr, spec.Addend,
+  t.Textures = { spec.Source,
+    spec.X ? this->Operators.Texture(this->Resources.Context, *spec.X) : nullptr,
+    spec.Y ? this->Operators.Texture(this->Resources.Context, *spec.Y) : nullptr, spec.Addend,
     spec.Step == STEP_COMPOSITE ? this->Resources.Scene.Color.Get() : nullptr,
     mask ? this->Resources.Emitter.Depth.Get() : nullptr,
     mask ? this->Resources.Scene.Depth.Get() : nullptr,
@@ -532,9 +528,9 @@ vtkBloomPassChainRunner::PassTextures vtkBloomPassChainRunner::PassTexturesOf(co
       ? this->Resources.Background.Color.Get()
       : nullptr,
     spec.Second ? spec.Second->Source : nullptr,
-    spec.Second ? this->OperatorTexture(*spec.Second->X) : nullptr,
-    spec.Second ? this->OperatorTexture(*spec.Second->Y) : nullptr, spec.Samples,
-    spec.SceneSamples };
+    spec.Second ? this->Operators.Texture(this->Resources.Context, *spec.Second->X) : nullptr,
+    spec.Second ? this->Operators.Texture(this->Resources.Context, *spec.Second->Y) : nullptr,
+    spec.Samples, spec.SceneSamples };
   return t;
 }
 
@@ -570,7 +566,7 @@ void vtkBloomPassChainRunner::SetDrawUniforms(
     {
       continue;
     }
-    const Interior& in = this->InteriorOf(*ops[axis]);
+    const Interior& in = this->Operators.InteriorOf(*ops[axis]);
     const int values[3] = { in.Begin, in.First[0], in.First[1] };
     u.Ints(names[axis][0], 3, values);
     u.Floats(names[axis][1], static_cast<int>(in.Weights.size()), in.Weights.data());

@@ -24,6 +24,7 @@
 #define vtkBloomPassChainRunner_h
 
 #include "vtkBloomPassFramePlan.h"    // For the frame's settings, light and output
+#include "vtkBloomPassOperators.h"    // For the operators' textures and interiors
 #include "vtkBloomPassProgramCache.h" // For the programs
 #include "vtkBloomPassTypes.h"        // For the boxes, the pass specs and the targets
 #include "vtkSmartPointer.h"          // For the operator textures
@@ -57,6 +58,8 @@ public:
   using Box = vtkBloomPassBox;
   using Segment = vtkBloomPassSegment;
   using PassSpec = vtkBloomPassSpec;
+  using Interior = vtkBloomPassOperators::Interior;
+  static constexpr int MaximumTileRows = vtkBloomPassOperators::MaximumTileRows;
 
   /// `owner` reports the errors; `resources` holds the chain, the context and the targets;
   /// `fftBlur` runs the wide blurs (FFTBlurPass). The runner owns none of them.
@@ -176,29 +179,6 @@ private:
   int Software = 0; ///< 0 not asked, 1 yes, -1 no
   static std::string ShaderConstants();
 
-  /**
-   * The translation-invariant interior of a vtkBloomLinearOperator: output samples
-   * [Begin, End) whose rows repeat with period Period, First advancing by Stride per period
-   * (a convolution: period 1, stride 1; a 2:1 resample: 1, 2; a 1:2 resample: 2, 1). It is read
-   * from the operator's own rows, in the float precision the GPU uses, so a pass that computes
-   * the interior from these constants evaluates exactly the operator's weights.
-   */
-  struct Interior
-  {
-    int Begin = 0;
-    int End = 0; ///< End == Begin: no interior
-    int Period = 0;
-    int Stride = 0;
-    int Taps = 0;
-    int First[2] = { 0, 0 };    ///< First of rows Begin and Begin + 1 (period 2)
-    std::vector<float> Weights; ///< Period rows of Taps weights
-
-    static Interior Find(const vtkBloomLinearOperator& op);
-
-    /// The #defines of OP_PERIODIC along `axis` ("X" or "Y"); the weights are uniforms.
-    std::string Defines(const char* axis) const;
-  };
-
   /// The most samples a pass may have to be one draw (SingleDrawSamples, or its automatic value).
   int SingleDrawLimit();
   /**
@@ -216,12 +196,6 @@ private:
    * both terms fused (FusesTwo).
    */
   bool BlurInUpsample(size_t i);
-  /// The most input rows 16 consecutive output rows of `y` read (TILE_ROWS), found once.
-  int TileRows(const vtkBloomLinearOperator& y);
-  std::map<const vtkBloomLinearOperator*, int> TileRowCounts;
-  /// 112 rows of 16 RGBA float samples (both terms together): 28 KiB of the 32 KiB of shared
-  /// memory OpenGL 4.3 grants.
-  static constexpr int MaximumTileRows = 112;
   /// Whether a blur's operator runs through the FFT (FFTBlurPass would take it).
   bool UsesFFT(const vtkBloomLinearOperator& op);
 
@@ -357,15 +331,6 @@ private:
   int CompositeSize[2] = { 0, 0 }; ///< the composite's size (CompositeSpec points at it)
   double ComputedSamples = 0.0;
   double FullSamples = 0.0;
-
-  vtkTextureObject* OperatorTexture(const vtkBloomLinearOperator& op);
-  const Interior& InteriorOf(const vtkBloomLinearOperator& op);
-
-  /**
-   * The output samples along one axis: the periodic interior, and the borders by table; with
-   * `single`, the whole axis by table.
-   */
-  std::vector<Segment> Segments(const vtkBloomLinearOperator* op, int size, bool single);
 
   /// The program of one variant, made on first use; null (with an error) if it fails.
   vtkOpenGLQuadHelper* Program(const std::string& variant);
@@ -569,10 +534,8 @@ private:
 
   vtkObject* Owner;
   vtkBloomPassResources& Resources;
-
-  // Derived from the chain's operators, dropped when the chain is rebuilt.
-  std::map<const vtkBloomLinearOperator*, vtkSmartPointer<vtkTextureObject>> Operators;
-  std::map<const vtkBloomLinearOperator*, Interior> Interiors;
+  /// The chain's operators on the GPU, dropped when the chain is rebuilt (ReleaseOperators).
+  vtkBloomPassOperators Operators;
 
   // One program per variant (operator modes, interior weights, step, flags), made on first use.
   // The program itself is the window's shader cache's (by its source), shared with the other

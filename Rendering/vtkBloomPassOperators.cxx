@@ -1,12 +1,8 @@
 // SPDX-FileCopyrightText: Copyright (c) 2026, the vtk-bloom authors
 // SPDX-License-Identifier: BSD-3-Clause
-// The GPU form of vtkBloomPass's operators (see vtkBloomPassChainRunner.h): the operator
-// tables uploaded as textures, the translation-invariant interiors evaluated from uniforms, and
-// the segments a pass draws per axis.
-#include "vtkBloomPassChainRunner.h"
+#include "vtkBloomPassOperators.h"
 
 #include "vtkBloomLinearOperator.h"
-#include "vtkBloomPassResources.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkNew.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -14,8 +10,9 @@
 
 #include <algorithm>
 #include <sstream>
+
 //------------------------------------------------------------------------------
-vtkBloomPassChainRunner::Interior vtkBloomPassChainRunner::Interior::Find(
+vtkBloomPassOperators::Interior vtkBloomPassOperators::Interior::Find(
   const vtkBloomLinearOperator& op)
 {
   const int width = op.Width;
@@ -73,7 +70,7 @@ vtkBloomPassChainRunner::Interior vtkBloomPassChainRunner::Interior::Find(
 }
 
 //------------------------------------------------------------------------------
-std::string vtkBloomPassChainRunner::Interior::Defines(const char* axis) const
+std::string vtkBloomPassOperators::Interior::Defines(const char* axis) const
 {
   // Bit k of ANY: tap k is non-zero in some phase (else it is compiled out); of
   // ALL: in every phase (no run-time test of its weight). Only the first 32 taps have bits (a
@@ -103,10 +100,11 @@ std::string vtkBloomPassChainRunner::Interior::Defines(const char* axis) const
 }
 
 //------------------------------------------------------------------------------
-vtkTextureObject* vtkBloomPassChainRunner::OperatorTexture(const vtkBloomLinearOperator& op)
+vtkTextureObject* vtkBloomPassOperators::Texture(
+  vtkOpenGLRenderWindow* context, const vtkBloomLinearOperator& op)
 {
-  auto found = this->Operators.find(&op);
-  if (found != this->Operators.end())
+  auto found = this->Textures.find(&op);
+  if (found != this->Textures.end())
   {
     return found->second;
   }
@@ -123,17 +121,17 @@ vtkTextureObject* vtkBloomPassChainRunner::OperatorTexture(const vtkBloomLinearO
     }
   }
   vtkNew<vtkTextureObject> texture;
-  texture->SetContext(this->Resources.Context);
+  texture->SetContext(context);
   texture->SetInternalFormat(GL_R32F);
   texture->SetMinificationFilter(vtkTextureObject::Nearest);
   texture->SetMagnificationFilter(vtkTextureObject::Nearest);
   texture->Create2DFromRaw(columns, op.OutputSize, 1, VTK_FLOAT, rows.data());
-  this->Operators[&op] = texture.Get();
+  this->Textures[&op] = texture.Get();
   return texture;
 }
 
 //------------------------------------------------------------------------------
-const vtkBloomPassChainRunner::Interior& vtkBloomPassChainRunner::InteriorOf(
+const vtkBloomPassOperators::Interior& vtkBloomPassOperators::InteriorOf(
   const vtkBloomLinearOperator& op)
 {
   auto found = this->Interiors.find(&op);
@@ -145,7 +143,7 @@ const vtkBloomPassChainRunner::Interior& vtkBloomPassChainRunner::InteriorOf(
 }
 
 //------------------------------------------------------------------------------
-int vtkBloomPassChainRunner::TileRows(const vtkBloomLinearOperator& y)
+int vtkBloomPassOperators::TileRows(const vtkBloomLinearOperator& y)
 {
   auto found = this->TileRowCounts.find(&y);
   if (found != this->TileRowCounts.end())
@@ -172,27 +170,39 @@ int vtkBloomPassChainRunner::TileRows(const vtkBloomLinearOperator& y)
 }
 
 //------------------------------------------------------------------------------
-std::vector<vtkBloomPassChainRunner::Segment> vtkBloomPassChainRunner::Segments(
+std::vector<vtkBloomPassSegment> vtkBloomPassOperators::Segments(
   const vtkBloomLinearOperator* op, int size, bool single)
 {
   if (!op)
   {
-    return { { 0, size, OP_IDENTITY } };
+    return { { 0, size, vtkBloomPassShaderValues::OP_IDENTITY } };
   }
   const Interior& interior = this->InteriorOf(*op);
   if (single || interior.End <= interior.Begin)
   {
-    return { { 0, op->OutputSize, OP_TABLE } };
+    return { { 0, op->OutputSize, vtkBloomPassShaderValues::OP_TABLE } };
   }
-  std::vector<Segment> segments;
+  std::vector<vtkBloomPassSegment> segments;
   if (interior.Begin > 0)
   {
-    segments.push_back({ 0, interior.Begin, OP_TABLE });
+    segments.push_back({ 0, interior.Begin, vtkBloomPassShaderValues::OP_TABLE });
   }
-  segments.push_back({ interior.Begin, interior.End, OP_PERIODIC });
+  segments.push_back({ interior.Begin, interior.End, vtkBloomPassShaderValues::OP_PERIODIC });
   if (interior.End < op->OutputSize)
   {
-    segments.push_back({ interior.End, op->OutputSize, OP_TABLE });
+    segments.push_back({ interior.End, op->OutputSize, vtkBloomPassShaderValues::OP_TABLE });
   }
   return segments;
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassOperators::Release(vtkWindow* w)
+{
+  for (auto& texture : this->Textures)
+  {
+    texture.second->ReleaseGraphicsResources(w);
+  }
+  this->Textures.clear();
+  this->Interiors.clear();
+  this->TileRowCounts.clear();
 }
