@@ -75,8 +75,8 @@ bool vtkBloomPass::vtkInternals::Prepare(vtkBloomPass* self, vtkOpenGLRenderWind
   settings.SimulateComputeFailure = this->Switches.SimulateComputeShaderFailure;
   settings.SingleDrawSamples = this->Switches.SingleDrawSamples;
   settings.FuseSeparablePasses = this->Switches.FuseSeparablePasses;
-  settings.Profiling = this->Switches.ProfilePasses;
   this->Runner.BeginFrame(settings);
+  this->Profiler.StartFrame(this->Switches.ProfilePasses);
   // An image (ApplyToImage): thresholded whole, its own background, into its own target.
   this->Light.InAlpha = false;
   this->Light.Threshold = true;
@@ -462,7 +462,7 @@ void vtkBloomPass::vtkInternals::RenderScene(
   const int w = frame.Width, h = frame.Height;
   // The delegate writes the float colour and a 32-bit depth once (the profile's lower bound).
   const double sceneBytes = (res.Format == GL_RGBA32F ? 20.0 : 12.0) * w * h;
-  this->BeginSpan();
+  this->Profiler.Begin();
   this->RenderDelegate(
     self, s, res.Scene, frame.Props, frame.Count, frame.InScene ? SCENE_AND_EMISSION : SCENE);
   if (res.BackgroundMode == vtkBloomPassResources::BACKGROUND_TEXTURE)
@@ -470,14 +470,14 @@ void vtkBloomPass::vtkInternals::RenderScene(
     vtkBloomPassBackground::Draw(res, s->GetRenderer(), frame.X, frame.Y, w, h);
   }
   self->SceneRendered(s, res.Scene.Color);
-  this->EndSpan("scene", w, h, sceneBytes);
+  this->Profiler.End("scene", w, h, sceneBytes);
   if (frame.TwoRenders)
   {
     std::vector<vtkProp*>& emitters = this->Emission.SecondRender;
-    this->BeginSpan();
+    this->Profiler.Begin();
     this->RenderDelegate(
       self, s, res.Emitter, emitters.data(), static_cast<int>(emitters.size()), EMITTERS);
-    this->EndSpan("emitters", w, h, sceneBytes);
+    this->Profiler.End("emitters", w, h, sceneBytes);
   }
 }
 
@@ -517,9 +517,9 @@ void vtkBloomPass::vtkInternals::CompositeIntoFramebuffer(
   // label mapper hides the labels of points the scene covers), a pass around this one.
   if (!this->DepthShared)
   {
-    this->BeginSpan();
+    this->Profiler.Begin();
     this->Depth.Write(window, this->Resources.Scene.Depth, x, y, w, h, this->Tile.Inner);
-    this->EndSpan("depth", w, h, 8.0 * w * h);
+    this->Profiler.End("depth", w, h, 8.0 * w * h);
   }
   // The renderer's viewport again (the scene's render had the part's, a tile with its band),
   // for what follows and reads it: the FXAA, the annotations.
@@ -537,17 +537,14 @@ void vtkBloomPass::vtkInternals::FinishFrame(
 {
   if (frame.FXAA)
   {
-    this->BeginSpan();
+    this->Profiler.Begin();
     this->ApplyFXAA(static_cast<vtkOpenGLRenderer*>(s->GetRenderer()));
-    this->EndSpan("fxaa", frame.Width, frame.Height, 8.0 * frame.Width * frame.Height);
+    this->Profiler.End("fxaa", frame.Width, frame.Height, 8.0 * frame.Width * frame.Height);
   }
   self->NumberOfRenderedProps +=
     this->Steps.RenderOverlay(s, frame.X, frame.Y, frame.Width, frame.Height);
   this->ReportChain();
-  if (this->Switches.ProfilePasses)
-  {
-    this->Runner.ResolveProfile();
-  }
+  this->Profiler.Resolve();
 }
 
 //------------------------------------------------------------------------------

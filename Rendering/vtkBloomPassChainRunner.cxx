@@ -29,11 +29,12 @@
 #include <sstream>
 
 //------------------------------------------------------------------------------
-vtkBloomPassChainRunner::vtkBloomPassChainRunner(
-  vtkObject* owner, vtkBloomPassResources& resources, vtkBloomPassFFTBlur& fftBlur)
+vtkBloomPassChainRunner::vtkBloomPassChainRunner(vtkObject* owner, vtkBloomPassResources& resources,
+  vtkBloomPassFFTBlur& fftBlur, vtkBloomPassProfiler& profiler)
   : FFTBlur(&fftBlur)
   , Owner(owner)
   , Resources(resources)
+  , Profiler(profiler)
 {
 }
 
@@ -88,13 +89,6 @@ void vtkBloomPassChainRunner::ReleaseGraphicsResources(vtkWindow* w)
     glDeleteQueries(1, &this->Query);
     this->Query = 0;
   }
-  if (!this->TimestampQueries.empty())
-  {
-    glDeleteQueries(
-      static_cast<GLsizei>(this->TimestampQueries.size()), this->TimestampQueries.data());
-    this->TimestampQueries.clear();
-  }
-  this->Profile.clear();
 }
 
 //------------------------------------------------------------------------------
@@ -103,7 +97,6 @@ void vtkBloomPassChainRunner::BeginFrame(const Settings& settings)
   this->Frame = settings;
   this->Passes = 0;
   this->ComputePasses = 0;
-  this->Profile.clear();
 }
 
 //------------------------------------------------------------------------------
@@ -232,10 +225,7 @@ std::string vtkBloomPassChainRunner::Variant(const PassSpec& spec, int xMode, in
 void vtkBloomPassChainRunner::Pass(
   vtkBloomPassTarget* target, const int origin[2], const PassSpec& spec)
 {
-  if (this->Frame.Profiling)
-  {
-    this->BeginProfiledSpan();
-  }
+  this->Profiler.Begin();
   const int width = spec.X ? spec.X->OutputSize : spec.SourceSize[0];
   const int height = spec.Y ? spec.Y->OutputSize : spec.SourceSize[1];
   ImageTarget image = this->BeginPass(target, origin, spec, width, height);
@@ -329,7 +319,7 @@ void vtkBloomPassChainRunner::Pass(
       texture->Deactivate();
     }
   }
-  if (this->Frame.Profiling)
+  if (this->Profiler.IsOn())
   {
     this->EndProfiledPass(spec);
   }
@@ -630,4 +620,37 @@ void vtkBloomPassChainRunner::Clear(vtkBloomPassTarget& target)
   state->vtkglClearColor(0.0, 0.0, 0.0, 0.0);
   state->vtkglClear(GL_COLOR_BUFFER_BIT);
   std::fill(target.Dirty, target.Dirty + 4, 0);
+}
+
+//------------------------------------------------------------------------------
+void vtkBloomPassChainRunner::EndProfiledPass(const PassSpec& spec)
+{
+  // Bytes per texel of the chain's targets; the window's framebuffer (the composite's target
+  // when it is null) is counted at the same rate.
+  const double texel = this->Resources.Format == GL_RGBA32F ? 16.0 : 8.0;
+  const double w = spec.X ? spec.X->OutputSize : spec.SourceSize[0];
+  const double h = spec.Y ? spec.Y->OutputSize : spec.SourceSize[1];
+  double bytes = texel * spec.SourceSize[0] * spec.SourceSize[1] + texel * w * h;
+  if (spec.Blend)
+  {
+    bytes += texel * w * h;
+  }
+  if (spec.Addend)
+  {
+    bytes += texel * w * h;
+  }
+  if (spec.Step == STEP_COMPOSITE)
+  {
+    bytes += texel * this->Resources.Chain.Width * this->Resources.Chain.Height;
+  }
+  if (spec.ReadsSource && this->In.Mask)
+  {
+    bytes += 2.0 * 4.0 * spec.SourceSize[0] * spec.SourceSize[1]; // the two depth textures
+  }
+  std::string name = spec.Name;
+  if (spec.Level >= 0)
+  {
+    name += " L" + std::to_string(spec.Level);
+  }
+  this->Profiler.End(name, static_cast<int>(w), static_cast<int>(h), bytes);
 }

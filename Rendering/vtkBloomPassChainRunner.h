@@ -25,6 +25,7 @@
 
 #include "vtkBloomPassFramePlan.h"    // For the frame's settings, light and output
 #include "vtkBloomPassOperators.h"    // For the operators' textures and interiors
+#include "vtkBloomPassProfiler.h"     // For the profile
 #include "vtkBloomPassProgramCache.h" // For the programs
 #include "vtkBloomPassTypes.h"        // For the boxes, the pass specs and the targets
 #include "vtkSmartPointer.h"          // For the operator textures
@@ -62,14 +63,15 @@ public:
   static constexpr int MaximumTileRows = vtkBloomPassOperators::MaximumTileRows;
 
   /// `owner` reports the errors; `resources` holds the chain, the context and the targets;
-  /// `fftBlur` runs the wide blurs (FFTBlurPass). The runner owns none of them.
-  vtkBloomPassChainRunner(
-    vtkObject* owner, vtkBloomPassResources& resources, vtkBloomPassFFTBlur& fftBlur);
+  /// `fftBlur` runs the wide blurs (FFTBlurPass); `profiler` lists the passes where the frame
+  /// is profiled. The runner owns none of them.
+  vtkBloomPassChainRunner(vtkObject* owner, vtkBloomPassResources& resources,
+    vtkBloomPassFFTBlur& fftBlur, vtkBloomPassProfiler& profiler);
   ~vtkBloomPassChainRunner();
   vtkBloomPassChainRunner(const vtkBloomPassChainRunner&) = delete;
   vtkBloomPassChainRunner& operator=(const vtkBloomPassChainRunner&) = delete;
 
-  /// Start a frame with `settings`: the pass counts and the profile start from nothing.
+  /// Start a frame with `settings`: the pass counts start from nothing.
   void BeginFrame(const Settings& settings);
 
   /**
@@ -135,19 +137,6 @@ public:
   void SetTimeEveryChain(bool time) { this->TimeEveryChain = time; }
   bool GetTimeEveryChain() const { return this->TimeEveryChain; }
 
-  /**
-   * One profiled pass (Settings::Profiling): its name, the size it wrote, its compulsory
-   * memory traffic (every texture it reads read once, its target written once, and read once
-   * more when it blends) and its GPU time from two GL timestamp queries.
-   */
-  using ProfiledPass = vtkBloomPassProfiledPass;
-  const std::vector<ProfiledPass>& GetProfile() const { return this->Profile; }
-  /// A span of work outside the chain's passes (PSF bloom's FFT stages), profiled as a pass.
-  void BeginProfiledSpan();
-  void EndProfiledSpan(const std::string& name, int width, int height, double bytes);
-  /// Wait for the GPU and fill in the profile's times.
-  void ResolveProfile();
-
   /// Free the operator textures; call it before the chain is rebuilt.
   void ReleaseOperators(vtkWindow* w);
 
@@ -171,7 +160,6 @@ private:
   /// Every evaluation is timed (vtkBloomPassTesting::SetTimeChains); else only those
   /// RegionPays learns from.
   bool TimeEveryChain = false;
-  std::vector<ProfiledPass> Profile;
 
   /// Whether the context renders on the CPU (Mesa's llvmpipe or softpipe, SwiftShader), asked
   /// once per context.
@@ -551,12 +539,13 @@ private:
   /// Free the programs that the last chains did not use; a chain is about to be built.
   void EndProgramGeneration(vtkWindow* w);
 
-  /// The profile entry of one pass: its name, output size and compulsory traffic.
+  /**
+   * The profile's entry of one pass: its name, the size it wrote and its compulsory memory
+   * traffic (every texture it reads read once, its target written once, and read once more
+   * when it blends).
+   */
   void EndProfiledPass(const PassSpec& spec);
-
-  // Timestamp queries of the profile: entry i starts at 2 i and ends at 2 i + 1; made on first
-  // use and reused from frame to frame.
-  std::vector<unsigned int> TimestampQueries;
+  vtkBloomPassProfiler& Profiler; ///< its owner's (vtkBloomPass::vtkInternals)
 
   // Occlusion query that counts the non-zero samples of the bright pass (SkipEmptyBloom).
   unsigned int Query = 0;

@@ -42,7 +42,7 @@ bool TwoDimensional(const vtkBloomChain::Term& term)
 bool vtkBloomPassChainRunner::Run(const Light& light)
 {
   this->In = light;
-  this->Deferring = !this->Frame.Profiling;
+  this->Deferring = !this->Profiler.IsOn();
   const bool ran = this->RunSteps();
   this->FlushComputeWrites();
   this->Deferring = false;
@@ -472,26 +472,23 @@ bool vtkBloomPassChainRunner::FFTBlurPass(
   const std::string name = std::string(spec.Name) + "-fft";
   const std::string level = spec.Level >= 0 ? " L" + std::to_string(spec.Level) : "";
   this->FlushComputeWrites(); // the FFT's own passes barrier after themselves
-  if (this->Frame.Profiling)
-  {
-    this->BeginProfiledSpan();
-  }
+  this->Profiler.Begin();
   if (!this->FFTBlur->Convolve(op, axis, lines, spec.Source, format))
   {
     return false;
   }
-  if (this->Frame.Profiling)
+  if (this->Profiler.IsOn())
   {
-    this->EndProfiledSpan(name + level, width, height, (texel + 16.0) * samples);
-    this->BeginProfiledSpan();
+    this->Profiler.End(name + level, width, height, (texel + 16.0) * samples);
+    this->Profiler.Begin();
   }
   // The pass replaces the whole level (its region, when restricted, only bounds the zeros).
   this->PrepareTarget(target, nullptr, width, height);
   this->FFTBlur->Finish(op, axis, lines, target.Color->GetHandle(), format, spec.Weight);
   this->EndCompute();
-  if (this->Frame.Profiling)
+  if (this->Profiler.IsOn())
   {
-    this->EndProfiledSpan(name + "-finish" + level, width, height, (texel + 16.0) * samples);
+    this->Profiler.End(name + "-finish" + level, width, height, (texel + 16.0) * samples);
   }
   this->FullSamples += samples;
   this->ComputedSamples += samples;

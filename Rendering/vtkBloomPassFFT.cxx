@@ -6,6 +6,7 @@
 #include "vtkBloomPassFFT.h"
 
 #include "vtkBloomPassFFTCS.h"
+#include "vtkBloomPassProfiler.h"
 #include "vtkBloomPassPrograms.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -568,23 +569,17 @@ void vtkBloomPassFFT::RunPass(
 
 //------------------------------------------------------------------------------
 void vtkBloomPassFFT::Convolve(
-  vtkTextureObject* source, vtkTextureObject* target, bool reflect, const StageTimer* timer)
+  vtkTextureObject* source, vtkTextureObject* target, bool reflect, vtkBloomPassProfiler& profiler)
 {
   // A transform reads and writes both signals (2 x 8 bytes a sample, each way) on the lines it
   // runs on; the multiply also reads the three spectra, half of them (Hermitian); the fold
   // reads both signals over the image.
   const double grid = static_cast<double>(this->Grid[0]) * this->Grid[1];
-  const auto stage = [timer](const char* name, double bytes, const std::function<void()>& run)
+  const auto stage = [this, &profiler](const char* name, double bytes, auto&& run)
   {
-    if (timer)
-    {
-      timer->Begin();
-    }
+    profiler.Begin();
     run();
-    if (timer)
-    {
-      timer->End(name, bytes);
-    }
+    profiler.End(name, this->Grid[0], this->Grid[1], bytes);
   };
   // The forward rows only where the image is (the other rows are zero), the inverse rows only
   // where the fold reads: the full convolution's rows for REFLECT, the image's for ZERO.

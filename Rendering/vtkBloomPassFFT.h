@@ -64,11 +64,11 @@
 #include "vtkSmartPointer.h"  // For the kernel texture
 #include "vtkType.h"          // For vtkMTimeType
 
-#include <functional> // For StageTimer
 #include <map>
 #include <string>
 #include <vector>
 
+class vtkBloomPassProfiler;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 class vtkWindow;
@@ -129,21 +129,14 @@ public:
    */
   bool Prepare(vtkOpenGLRenderWindow* context, int width, int height, std::string& why);
 
-  /// Optional timing of Convolve's stages (vtkBloomPassTesting::SetProfilePasses): Begin before
-  /// each stage, End after it with the stage's name and its compulsory memory traffic in bytes.
-  struct StageTimer
-  {
-    std::function<void()> Begin;
-    std::function<void(const char* name, double bytes)> End;
-  };
-
   /**
    * target = `source` (width x height, RGBA float, the prepared size) convolved with the
    * kernels, REFLECT or ZERO borders; `target` an RGBA32F texture of the same size. Its six
-   * stages: the forward rows and columns, the multiply, the inverse columns and rows, the fold.
+   * stages: the forward rows and columns, the multiply, the inverse columns and rows, the fold,
+   * each a span of `profiler` sized as the grid.
    */
   void Convolve(vtkTextureObject* source, vtkTextureObject* target, bool reflect,
-    const StageTimer* timer = nullptr);
+    vtkBloomPassProfiler& profiler);
 
   /// The padded grid (NX, NY) of the last Prepare.
   const int* GetGridSize() const { return this->Grid; }

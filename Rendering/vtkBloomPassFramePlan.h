@@ -45,12 +45,6 @@ struct vtkBloomPassFramePlan
      * sum the source rows they read once, in shared memory (TILE in vtkBloomPassFS.glsl).
      */
     bool FuseSeparablePasses = true;
-    /**
-     * Every pass, and every span between BeginProfiledSpan and EndProfiledSpan, is bracketed by
-     * timestamp queries (vtkBloomPass::ProfilePasses); ResolveProfile then waits for the GPU
-     * and fills in GetProfile()'s times. Off, a pass pays one test.
-     */
-    bool Profiling = false;
   };
 
   /// The light that vtkBloomPassChainRunner::Run() (or BrightPassPSF()) blooms.

@@ -101,10 +101,7 @@ bool vtkBloomPass::ApplyToImage(
   in.Runner.Composite(in.Output, &res.Result, zero, bloom);
   in.ReportChain();
   state->PopFramebufferBindings();
-  if (this->Internals->Switches.ProfilePasses)
-  {
-    in.Runner.ResolveProfile();
-  }
+  in.Profiler.Resolve();
 
   const bool ok = this->ReadResultImage(output);
   if (ok)

@@ -18,6 +18,7 @@
 #include "vtkBloomPassFFT.h"
 #include "vtkBloomPassFFTBlur.h"
 #include "vtkBloomPassPSFSplit.h"
+#include "vtkBloomPassProfiler.h"
 #include "vtkBloomPassResources.h"
 #include "vtkBloomPassSteps.h"
 #include "vtkBloomPassTile.h"
@@ -45,13 +46,14 @@ class vtkBloomPass::vtkInternals
 {
 public:
   explicit vtkInternals(vtkBloomPass* owner)
-    : Runner(owner, Resources, FFTBlur)
+    : Runner(owner, Resources, FFTBlur, Profiler)
     , Emission(vtkBloomPass::EMITTER_SOURCE(), vtkBloomPass::EMITTER_SCALAR_RANGE())
   {
   }
 
   vtkBloomPassResources Resources;
-  vtkBloomPassFFTBlur FFTBlur; ///< the chain's wide blurs, run by the runner's blur passes
+  vtkBloomPassFFTBlur FFTBlur;   ///< the chain's wide blurs, run by the runner's blur passes
+  vtkBloomPassProfiler Profiler; ///< the frame's GPU profile (vtkBloomPassTesting), opt-in
   vtkBloomPassChainRunner Runner;
   vtkBloomPassChainRunner::Light Light;   ///< what the runner blooms
   vtkBloomPassChainRunner::Output Output; ///< how the runner writes the frame
@@ -278,23 +280,6 @@ public:
     count = static_cast<int>(this->TileProps.size());
   }
 
-  /// A span of the frame in the profile (vtkBloomPassTesting::SetProfilePasses), outside the
-  /// chain.
-  void BeginSpan()
-  {
-    if (this->Switches.ProfilePasses)
-    {
-      this->Runner.BeginProfiledSpan();
-    }
-  }
-  void EndSpan(const char* name, int w, int h, double bytes)
-  {
-    if (this->Switches.ProfilePasses)
-    {
-      this->Runner.EndProfiledSpan(name, w, h, bytes);
-    }
-  }
-
   /// What the delegate renders: the scene, the scene and its emission, or the emitters alone.
   enum Content
   {
@@ -350,6 +335,7 @@ public:
     this->FFT.ReleaseGraphicsResources(w);
     this->PSFSplit.ReleaseGraphicsResources(w);
     this->Runner.ReleaseGraphicsResources(w);
+    this->Profiler.ReleaseGraphicsResources();
     this->FFTBlur.ReleaseGraphicsResources(w);
     this->Resources.ReleaseAll(w);
   }

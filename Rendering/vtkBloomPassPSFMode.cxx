@@ -122,19 +122,14 @@ bool vtkBloomPass::vtkInternals::RunPSF(vtkBloomPass* self)
   }
   // Profiled (vtkBloomPassTesting::SetProfilePasses), each stage of the convolution is a profiled
   // span, sized as the grid.
-  vtkBloomPassFFT::StageTimer timer;
-  timer.Begin = [this] { this->Runner.BeginProfiledSpan(); };
-  timer.End = [this, grid](const char* name, double bytes)
-  { this->Runner.EndProfiledSpan(name, grid[0], grid[1], bytes); };
   const bool reflect = self->Parameters->GetPSFBorderMode() == vtkImageSeparableGaussian::REFLECT;
-  vtkBloomPassFFT::StageTimer* stages = this->Switches.ProfilePasses ? &timer : nullptr;
   if (this->UsePSFSplit)
   {
-    this->PSFSplit.Convolve(res.PSFBright.Color, res.PSFBloom.Color, reflect, stages);
+    this->PSFSplit.Convolve(res.PSFBright.Color, res.PSFBloom.Color, reflect, this->Profiler);
   }
   else
   {
-    this->FFT.Convolve(res.PSFBright.Color, res.PSFBloom.Color, reflect, stages);
+    this->FFT.Convolve(res.PSFBright.Color, res.PSFBloom.Color, reflect, this->Profiler);
   }
   return true;
 }

@@ -5,6 +5,7 @@
 #include "vtkBloomPassPSFSplit.h"
 
 #include "vtkBloomPassPSFSplitCS.h"
+#include "vtkBloomPassProfiler.h"
 #include "vtkBloomPassPrograms.h"
 #include "vtkBloomVTKCompat.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -277,30 +278,19 @@ void vtkBloomPassPSFSplit::Core(vtkTextureObject* source, vtkTextureObject* targ
 }
 
 //------------------------------------------------------------------------------
-void vtkBloomPassPSFSplit::Convolve(vtkTextureObject* source, vtkTextureObject* target,
-  bool reflect, const vtkBloomPassFFT::StageTimer* timer)
+void vtkBloomPassPSFSplit::Convolve(
+  vtkTextureObject* source, vtkTextureObject* target, bool reflect, vtkBloomPassProfiler& profiler)
 {
   const double pixels = static_cast<double>(this->Size[0]) * this->Size[1];
   const double nodes = static_cast<double>(this->CoarseSize[0]) * this->CoarseSize[1];
-  if (timer)
-  {
-    timer->Begin();
-  }
+  const int* grid = this->GetGridSize();
+  profiler.Begin();
   this->Down(source);
-  if (timer)
-  {
-    timer->End("psf split down", 16.0 * (pixels + nodes));
-  }
-  this->TailFFT.Convolve(this->CoarseBright, this->CoarseBloom, reflect, timer);
-  if (timer)
-  {
-    timer->Begin();
-  }
+  profiler.End("psf split down", grid[0], grid[1], 16.0 * (pixels + nodes));
+  this->TailFFT.Convolve(this->CoarseBright, this->CoarseBloom, reflect, profiler);
+  profiler.Begin();
   this->Core(source, target, reflect);
-  if (timer)
-  {
-    timer->End("psf split core", 32.0 * pixels);
-  }
+  profiler.End("psf split core", grid[0], grid[1], 32.0 * pixels);
 }
 
 //------------------------------------------------------------------------------

@@ -24,6 +24,7 @@
 #include <map>
 #include <string>
 
+class vtkBloomPassProfiler;
 class vtkOpenGLRenderWindow;
 class vtkTextureObject;
 class vtkWindow;
@@ -47,9 +48,9 @@ public:
   bool Prepare(vtkOpenGLRenderWindow* context, int width, int height, std::string& why);
 
   /// target = `source` convolved with the split kernels (REFLECT or ZERO borders); its stages
-  /// timed as vtkBloomPassFFT::Convolve's.
+  /// spans of `profiler` sized as the tail's grid, as vtkBloomPassFFT::Convolve's.
   void Convolve(vtkTextureObject* source, vtkTextureObject* target, bool reflect,
-    const vtkBloomPassFFT::StageTimer* timer = nullptr);
+    vtkBloomPassProfiler& profiler);
 
   /// The tail's FFT grid of the last Prepare.
   const int* GetGridSize() const { return this->TailFFT.GetGridSize(); }

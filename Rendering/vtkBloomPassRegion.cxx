@@ -139,10 +139,10 @@ bool vtkBloomPassChainRunner::MeasureBrightRegionByCompute(Box& box)
     glGetUniformLocation(this->ReduceProgram, "sourceSize"), level.Size[0], level.Size[1]);
   glDispatchCompute((level.Size[0] + 15) / 16, (level.Size[1] + 15) / 16, 1);
   glMemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-  if (this->Frame.Profiling)
+  if (this->Profiler.IsOn())
   {
     // The dispatch alone; the read-back's wait is no GPU work (BloomPassFrameTime --sync).
-    this->EndProfiledSpan("reduce (compute)", 1, 1,
+    this->Profiler.End("reduce (compute)", 1, 1,
       16.0 * this->Resources.Levels[0].Size[0] * this->Resources.Levels[0].Size[1]);
   }
   GLint result[4] = { 0, 0, -1, -1 };
@@ -309,10 +309,7 @@ vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::MeasureBrightRegion()
   this->FlushComputeWrites(); // the bright pass's writes, read by the reduction
   vtkBloomPassResources& res = this->Resources;
   vtkOpenGLState* state = res.Context->GetState();
-  if (this->Frame.Profiling)
-  {
-    this->BeginProfiledSpan();
-  }
+  this->Profiler.Begin();
   const double levelBytes = 16.0 * res.Levels[0].Size[0] * res.Levels[0].Size[1];
   Box computed;
   if (this->MeasureBrightRegionByCompute(computed))
@@ -364,10 +361,7 @@ vtkBloomPassChainRunner::Box vtkBloomPassChainRunner::MeasureBrightRegion()
     size[0] = out[0];
     size[1] = out[1];
   }
-  if (this->Frame.Profiling)
-  {
-    this->EndProfiledSpan("reduce", size[0], size[1], bytes);
-  }
+  this->Profiler.End("reduce", size[0], size[1], bytes);
 
   // A few kilobytes; the wait is for the bright pass, as the occlusion query's would be.
   std::vector<float> boxes(static_cast<size_t>(size[0]) * size[1] * 4);

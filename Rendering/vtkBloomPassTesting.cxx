@@ -57,5 +57,5 @@ void vtkBloomPassTesting::SetTimeChains(vtkBloomPass* pass, bool time)
 //------------------------------------------------------------------------------
 std::vector<vtkBloomPassTesting::ProfiledPass> vtkBloomPassTesting::GetProfile(vtkBloomPass* pass)
 {
-  return pass->Internals->Runner.GetProfile();
+  return pass->Internals->Profiler.GetEntries();
 }
