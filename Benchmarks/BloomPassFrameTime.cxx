@@ -90,9 +90,9 @@
 //
 // One executable for every GPU timing of scripts/gpu-run.sh (about 1320 lines): each mode is a
 // function of its own (TimeFrames, ProfilePasses with its breakdown, QualityTable, SparseTable,
-// SyncTable, OrbitTable, SelectiveTable, PSFTable, RenderersTable, FormatsTable), and they share the scene
-// set-up and the options' flags (SetUp), the frame timing (vtkBloomFrameTimer.h) and the frame
-// statistics, which separate files would have to export for one caller each.
+// SyncTable, OrbitTable, SelectiveTable, PSFTable, RenderersTable, FormatsTable), and they share
+// the scene set-up and the options' flags (SetUp), the frame timing (vtkBloomFrameTimer.h) and the
+// frame statistics, which separate files would have to export for one caller each.
 #include "vtkBloomFrameTimer.h"
 #include "vtkBloomParameters.h"
 #include "vtkBloomPassTesting.h"
@@ -226,31 +226,59 @@ bool TimeFrames(const std::string& scene, const std::string& preset, int width, 
   return true;
 }
 
+// One entry of the profile over several frames: its name, the median of its GPU times, and its
+// size and traffic, in how many of the frames it ran.
+struct ProfiledMedian
+{
+  std::string Name;
+  double Milliseconds = 0.0;
+  int Size[2] = { 0, 0 };
+  double Bytes = 0.0;
+  int Frames = 0;
+};
+
 // The median GPU time of each profiled entry of `pass` over `frames` frames of `kind`, in the
-// order of the last frame, with the entries' names (a name that repeats is one entry).
-std::vector<std::pair<std::string, double>> ProfiledMedians(
+// order they first ran. Entries are matched by name and by which of that name's entries of the
+// frame they are (the blurs of a level repeat a name), not by their place in the frame: a
+// frame that measures the bright region has a reduction that the others have not.
+std::vector<ProfiledMedian> ProfiledMedians(
   vtkBloomFrameTimer& timer, vtkBloomPass* pass, vtkBloomFrameTimer::Kind kind, int frames)
 {
   vtkBloomPassTesting::SetProfilePasses(pass, true);
+  std::vector<ProfiledMedian> entries;
   std::vector<std::vector<double>> ms;
-  std::vector<vtkBloomPassTesting::ProfiledPass> profile;
+  std::map<std::string, std::size_t> index;
   for (int f = -1; f < frames; ++f)
   {
     timer.Frame(kind);
-    profile = vtkBloomPassTesting::GetProfile(pass);
-    ms.resize(profile.size());
-    for (std::size_t i = 0; f >= 0 && i < profile.size(); ++i)
+    std::map<std::string, int> seen;
+    for (const auto& entry : vtkBloomPassTesting::GetProfile(pass))
     {
-      ms[i].push_back(profile[i].Milliseconds);
+      const std::string key = entry.Name + "#" + std::to_string(seen[entry.Name]++);
+      auto found = index.find(key);
+      if (found == index.end())
+      {
+        found = index.emplace(key, entries.size()).first;
+        entries.emplace_back();
+        entries.back().Name = entry.Name;
+        ms.emplace_back();
+      }
+      ProfiledMedian& out = entries[found->second];
+      std::copy(entry.Size, entry.Size + 2, out.Size);
+      out.Bytes = entry.Bytes;
+      if (f >= 0)
+      {
+        ms[found->second].push_back(entry.Milliseconds);
+        ++out.Frames;
+      }
     }
   }
-  std::vector<std::pair<std::string, double>> medians;
-  for (std::size_t i = 0; i < ms.size(); ++i)
+  for (std::size_t i = 0; i < entries.size(); ++i)
   {
-    medians.emplace_back(profile[i].Name, vtkBloomMedian(ms[i]));
+    entries[i].Milliseconds = vtkBloomMedian(ms[i]);
   }
   vtkBloomPassTesting::SetProfilePasses(pass, false);
-  return medians;
+  return entries;
 }
 
 // GPU timestamps at the window's and the renderer's StartEvent and EndEvent: where in the
@@ -310,8 +338,8 @@ struct FrameSegments
 // compute-copy and bloom frames interleaved unprofiled (the GPU timer around Render()), then
 // the profile of the bloom frame and of the compute copy (the same pass with no chain: its
 // composite is the copy back).
-void PrintBreakdown(vtkBloomFrameTimer& timer,
-  const std::vector<std::pair<std::string, double>>& bloom, int width, int height, int frames)
+void PrintBreakdown(vtkBloomFrameTimer& timer, const std::vector<ProfiledMedian>& bloom, int width,
+  int height, int frames)
 {
   std::vector<double> gpu[3];
   const vtkBloomFrameTimer::Kind kinds[3] = { vtkBloomFrameTimer::PLAIN,
@@ -331,19 +359,19 @@ void PrintBreakdown(vtkBloomFrameTimer& timer,
   const auto copyParts = ProfiledMedians(
     timer, timer.ComputeCopy, vtkBloomFrameTimer::COMPUTE_COPY, std::min(frames, 50));
   double scene = 0.0, depth = 0.0, fxaa = 0.0, chain = 0.0, composite = 0.0, copyBack = 0.0;
-  for (const auto& part : bloom)
+  for (const ProfiledMedian& part : bloom)
   {
-    const std::string& name = part.first;
+    const std::string& name = part.Name;
     double& sum = name == "scene" || name == "emitters" ? scene
       : name == "depth"                                 ? depth
       : name == "fxaa"                                  ? fxaa
       : name.rfind("composite", 0) == 0                 ? composite
                                                         : chain;
-    sum += part.second;
+    sum += part.Milliseconds;
   }
-  for (const auto& part : copyParts)
+  for (const ProfiledMedian& part : copyParts)
   {
-    copyBack += part.first.rfind("composite", 0) == 0 ? part.second : 0.0;
+    copyBack += part.Name.rfind("composite", 0) == 0 ? part.Milliseconds : 0.0;
   }
   std::printf("\n**What the user pays**, %dx%d, %d frames of each kind interleaved (GPU timer): "
               "plain frame %.3f mean; bloom frame %.3f mean, %.3f median, %.3f p99; **bloom over "
@@ -399,11 +427,7 @@ bool ProfilePasses(
     }
   }
   const auto medians = ProfiledMedians(timer, timer.Bloom, vtkBloomFrameTimer::BLOOM, frames);
-  vtkBloomPassTesting::SetProfilePasses(timer.Bloom, true);
-  timer.Frame(vtkBloomFrameTimer::BLOOM); // for the sizes and bytes of the last frame
   vtkBloomPass* bloom = timer.Bloom;
-  const std::vector<vtkBloomPassTesting::ProfiledPass> last =
-    vtkBloomPassTesting::GetProfile(bloom);
   std::printf("\n%s, preset %s%s, %dx%d, %s precision: %d GPU passes of the chain and the "
               "composite (the profile also lists the scene render)\n\n",
     scene.c_str(), preset.c_str(), Fragment ? " (fragment passes)" : "", width, height,
@@ -411,14 +435,17 @@ bool ProfilePasses(
     bloom->GetLastFrame()->GetNumberOfPasses());
   std::printf("| # | pass | size | GPU time | MB | GB/s |\n|---|---|---|---|---|---|\n");
   double total = 0.0, chain = 0.0, bytes = 0.0, chainBytes = 0.0;
-  for (std::size_t i = 0; i < medians.size() && i < last.size(); ++i)
+  for (std::size_t i = 0; i < medians.size(); ++i)
   {
-    const int* size = last[i].Size;
-    const double t = medians[i].second;
-    const double b = last[i].Bytes;
-    const std::string& name = medians[i].first;
-    std::printf("| %d | %s | %dx%d | %.4f ms | %.2f | %.0f |\n", static_cast<int>(i), name.c_str(),
-      size[0], size[1], t, 1e-6 * b, t > 0.0 ? 1e-6 * b / t : 0.0);
+    const ProfiledMedian& entry = medians[i];
+    const double t = entry.Milliseconds;
+    const double b = entry.Bytes;
+    const std::string& name = entry.Name;
+    const std::string ran =
+      entry.Frames < frames ? " (" + std::to_string(entry.Frames) + " frames)" : "";
+    std::printf("| %d | %s%s | %dx%d | %.4f ms | %.2f | %.0f |\n", static_cast<int>(i),
+      name.c_str(), ran.c_str(), entry.Size[0], entry.Size[1], t, 1e-6 * b,
+      t > 0.0 ? 1e-6 * b / t : 0.0);
     total += t;
     bytes += b;
     if (name != "scene" && name != "emitters" && name != "depth" && name != "fxaa")
@@ -427,7 +454,6 @@ bool ProfilePasses(
       chainBytes += b;
     }
   }
-  vtkBloomPassTesting::SetProfilePasses(bloom, false);
   const double frameMs = vtkBloomMedian(frameGPU), floorMs = vtkBloomMedian(floorGPU);
   std::printf("\nsum of the passes %.3f ms (%.1f MB); the chain and composite alone %.3f ms "
               "(%.1f MB, %.0f GB/s)\nunprofiled frames (GPU timer): with bloom %.3f ms, float "
@@ -1123,7 +1149,8 @@ public:
     if (!this->ColorTexture->GetHandle())
     {
       this->ColorTexture->SetInternalFormat(this->InternalFormat);
-      this->ColorTexture->SetDataType(this->InternalFormat == GL_RGBA8 ? GL_UNSIGNED_BYTE : GL_FLOAT);
+      this->ColorTexture->SetDataType(
+        this->InternalFormat == GL_RGBA8 ? GL_UNSIGNED_BYTE : GL_FLOAT);
     }
     this->Superclass::Render(s);
   }
@@ -1139,8 +1166,7 @@ bool FormatsTable(const std::string& scene, int width, int height, int frames)
     return false;
   }
   const std::pair<const char*, unsigned int> formats[] = { { "RGBA8", GL_RGBA8 },
-    { "R11F_G11F_B10F", GL_R11F_G11F_B10F }, { "RGBA16F", GL_RGBA16F },
-    { "RGBA32F", GL_RGBA32F } };
+    { "R11F_G11F_B10F", GL_R11F_G11F_B10F }, { "RGBA16F", GL_RGBA16F }, { "RGBA32F", GL_RGBA32F } };
   std::vector<vtkSmartPointer<vtkBloomFormatCopyPass>> copies;
   std::vector<std::pair<std::string, vtkRenderPass*>> kinds = { { "plain", timer.Steps } };
   for (const auto& format : formats)
@@ -1242,7 +1268,7 @@ int main(int argc, char* argv[])
   if (argc > 5 && std::strcmp(argv[1], "--formats") == 0)
   {
     return FormatsTable(argv[2], std::atoi(argv[3]), std::atoi(argv[4]), std::atoi(argv[5])) ? 0
-                                                                                              : 1;
+                                                                                             : 1;
   }
   if (argc > 5 && std::strcmp(argv[1], "--psf") == 0)
   {
