@@ -469,8 +469,13 @@ bool vtkBloomPassChainRunner::FFTBlurPass(
   // Traffic: the source read and both signals written, then read and the target written.
   const double texel = this->Resources.Format == GL_RGBA32F ? 16.0 : 8.0;
   const double samples = static_cast<double>(width) * height;
-  const std::string name = std::string(spec.Name) + "-fft";
-  const std::string level = spec.Level >= 0 ? " L" + std::to_string(spec.Level) : "";
+  const double bytes = (texel + 16.0) * samples;
+  // The profile's names, made only where the frame is profiled.
+  const auto label = [&spec](const char* stage)
+  {
+    const std::string level = spec.Level >= 0 ? " L" + std::to_string(spec.Level) : "";
+    return std::string(spec.Name) + stage + level;
+  };
   this->FlushComputeWrites(); // the FFT's own passes barrier after themselves
   this->Profiler.Begin();
   if (!this->FFTBlur->Convolve(op, axis, lines, spec.Source, format))
@@ -479,7 +484,7 @@ bool vtkBloomPassChainRunner::FFTBlurPass(
   }
   if (this->Profiler.IsOn())
   {
-    this->Profiler.End(name + level, width, height, (texel + 16.0) * samples);
+    this->Profiler.End(label("-fft"), width, height, bytes);
     this->Profiler.Begin();
   }
   // The pass replaces the whole level (its region, when restricted, only bounds the zeros).
@@ -488,7 +493,7 @@ bool vtkBloomPassChainRunner::FFTBlurPass(
   this->EndCompute();
   if (this->Profiler.IsOn())
   {
-    this->Profiler.End(name + "-finish" + level, width, height, (texel + 16.0) * samples);
+    this->Profiler.End(label("-fft-finish"), width, height, bytes);
   }
   this->FullSamples += samples;
   this->ComputedSamples += samples;
