@@ -88,7 +88,7 @@
 // the occlusion query only, and with neither (no wait: the CPU submits the whole frame ahead
 // of the GPU), GPU time and the CPU's time in Render().
 //
-// One executable for every GPU timing of scripts/gpu-run.sh (about 1320 lines): each mode is a
+// One executable for every GPU timing of scripts/gpu-run.sh (about 1350 lines): each mode is a
 // function of its own (TimeFrames, ProfilePasses with its breakdown, QualityTable, SparseTable,
 // SyncTable, OrbitTable, SelectiveTable, PSFTable, RenderersTable, FormatsTable), and they share
 // the scene set-up and the options' flags (SetUp), the frame timing (vtkBloomFrameTimer.h) and the
